@@ -1,0 +1,56 @@
+// assets/model.h — glTF models and images as plain CPU data (no GL).
+//
+// load_model() reads .gltf or .glb through tinygltf: positions, normals, UVs, indices of any
+// component type, base-colour factor and texture, emissive factor (and texture), with node
+// transforms baked into the vertices. load_image() reads any format OpenImageIO knows into
+// RGBA8; load_sprite() also premultiplies colour by alpha (Ilmonen eq. 10: tcola = tcol·talpha).
+// Every failure throws arc::InputError("path: what is wrong").
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+namespace arc {
+
+struct Image {
+  int width = 0;
+  int height = 0;
+  std::vector<uint8_t> rgba;  // width*height*4, rows top to bottom
+  bool premultiplied = false;
+};
+
+struct Material {
+  glm::vec4 base_color{1.0f};
+  glm::vec3 emissive{0.0f};
+  int base_color_image = -1;  // index into ModelData::images, -1 = none
+  int emissive_image = -1;
+};
+
+struct MeshPrimitive {
+  std::vector<glm::vec3> positions;  // model space, node transforms applied
+  std::vector<glm::vec3> normals;    // same count as positions (generated flat if the file has none)
+  std::vector<glm::vec2> uvs;        // empty or same count as positions
+  std::vector<uint32_t> indices;     // triangles
+  int material = -1;                 // index into ModelData::materials, -1 = default
+};
+
+struct ModelData {
+  std::string path;
+  std::vector<MeshPrimitive> primitives;
+  std::vector<Material> materials;
+  std::vector<Image> images;
+  glm::vec3 bounds_min{0.0f}, bounds_max{0.0f};
+  float radius = 0.0f;  // bounding sphere around the model origin
+};
+
+ModelData load_model(const std::string& path);
+Image load_image(const std::string& path);
+Image load_sprite(const std::string& path);  // RGBA8, premultiplied
+void premultiply(Image& image);
+// Writes RGBA8 as PNG (or any format by extension) through OpenImageIO, atomically.
+void save_image(const std::string& path, const Image& image);
+
+}  // namespace arc

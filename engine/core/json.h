@@ -1,0 +1,130 @@
+// core/json.h — JSON data files with exact error positions.
+//
+// Every data file (levels, ships, effects, quality presets, key bindings) is JSON with
+// comments, parsed by nlohmann::json. A second SAX pass records the line and column of every
+// key and value by JSON pointer, so a loader can say *where* a value is wrong:
+//   levels/duel.json:14:18: 'hull' must be a number in [1, 1e6], got -5
+//
+// Loaders read through JsonObject, which checks types, ranges and finiteness and, at
+// finish(), rejects every key that was not read ("unknown key 'hul'; allowed: hull, shield").
+//
+//   JsonDoc doc = JsonDoc::load_file("levels/duel.json");   // throws InputError
+//   JsonObject root = doc.root_object();
+//   uint64_t seed = root.integer("seed", 1, 0, UINT32_MAX);
+//   for (JsonObject s : root.objects("ships")) { ... s.finish(); }
+//   root.finish();
+#pragma once
+#include <cstdint>
+#include <initializer_list>
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+#include <nlohmann/json.hpp>
+
+namespace arc {
+
+struct TextPos { int line = 1; int col = 1; };
+
+class JsonDoc {
+ public:
+  // Reads and parses a file; a missing file or a syntax error throws InputError with the position.
+  static std::shared_ptr<const JsonDoc> load_file(const std::string& path);
+  static std::shared_ptr<const JsonDoc> parse(const std::string& text, const std::string& path);
+
+  const nlohmann::json& root() const { return root_; }
+  const std::string& path() const { return path_; }
+  // "path:line:col" of the value at a JSON pointer (the member's key for object members).
+  std::string where(const std::string& pointer) const;
+  std::string where_value(const std::string& pointer) const;
+
+ private:
+  std::string path_;
+  nlohmann::json root_;
+  std::map<std::string, TextPos> value_pos_;
+  std::map<std::string, TextPos> key_pos_;
+  friend struct JsonPositionRecorder;
+};
+
+class JsonObject;
+
+// A typed, positioned view on one JSON value.
+class JsonValue {
+ public:
+  JsonValue(std::shared_ptr<const JsonDoc> doc, std::string pointer, const nlohmann::json* j)
+      : doc_(std::move(doc)), ptr_(std::move(pointer)), j_(j) {}
+
+  const nlohmann::json& raw() const { return *j_; }
+  const std::string& pointer() const { return ptr_; }
+  std::string name() const;  // the last pointer component, for messages
+  std::string where() const { return doc_->where_value(ptr_); }
+  [[noreturn]] void fail(const std::string& message) const;
+
+  double number(double min, double max) const;
+  int64_t integer(int64_t min, int64_t max) const;
+  bool boolean() const;
+  std::string string() const;
+  std::string choice(std::initializer_list<const char*> allowed) const;
+  glm::dvec3 vec3(double min, double max) const;
+  glm::dvec4 vec4(double min, double max) const;
+  std::vector<double> numbers(double min, double max) const;
+  JsonObject object() const;
+  std::vector<JsonValue> array() const;
+  bool is_object() const { return j_->is_object(); }
+  bool is_array() const { return j_->is_array(); }
+  bool is_string() const { return j_->is_string(); }
+  bool is_number() const { return j_->is_number(); }
+
+ protected:
+  std::shared_ptr<const JsonDoc> doc_;
+  std::string ptr_;
+  const nlohmann::json* j_;
+};
+
+// An object whose keys are read one by one; finish() rejects the ones never read.
+class JsonObject : public JsonValue {
+ public:
+  JsonObject(std::shared_ptr<const JsonDoc> doc, std::string pointer, const nlohmann::json* j);
+
+  bool has(const std::string& key) const;
+  std::optional<JsonValue> get(const std::string& key);  // marks the key as read
+  JsonValue require(const std::string& key);              // missing key → error at the object
+
+  double number(const std::string& key, double fallback, double min, double max);
+  double require_number(const std::string& key, double min, double max);
+  int64_t integer(const std::string& key, int64_t fallback, int64_t min, int64_t max);
+  bool boolean(const std::string& key, bool fallback);
+  std::string string(const std::string& key, const std::string& fallback);
+  std::string require_string(const std::string& key);
+  std::string choice(const std::string& key, const std::string& fallback,
+                     std::initializer_list<const char*> allowed);
+  glm::dvec3 vec3(const std::string& key, glm::dvec3 fallback, double min, double max);
+  glm::dvec4 vec4(const std::string& key, glm::dvec4 fallback, double min, double max);
+  JsonObject require_object(const std::string& key);
+  std::vector<JsonObject> objects(const std::string& key);  // optional array of objects; missing → empty
+  // Error at a member's key position.
+  [[noreturn]] void fail_key(const std::string& key, const std::string& message) const;
+  // Throws for the first key that was never read, listing the allowed ones.
+  void finish() const;
+  // Marks keys as known without reading them (for forward-compatible optional blocks).
+  void allow(std::initializer_list<const char*> keys);
+
+ private:
+  std::set<std::string> read_;
+};
+
+// Escapes a key for use in a JSON pointer (RFC 6901).
+std::string json_pointer_escape(const std::string& key);
+// "a, b or c" for messages.
+std::string join_allowed(const std::vector<std::string>& names);
+
+// Writes text to path atomically: a temporary file in the same folder, then rename.
+// Throws InputError naming the path when the folder is not writable.
+void write_file_atomic(const std::string& path, const std::string& text);
+std::string read_text_file(const std::string& path);  // throws InputError "path: cannot read file"
+
+}  // namespace arc

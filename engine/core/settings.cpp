@@ -1,0 +1,188 @@
+#include "core/settings.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+#include "core/error.h"
+#include "core/json.h"
+
+namespace arc {
+namespace {
+
+std::string num_text(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+std::string allowed_text(const SettingDef& d) {
+  switch (d.kind) {
+    case SettingDef::Kind::Number: return "a number in [" + num_text(d.min) + ", " + num_text(d.max) + "]";
+    case SettingDef::Kind::Integer:
+      return "an integer in [" + num_text(d.min) + ", " + num_text(d.max) + "]";
+    case SettingDef::Kind::Flag: return "true or false";
+    case SettingDef::Kind::Choice: {
+      std::vector<std::string> q;
+      for (auto& c : d.choices) q.push_back(c);
+      return "one of " + join_allowed(q);
+    }
+  }
+  return "";
+}
+
+}  // namespace
+
+Settings Settings::defaults() {
+  Settings s;
+  // Rendering
+  s.define_choice("render.soft_edges", "effect",
+                  {"effect", "off", "linear", "contrast", "average_density", "density_extent"},
+                  "soft-edge method: 'effect' uses each effect's own, others override all effects");
+  s.define_choice("render.sorting", "full", {"off", "cluster", "full"},
+                  "back-to-front order of non-additive particles: none, by cluster, or per particle");
+  s.define_choice("render.depth_mode", "reversed", {"reversed", "standard"},
+                  "reversed-Z float depth (needs clip control) or standard depth");
+  s.define_flag("render.infinite_far", true, "infinite far plane");
+  s.define_choice("render.texture_filter", "mipmap", {"nearest", "linear", "mipmap"},
+                  "sprite and model texture filtering");
+  s.define_number("render.scale", 1.0, 0.25, 2.0, "render resolution relative to the window");
+  s.define_number("render.particle_size_clamp", 0.5, 0.01, 4.0,
+                  "largest particle size on screen, as a fraction of screen height");
+  s.define_number("render.near_fade", 2.0, 0.0, 100.0,
+                  "distance in world units over which particles fade out toward the camera");
+  s.define_number("render.contrast_power", 2.0, 0.5, 8.0, "exponent of the contrast soft-edge curve");
+  // Particles
+  s.define_integer("particles.budget", 200000, 1000, 4000000, "largest number of live particles");
+  s.define_integer("particles.lightning_interval", 0, 0, 60,
+                   "re-evaluate lightning every n ticks; 0 keeps each effect's own interval");
+  s.define_number("particles.cull_distance", 20000.0, 100.0, 1e12,
+                  "clusters farther than this from the camera are not animated until needed");
+  // Simulation
+  s.define_integer("sim.substeps", 1, 1, 16, "physics sub-steps per tick");
+  return s;
+}
+
+void Settings::define_number(const std::string& key, double def, double min, double max, const std::string& doc) {
+  defs_.push_back({key, SettingDef::Kind::Number, min, max, {}, num_text(def), doc});
+}
+void Settings::define_integer(const std::string& key, int64_t def, int64_t min, int64_t max,
+                              const std::string& doc) {
+  defs_.push_back({key, SettingDef::Kind::Integer, double(min), double(max), {}, std::to_string(def), doc});
+}
+void Settings::define_choice(const std::string& key, const std::string& def, std::vector<std::string> choices,
+                             const std::string& doc) {
+  defs_.push_back({key, SettingDef::Kind::Choice, 0, 0, std::move(choices), def, doc});
+}
+void Settings::define_flag(const std::string& key, bool def, const std::string& doc) {
+  defs_.push_back({key, SettingDef::Kind::Flag, 0, 0, {}, def ? "true" : "false", doc});
+}
+
+const SettingDef& Settings::find(const std::string& key) const {
+  for (auto& d : defs_)
+    if (d.key == key) return d;
+  throw InputError("internal: unknown setting '" + key + "'");
+}
+
+SettingDef* Settings::find_mut(const std::string& key) {
+  for (auto& d : defs_)
+    if (d.key == key) return &d;
+  return nullptr;
+}
+
+void Settings::set(const std::string& key, const std::string& value, const std::string& where) {
+  SettingDef* d = find_mut(key);
+  if (!d) {
+    std::vector<std::string> keys;
+    for (auto& e : defs_) keys.push_back(e.key);
+    throw InputError(where + ": unknown setting '" + key + "'; known: " + join_allowed(keys));
+  }
+  auto bad = [&]() {
+    throw InputError(where + ": setting '" + key + "' must be " + allowed_text(*d) + ", got '" + value + "'");
+  };
+  switch (d->kind) {
+    case SettingDef::Kind::Number: {
+      char* end = nullptr;
+      double v = std::strtod(value.c_str(), &end);
+      if (value.empty() || *end || !std::isfinite(v) || v < d->min || v > d->max) bad();
+      d->value = num_text(v);
+      break;
+    }
+    case SettingDef::Kind::Integer: {
+      char* end = nullptr;
+      long long v = std::strtoll(value.c_str(), &end, 10);
+      if (value.empty() || *end || double(v) < d->min || double(v) > d->max) bad();
+      d->value = std::to_string(v);
+      break;
+    }
+    case SettingDef::Kind::Flag:
+      if (value == "true" || value == "1" || value == "on") d->value = "true";
+      else if (value == "false" || value == "0" || value == "off") d->value = "false";
+      else bad();
+      break;
+    case SettingDef::Kind::Choice: {
+      bool ok = false;
+      for (auto& c : d->choices) ok = ok || c == value;
+      if (!ok) bad();
+      d->value = value;
+      break;
+    }
+  }
+}
+
+void Settings::set_from_text(const std::string& assignment, const std::string& where) {
+  auto eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw InputError(where + ": expected key=value, got '" + assignment + "'");
+  set(assignment.substr(0, eq), assignment.substr(eq + 1), where);
+}
+
+void Settings::apply_preset_file(const std::string& path, const std::string& preset) {
+  auto doc = JsonDoc::load_file(path);
+  JsonObject root = doc->root().is_object() ? JsonObject(doc, "", &doc->root())
+                                            : (JsonValue(doc, "", &doc->root()).object());
+  JsonObject presets = root.require_object("presets");
+  root.allow({"doc"});
+  root.finish();
+  auto p = presets.get(preset);
+  if (!p) {
+    std::vector<std::string> names;
+    for (auto it = presets.raw().begin(); it != presets.raw().end(); ++it) names.push_back(it.key());
+    throw InputError("--quality: unknown preset '" + preset + "' in " + path + "; allowed: " + join_allowed(names));
+  }
+  JsonObject obj = p->object();
+  for (auto it = obj.raw().begin(); it != obj.raw().end(); ++it) {
+    auto v = *obj.get(it.key());
+    std::string text;
+    if (v.raw().is_string()) text = v.raw().get<std::string>();
+    else if (v.raw().is_boolean()) text = v.raw().get<bool>() ? "true" : "false";
+    else if (v.raw().is_number()) text = v.raw().dump();
+    else v.fail("setting '" + it.key() + "' must be a string, number or boolean");
+    try {
+      set(it.key(), text, doc->where(obj.pointer() + "/" + json_pointer_escape(it.key())));
+    } catch (const InputError&) {
+      throw;
+    }
+  }
+}
+
+std::vector<std::string> Settings::preset_names(const std::string& path) {
+  auto doc = JsonDoc::load_file(path);
+  std::vector<std::string> names;
+  const auto& p = doc->root().at("presets");
+  for (auto it = p.begin(); it != p.end(); ++it) names.push_back(it.key());
+  return names;
+}
+
+double Settings::number(const std::string& key) const { return std::strtod(find(key).value.c_str(), nullptr); }
+int64_t Settings::integer(const std::string& key) const { return std::strtoll(find(key).value.c_str(), nullptr, 10); }
+const std::string& Settings::choice(const std::string& key) const { return find(key).value; }
+bool Settings::flag(const std::string& key) const { return find(key).value == "true"; }
+
+std::string Settings::describe() const {
+  std::string out;
+  for (auto& d : defs_) out += "  " + d.key + " = " + d.value + "  (" + allowed_text(d) + ")  " + d.doc + "\n";
+  return out;
+}
+
+}  // namespace arc

@@ -1,0 +1,58 @@
+// gfx/render_view.h — everything the renderer needs for one frame, as plain data.
+//
+// The game (game/render) fills a RenderView from interpolated simulation state; the renderer
+// never sees the game. World positions are double; the renderer subtracts the camera position
+// in double before converting to float.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "particles/render_output.h"
+
+namespace arc {
+
+struct CameraView {
+  glm::dvec3 position{0.0};
+  glm::dquat orientation{1, 0, 0, 0};  // camera looks along its local −Z, up is +Y
+  double fov_y_radians = 1.0;
+  double near_plane = 0.5;
+  double far_plane = 1.0e7;  // ignored when the infinite far plane is on
+};
+
+struct MeshInstance {
+  int model = -1;  // index in the renderer's model table (Renderer::load_model)
+  glm::dvec3 position{0.0};
+  glm::dquat orientation{1, 0, 0, 0};
+  double scale = 1.0;
+  glm::vec3 tint{1.0f};          // multiplies base colour
+  float emissive_boost = 1.0f;   // engines glow with throttle
+  glm::vec3 flash{0.0f};         // extra light from nearby explosions (rgb, already scaled)
+};
+
+// 2-D overlay in pixels, origin top-left. Drawn last, unlit, alpha-blended.
+struct HudQuad { float x, y, w, h; glm::vec4 color; };
+struct HudLine { float x0, y0, x1, y1, width; glm::vec4 color; };
+struct HudText { float x, y, scale; glm::vec4 color; std::string text; };
+struct HudLayer {
+  std::vector<HudQuad> quads;
+  std::vector<HudLine> lines;
+  std::vector<HudText> texts;
+};
+
+struct RenderView {
+  CameraView camera;
+  glm::vec3 light_direction{-0.4f, -0.6f, -0.7f};  // direction light travels, world space
+  glm::vec3 light_color{1.0f, 0.96f, 0.9f};
+  glm::vec3 ambient{0.08f, 0.09f, 0.12f};
+  uint64_t starfield_seed = 1;
+  std::vector<MeshInstance> meshes;
+  // Camera-relative particles already culled by cluster; the renderer sorts and draws them.
+  std::vector<ParticleInstance> particles;
+  HudLayer hud;
+};
+
+}  // namespace arc

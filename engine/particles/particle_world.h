@@ -1,0 +1,135 @@
+// particles/particle_world.h — the particle engine's public interface (no GL).
+//
+// Particles live in structure-of-arrays pools and belong to clusters (Hadwiger 2000 §4.3). A
+// cluster shares centre, radius, animation and owner; clusters are named by typed handles
+// {index, generation}, zero is null. Effects (assets/effects/*.json) are composites of
+// emitters and clusters; the game spawns them by name and may attach them to an owner (a
+// ship): an owner's transform moves and turns its clusters, and destroying the owner destroys
+// them in the same tick.
+//
+// Randomness is keyed by (seed, cluster id, tick, particle index), so results do not depend on
+// update order, and clusters far from the camera may skip ticks and catch up exactly.
+//
+//   EffectLibrary fx; fx.load_directory("assets/effects");
+//   ParticleWorld world(ParticleConfig{.seed = level_seed}, &fx);
+//   EffectHandle e = world.spawn("ship_explosion", SpawnParams{.position = p});
+//   ClusterHandle beam = world.spawn_lightning("lightning_beam", ship_id, mount, dir);
+//   each tick: world.set_owner_transform(ship_id, {pos, rot, vel}); world.step(tick, camera);
+//   each frame: world.collect(camera, alpha, view.particles);
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/vec3.hpp>
+
+#include "particles/render_output.h"
+
+namespace arc {
+
+class StateHasher;
+class EffectLibrary;
+
+template <typename Tag>
+struct Handle {
+  uint32_t index = 0;       // slot + 1; 0 is null
+  uint32_t generation = 0;
+  explicit operator bool() const { return index != 0; }
+  bool operator==(const Handle&) const = default;
+};
+struct ClusterTag;
+using ClusterHandle = Handle<ClusterTag>;
+
+// All clusters created by one spawn of a composite effect.
+struct EffectHandle {
+  std::vector<ClusterHandle> clusters;
+};
+
+struct OwnerTransform {
+  glm::dvec3 position{0.0};
+  glm::dquat orientation{1, 0, 0, 0};
+  glm::dvec3 velocity{0.0};
+};
+
+struct SpawnParams {
+  glm::dvec3 position{0.0};              // world, or owner-local when owner != 0
+  glm::dquat orientation{1, 0, 0, 0};    // emitter frame (cone axis is local −Z, "forward")
+  glm::dvec3 velocity{0.0};              // inherited by emitted particles
+  uint32_t owner = 0;                    // 0 = free-floating; otherwise attached to that owner
+  double scale = 1.0;                    // scales sizes, radii, speeds
+  double intensity = 1.0;                // scales alpha and spawn counts
+  int priority = 1;                      // 0 = cosmetic (refused first when the budget is full)
+};
+
+struct ParticleConfig {
+  uint64_t seed = 1;
+  uint32_t budget = 200000;          // live particles at most
+  double cull_distance = 20000.0;    // clusters beyond this (or outside the frustum) skip ticks
+  int lightning_interval = 0;        // 0 = each effect's own sizzle interval
+  double tick_seconds = 1.0 / 60.0;
+};
+
+struct ParticleStats {
+  uint32_t live_particles = 0;
+  uint32_t live_clusters = 0;
+  uint64_t refused_particles = 0;  // spawns refused because the budget was full
+  uint32_t skipped_clusters = 0;   // clusters not animated in the last step (culled)
+};
+
+// The view used for culling and for camera-relative output.
+struct ParticleCamera {
+  glm::dvec3 position{0.0};
+  glm::dquat orientation{1, 0, 0, 0};
+  double fov_y_radians = 1.0;
+  double aspect = 16.0 / 9.0;
+  double near_plane = 0.5;
+};
+
+class ParticleWorld {
+ public:
+  ParticleWorld(const ParticleConfig& config, const EffectLibrary* effects);
+  ~ParticleWorld();
+  ParticleWorld(const ParticleWorld&);             // deep copy (serialization test)
+  ParticleWorld& operator=(const ParticleWorld&);
+
+  // Spawns every emitter and cluster of a named effect (InputError if the name is unknown).
+  EffectHandle spawn(const std::string& effect, const SpawnParams& params);
+  // A lightning channel (Hadwiger §5.2) from an owner-local origin along an owner-local direction.
+  ClusterHandle spawn_lightning(const std::string& effect, uint32_t owner, const glm::dvec3& local_origin,
+                                const glm::dvec3& local_direction);
+  void destroy(ClusterHandle cluster);
+  void destroy(const EffectHandle& effect);
+  void destroy_owner(uint32_t owner);  // every cluster attached to it, now
+  bool alive(ClusterHandle cluster) const;
+
+  // Owners' transforms for this tick; call before step().
+  void set_owner_transform(uint32_t owner, const OwnerTransform& t);
+  // Stops emitters of a cluster (particles already out live on); the cluster dies when empty.
+  void stop_emitting(ClusterHandle cluster);
+  void set_intensity(ClusterHandle cluster, double intensity);  // e.g. shield brightness
+  // Shield flash: brightens particles of a sphere cluster near a world point, fading over `seconds`.
+  void flash(ClusterHandle cluster, const glm::dvec3& world_point, double seconds);
+
+  // Lightning: world-space polyline of the channel (seed segment first), the uncut length, and
+  // the cut: particles farther than `distance` along the channel are not drawn.
+  std::vector<glm::dvec3> lightning_points(ClusterHandle channel) const;
+  double lightning_length(ClusterHandle channel) const;
+  void cut_lightning(ClusterHandle channel, double distance);
+  glm::dvec3 lightning_point_at(ClusterHandle channel, double distance) const;
+
+  // Advances everything to `tick` (normally the previous tick + 1).
+  void step(uint64_t tick, const ParticleCamera& camera);
+  // Appends visible particles, camera-relative, culled by cluster.
+  void collect(const ParticleCamera& camera, std::vector<ParticleInstance>& out) const;
+
+  ParticleStats stats() const;
+  void hash(StateHasher& h) const;
+  uint64_t tick() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace arc

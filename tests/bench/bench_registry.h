@@ -1,0 +1,28 @@
+// tests/bench/bench_registry.h — headline scenes and metric lines for arcfire-bench.
+//
+// Google Benchmark runs first (micro-benchmarks registered with BENCHMARK as usual). Then every
+// headline scene registered with ARCFIRE_SCENE runs once, in registration order, and reports
+// figures with report_metric(); the run ends with one `metric NAME VALUE` line per figure.
+// Ratios are measured within the same run, because the machines are shared and noisy.
+#pragma once
+#include <functional>
+#include <string>
+
+namespace arc::bench {
+
+void report_metric(const std::string& name, double value);
+// Wall-clock seconds (steady clock) for scenes.
+double now_seconds();
+
+struct SceneRegistrar {
+  SceneRegistrar(const char* name, std::function<void()> fn);
+};
+
+}  // namespace arc::bench
+
+#define ARCFIRE_SCENE_CAT2(a, b) a##b
+#define ARCFIRE_SCENE_CAT(a, b) ARCFIRE_SCENE_CAT2(a, b)
+#define ARCFIRE_SCENE(name)                                                              \
+  static void name();                                                                    \
+  static ::arc::bench::SceneRegistrar ARCFIRE_SCENE_CAT(scene_reg_, __LINE__){#name, name}; \
+  static void name()

@@ -1,0 +1,84 @@
+#include <gtest/gtest.h>
+
+#include "core/error.h"
+#include "core/json.h"
+
+using arc::InputError;
+using arc::JsonDoc;
+using arc::JsonObject;
+
+namespace {
+std::string error_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+JsonObject root_of(const std::shared_ptr<const JsonDoc>& d) { return JsonObject(d, "", &d->root()); }
+}  // namespace
+
+TEST(JsonDoc, SyntaxErrorNamesFileLineAndColumn) {
+  std::string e = error_of([] { JsonDoc::parse("{\n  \"a\": 1,\n  \"b\": }\n", "x.json"); });
+  EXPECT_EQ(e.rfind("x.json:3:", 0), 0u) << e;
+}
+
+TEST(JsonDoc, CommentsAreAllowed) {
+  auto d = JsonDoc::parse("// header\n{ /* inline */ \"a\": 1 }", "c.json");
+  EXPECT_EQ(d->root()["a"], 1);
+}
+
+TEST(JsonObject, OutOfRangeValueIsReportedAtItsKey) {
+  auto d = JsonDoc::parse("{\n  \"seed\": 1,\n  \"hull\": -5\n}", "lvl.json");
+  std::string e = error_of([&] {
+    auto r = root_of(d);
+    r.number("hull", 100, 1, 1000);
+  });
+  EXPECT_EQ(e, "lvl.json:3:11: 'hull' must be in [1, 1000], got -5");
+}
+
+TEST(JsonObject, UnknownKeyIsRejectedWithTheAllowedOnes) {
+  auto d = JsonDoc::parse("{\n  \"seed\": 1,\n    \"sede\": 2\n}", "lvl.json");
+  std::string e = error_of([&] {
+    auto r = root_of(d);
+    r.integer("seed", 0, 0, 10);
+    r.finish();
+  });
+  EXPECT_EQ(e, "lvl.json:3:5: unknown key 'sede'; allowed: seed");
+}
+
+TEST(JsonObject, WrongTypeMissingKeyAndHugeNumbers) {
+  EXPECT_EQ(error_of([] { JsonDoc::parse("{\n \"b\": 1e999}", "h.json"); }).rfind("h.json:2:7: invalid JSON: number overflow", 0), 0u);
+  auto d = JsonDoc::parse("{\"a\": \"x\", \"v\": [1, 2], \"n\": [{\"k\": true}]}", "t.json");
+  EXPECT_NE(error_of([&] { root_of(d).number("a", 0, 0, 1); }).find("must be a number"), std::string::npos);
+  EXPECT_NE(error_of([&] { root_of(d).vec3("v", {}, -1, 1); }).find("3 numbers"), std::string::npos);
+  EXPECT_NE(error_of([&] { root_of(d).require("zz"); }).find("missing required key 'zz'"), std::string::npos);
+  std::string e = error_of([&] { root_of(d).objects("n")[0].number("k", 0, 0, 1); });
+  EXPECT_EQ(e.rfind("t.json:1:", 0), 0u) << e;
+  EXPECT_NE(e.find("'k' must be a number"), std::string::npos) << e;
+}
+
+TEST(JsonObject, IntegersRejectFractions) {
+  auto d = JsonDoc::parse("{\"n\": 2.5, \"m\": 3.0}", "i.json");
+  EXPECT_NE(error_of([&] { root_of(d).integer("n", 0, 0, 10); }).find("integer"), std::string::npos);
+  EXPECT_EQ(root_of(d).integer("m", 0, 0, 10), 3);
+}
+
+TEST(JsonObject, ChoiceListsAllowedValues) {
+  auto d = JsonDoc::parse("{\"mode\": \"fast\"}", "m.json");
+  std::string e = error_of([&] { root_of(d).choice("mode", "a", {"a", "b"}); });
+  EXPECT_NE(e.find("one of \"a\" or \"b\""), std::string::npos) << e;
+}
+
+TEST(JsonFiles, MissingFileIsAnInputError) {
+  EXPECT_NE(error_of([] { JsonDoc::load_file("/nonexistent/x.json"); }).find("/nonexistent/x.json"),
+            std::string::npos);
+}
+
+TEST(JsonFiles, AtomicWriteReplacesWholeFile) {
+  std::string p = testing::TempDir() + "/atomic.json";
+  arc::write_file_atomic(p, "{\"a\": 1}");
+  arc::write_file_atomic(p, "{\"a\": 2}");
+  EXPECT_EQ(arc::read_text_file(p), "{\"a\": 2}");
+}
