@@ -1,0 +1,64 @@
+// game/sim/game.h — the simulation: a pure function of (level, seed, difficulty, inputs).
+//
+// Game owns ships, weapons, shields, AI and the ParticleWorld. step() advances one fixed tick
+// with the player's InputFrame and the tick's commands. Nothing here reads the wall clock or
+// includes GL. The renderer reads state through world(); replays hash it through hash().
+//
+//   Game game = Game::load_level("levels/duel.json", GameOptions{});   // InputError on bad files
+//   while (...) game.step(input, commands);
+//   uint64_t h = game.hash();
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "game/sim/input.h"
+
+namespace arc {
+
+class World;  // game/sim/world.h: ships, projectiles, particle world, level state
+
+enum class Difficulty : uint8_t { Easy = 0, Normal = 1, Hard = 2 };
+
+struct GameOptions {
+  Difficulty difficulty = Difficulty::Normal;
+  bool seed_override = false;
+  uint64_t seed = 0;
+  uint32_t particle_budget = 200000;
+  int lightning_interval = 0;  // 0 = effects' own
+  int substeps = 1;
+  std::string root_dir = ".";  // where assets/ lives (files named in levels are relative to it)
+};
+
+class Game {
+ public:
+  static Game load_level(const std::string& level_path, const GameOptions& options);
+  Game(const Game&);             // deep copy: the serialization test runs a copy beside the original
+  Game& operator=(const Game&);
+  Game(Game&&) noexcept;
+  Game& operator=(Game&&) noexcept;
+  ~Game();
+
+  void step(const InputFrame& input, const std::vector<Command>& commands = {});
+  uint64_t tick() const;
+  double tick_seconds() const;
+  bool paused() const;
+  uint64_t hash() const;       // cheap: ships, weapons, projectiles, RNG counters, cluster summaries
+  uint64_t full_hash() const;  // everything, every particle included
+  std::string state_dump() const;  // readable, for the first diverging tick of a replay
+  std::string summary_json() const;  // the headless --summary document
+
+  // Serialization (for --serialization-test and save games): bytes in, bytes out.
+  std::vector<uint8_t> save() const;
+  static Game restore(const std::vector<uint8_t>& bytes, const std::string& level_path, const GameOptions& options);
+
+  const World& world() const;
+  World& world_mut();
+
+ private:
+  Game();
+  std::unique_ptr<World> world_;
+};
+
+}  // namespace arc
