@@ -27,7 +27,7 @@ struct ParticleInstance {
   float size;       // half-width, world units
   float axis[3];    // AxisLocked: full segment vector (world units); CameraFacing: unused
   float rotation;   // radians around the view axis (CameraFacing)
-  float color[4];   // linear RGB and alpha, not premultiplied (the shader applies Ilmonen eq. 5–6)
+  float color[4];   // rgb premultiplied by alpha (Ilmonen eq. 5: fgc = rgb·alpha), then alpha
   float burn;       // 0 = alpha blended, 1 = additive
   float soft_extent;  // depth extent of the volume for soft edges (world units); ≤ 0 → use size
   uint16_t sprite;    // layer in the sprite array texture
