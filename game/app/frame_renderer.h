@@ -1,0 +1,37 @@
+// game/app/frame_renderer.h — renders Game state to images without a window.
+//
+// Owns an EGL headless context and a Renderer, loads only the models and sprites the level
+// needs, and turns the current (interpolated) game state into an RGBA8 image. Used by
+// `arcfire --headless --out`, replay snapshots, the attract demo and the golden-image tests.
+// Creating one is the only thing that makes a GL context: replays without snapshots never do.
+#pragma once
+#include <memory>
+#include <string>
+
+#include "assets/model.h"
+#include "core/settings.h"
+
+namespace arc {
+
+class Game;
+
+struct FrameRendererDesc {
+  int width = 1280;
+  int height = 720;
+  std::string root_dir = ARCFIRE_SOURCE_DIR;  // repo root: shaders/, assets/
+};
+
+class FrameRenderer {
+ public:
+  // Throws PlatformError (no EGL/GL) or InputError (bad assets).
+  FrameRenderer(const FrameRendererDesc& desc, const Settings& settings, const Game& game);
+  ~FrameRenderer();
+  Image render(const Game& game, double alpha = 1.0);
+  std::string context_description() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace arc
