@@ -23,6 +23,7 @@ enum class Difficulty : uint8_t { Easy = 0, Normal = 1, Hard = 2 };
 
 struct GameOptions {
   Difficulty difficulty = Difficulty::Normal;
+  bool difficulty_override = false;  // false: the level's own difficulty
   bool seed_override = false;
   uint64_t seed = 0;
   uint32_t particle_budget = 200000;

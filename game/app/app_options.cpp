@@ -1,0 +1,126 @@
+#include "game/app/app_options.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "core/error.h"
+
+namespace arc {
+namespace {
+
+// "1280x720" → width, height; sizes from 16 to 8192.
+bool parse_size(const std::string& text, int& w, int& h) {
+  auto x = text.find('x');
+  if (x == std::string::npos) return false;
+  try {
+    size_t a = 0, b = 0;
+    int pw = std::stoi(text.substr(0, x), &a);
+    int ph = std::stoi(text.substr(x + 1), &b);
+    if (a != x || b != text.size() - x - 1) return false;
+    if (pw < 16 || ph < 16 || pw > 8192 || ph > 8192) return false;
+    w = pw;
+    h = ph;
+    return true;
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+}  // namespace
+
+std::string resolve_data_path(const std::string& path, const std::string& option) {
+  namespace fs = std::filesystem;
+  if (fs::is_regular_file(path)) return path;
+  fs::path in_source = fs::path(ARCFIRE_SOURCE_DIR) / path;
+  if (fs::path(path).is_relative() && fs::is_regular_file(in_source)) return in_source.string();
+  throw InputError(option + " " + path + ": no such file");
+}
+
+std::optional<int> parse_command_line(int argc, char** argv, AppOptions& o) {
+  CLI::App app{"Arcfire: a small 3-D space-combat demo. Without options it opens a window and plays "
+               "levels/duel.json.",
+               "arcfire"};
+  std::string size = "1280x720";
+  std::string quality;
+  std::vector<std::string> sets;
+  std::string difficulty;
+  int64_t seed = -1;
+  bool list_settings = false;
+  app.add_option("--level", o.level, "level file to play or simulate (default levels/duel.json)");
+  app.add_flag("--headless", o.headless, "run without a window (EGL, no display needed)");
+  app.add_flag("--demo", o.demo, "headless attract demo: AI against AI, frames and a contact sheet in --out");
+  app.add_option("--ticks", o.ticks, "headless: number of simulation ticks to run")->check(CLI::Range(int64_t(1), int64_t(100000000)));
+  app.add_option("--every", o.every, "headless: write a PNG frame every N ticks into --out")->check(CLI::Range(int64_t(1), int64_t(100000000)));
+  app.add_option("--size", size, "frame size for headless rendering, WIDTHxHEIGHT (16..8192)");
+  app.add_option("--out", o.out_dir, "folder for frames, snapshots and reports (created if missing)");
+  app.add_flag("--no-render", o.no_render, "headless: simulate only, create no GL context");
+  app.add_option("--summary", o.summary_path, "headless: write the final world state as JSON to this file");
+  app.add_option("--record", o.record_path, "record the live session to a replay script");
+  app.add_option("--replay", o.replay_path, "headless: replay a script and check its expectations")->check(CLI::ExistingFile);
+  app.add_flag("--update-golden", o.update_golden, "replay: write snapshots as the new golden images");
+  app.add_option("--serialization-test", o.serialization_test,
+                 "save and reload the world every N ticks beside the original; fail at the first differing hash")
+      ->check(CLI::Range(int64_t(1), int64_t(1000000)));
+  app.add_option("--quality", quality, "quality preset: low, medium, high or reference");
+  app.add_option("--set", sets, "override one setting, key=value (repeatable; see --list-settings)");
+  app.add_flag("--list-settings", list_settings, "list every setting with its value and allowed range");
+  app.add_option("--difficulty", difficulty, "AI difficulty: easy, normal or hard (default: the level's)");
+  app.add_option("--seed", seed, "override the level's random seed")->check(CLI::Range(int64_t(0), int64_t(4294967295)));
+  app.add_option("--bindings", o.bindings_path, "key and gamepad bindings file");
+  app.add_flag("--fullscreen", o.fullscreen, "start in fullscreen (F11 or Alt+Enter toggles)");
+  bool no_vsync = false;
+  app.add_flag("--no-vsync", no_vsync, "do not wait for vertical sync");
+  app.add_flag("--fps", o.show_fps, "show the FPS counter (F3 toggles)");
+  app.set_version_flag("--version", "arcfire 0.1.0");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::Success& e) {
+    app.exit(e);
+    return 0;
+  } catch (const CLI::ParseError& e) {
+    std::string msg = e.what();
+    std::fprintf(stderr, "arcfire: %s (see arcfire --help)\n", msg.c_str());
+    return int(kExitBadInput);
+  }
+  o.vsync = !no_vsync;
+  try {
+    o.level = resolve_data_path(o.level, "--level");
+    o.bindings_path = resolve_data_path(o.bindings_path, "--bindings");
+    if (!parse_size(size, o.width, o.height))
+      throw InputError("--size: expected WIDTHxHEIGHT with each in 16..8192, got '" + size + "'");
+    if (!quality.empty())
+      o.settings.apply_preset_file(std::string(ARCFIRE_SOURCE_DIR) + "/assets/settings/quality.json", quality);
+    for (const auto& s : sets) o.settings.set_from_text(s, "--set " + s);
+    if (!difficulty.empty()) {
+      if (difficulty == "easy") o.game.difficulty = Difficulty::Easy;
+      else if (difficulty == "normal") o.game.difficulty = Difficulty::Normal;
+      else if (difficulty == "hard") o.game.difficulty = Difficulty::Hard;
+      else throw InputError("--difficulty: must be easy, normal or hard, got '" + difficulty + "'");
+      o.game.difficulty_override = true;
+    }
+    if (seed >= 0) {
+      o.game.seed_override = true;
+      o.game.seed = uint64_t(seed);
+    }
+    if (o.no_render && !o.headless && o.replay_path.empty())
+      throw InputError("--no-render: only with --headless or --replay");
+    if (o.update_golden && o.replay_path.empty()) throw InputError("--update-golden: only with --replay");
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "arcfire: %s\n", e.what());
+    return int(kExitBadInput);
+  }
+  o.game.particle_budget = uint32_t(o.settings.integer("particles.budget"));
+  o.game.lightning_interval = int(o.settings.integer("particles.lightning_interval"));
+  o.game.substeps = int(o.settings.integer("sim.substeps"));
+  if (list_settings) {
+    std::cout << "Settings (arcfire --set key=value; presets with --quality):\n" << o.settings.describe();
+    return 0;
+  }
+  return std::nullopt;
+}
+
+}  // namespace arc

@@ -1,0 +1,43 @@
+// game/app/app_options.h — the arcfire command line, parsed once into plain options.
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/settings.h"
+#include "game/sim/game.h"
+
+namespace arc {
+
+struct AppOptions {
+  std::string level = "levels/duel.json";
+  bool headless = false;
+  bool demo = false;        // attract demo: AI vs AI frames and a contact sheet
+  bool no_render = false;
+  int64_t ticks = -1;       // headless: ticks to simulate (-1 = the mode's default)
+  int64_t every = 0;        // headless: write a frame every N ticks (0 = only with --out: every 30)
+  int width = 1280, height = 720;
+  std::string out_dir;
+  std::string summary_path;
+  std::string record_path;
+  std::string replay_path;
+  bool update_golden = false;
+  int64_t serialization_test = 0;  // N > 0: save/load every N ticks
+  std::string bindings_path = "assets/settings/bindings.json";
+  bool fullscreen = false;
+  bool vsync = true;
+  bool show_fps = false;
+  Settings settings = Settings::defaults();
+  GameOptions game;
+};
+
+// A data file named on the command line: as given, or else relative to the source tree, so
+// `arcfire --level levels/arena.json` works from any folder. InputError if neither exists.
+std::string resolve_data_path(const std::string& path, const std::string& option);
+
+// Parses argv. Returns an exit code to stop with (0 after --help, 2 on bad usage), or nullopt
+// to go on. Errors are one line on stderr.
+std::optional<int> parse_command_line(int argc, char** argv, AppOptions& out);
+
+}  // namespace arc

@@ -1,0 +1,79 @@
+#include "game/app/headless_run.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+#include "core/error.h"
+#include "core/json.h"
+#include "game/app/contact_sheet.h"
+#include "game/app/frame_renderer.h"
+#include "game/sim/game.h"
+
+namespace arc {
+namespace {
+
+std::string frame_name(const std::string& dir, uint64_t tick) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "frame_%06llu.png", static_cast<unsigned long long>(tick));
+  return (std::filesystem::path(dir) / buf).string();
+}
+
+void make_dir(const std::string& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir))
+    throw InputError("--out " + dir + ": cannot create folder (" + ec.message() + ")");
+}
+
+}  // namespace
+
+int run_headless(const AppOptions& o) {
+  const bool demo = o.demo;
+  std::string level = o.level;
+  if (demo && level == AppOptions{}.level) level = "levels/attract.json";
+  std::string out = o.out_dir;
+  if (demo && out.empty()) out = "out/demo";
+  int64_t ticks = o.ticks > 0 ? o.ticks : (demo ? 3600 : 600);
+  int64_t every = o.every > 0 ? o.every : (demo ? 120 : 30);
+  const bool render = !o.no_render && !out.empty();
+
+  Game game = Game::load_level(level, o.game);
+  if (!out.empty()) make_dir(out);
+  std::unique_ptr<FrameRenderer> renderer;
+  if (render) {
+    FrameRendererDesc desc;
+    desc.width = o.width;
+    desc.height = o.height;
+    renderer = std::make_unique<FrameRenderer>(desc, o.settings, game);
+  }
+
+  std::vector<Image> frames;
+  std::vector<std::string> written;
+  for (int64_t t = 1; t <= ticks; ++t) {
+    game.step(InputFrame{});
+    if (renderer && t % every == 0) {
+      Image img = renderer->render(game);
+      std::string path = frame_name(out, game.tick());
+      save_image(path, img);
+      written.push_back(path);
+      if (demo) frames.push_back(std::move(img));
+    }
+  }
+  if (!o.summary_path.empty()) write_file_atomic(o.summary_path, game.summary_json());
+  if (!written.empty())
+    std::printf("arcfire: wrote %zu frames to %s/ (%s .. %s)\n", written.size(), out.c_str(),
+                std::filesystem::path(written.front()).filename().c_str(),
+                std::filesystem::path(written.back()).filename().c_str());
+  if (demo && !frames.empty()) {
+    std::string sheet = (std::filesystem::path(out) / "contact_sheet.png").string();
+    save_image(sheet, make_contact_sheet(frames, 6, 320));
+    std::printf("arcfire: contact sheet: %s\n", sheet.c_str());
+  }
+  if (!o.summary_path.empty()) std::printf("arcfire: summary: %s\n", o.summary_path.c_str());
+  std::printf("arcfire: simulated %lld ticks of %s\n", static_cast<long long>(ticks), level.c_str());
+  return kExitOk;
+}
+
+}  // namespace arc

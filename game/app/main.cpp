@@ -1,0 +1,29 @@
+// arcfire — entry point. Parses the command line and hands over to one of the modes:
+// window (play), headless frames / demo / summary, replay, serialization test.
+// Exit codes: 0 success, 1 a check failed, 2 bad input or usage.
+#include <cstdio>
+#include <exception>
+
+#include "core/error.h"
+#include "game/app/app_options.h"
+#include "game/app/headless_run.h"
+#include "game/app/replay_modes.h"
+#include "game/app/window_loop.h"
+#include "platform/platform.h"
+
+int main(int argc, char** argv) {
+  arc::AppOptions options;
+  if (auto code = arc::parse_command_line(argc, argv, options)) return *code;
+  try {
+    if (!options.replay_path.empty()) return arc::run_replay_from_options(options);
+    if (options.serialization_test > 0) return arc::run_serialization_test_from_options(options);
+    if (options.headless || options.demo) return arc::run_headless(options);
+    return arc::run_window(options);
+  } catch (const arc::InputError& e) {
+    std::fprintf(stderr, "arcfire: %s\n", e.what());
+    return arc::kExitBadInput;
+  } catch (const arc::PlatformError& e) {
+    std::fprintf(stderr, "arcfire: %s\n", e.what());
+    return arc::kExitBadInput;
+  }
+}
