@@ -1,0 +1,211 @@
+#include "game/sim/defs.h"
+
+#include <filesystem>
+
+#include "core/error.h"
+#include "core/json.h"
+
+namespace arc {
+namespace {
+
+constexpr double kHuge = 1.0e6;
+constexpr double kSpace = 1.0e9;  // positions: world space is big but bounded
+
+std::vector<glm::dvec3> points(JsonObject& o, const std::string& key, double limit) {
+  std::vector<glm::dvec3> out;
+  auto v = o.get(key);
+  if (!v) return out;
+  for (const JsonValue& p : v->array()) out.push_back(p.vec3(-limit, limit));
+  return out;
+}
+
+ProjectileWeaponDef projectile_weapon(JsonObject& o, bool homing) {
+  ProjectileWeaponDef w;
+  w.present = true;
+  w.hardpoints = points(o, "hardpoints", 100.0);
+  if (w.hardpoints.empty()) o.fail_key("hardpoints", "'hardpoints' must list at least one [x, y, z]");
+  w.speed = o.number("speed", homing ? 220.0 : 450.0, 1.0, 5000.0);
+  w.damage = o.number("damage", homing ? 45.0 : 18.0, 0.0, kHuge);
+  w.energy = o.number("energy", homing ? 15.0 : 6.0, 0.0, kHuge);
+  w.cooldown = o.number("cooldown", homing ? 2.0 : 0.25, 1.0 / 240.0, 600.0);
+  w.lifetime = o.number("lifetime", homing ? 8.0 : 3.0, 0.05, 600.0);
+  w.turn_rate = homing ? o.number("turn_rate", 120.0, 0.0, 3600.0) : 0.0;
+  w.hit_radius = o.number("hit_radius", 1.0, 0.0, 1000.0);
+  o.finish();
+  return w;
+}
+
+JsonObject root_of(const std::shared_ptr<const JsonDoc>& doc) {
+  JsonObject r(doc, "", &doc->root());
+  return r;
+}
+
+glm::dvec3 orientation(JsonObject& o) { return o.vec3("orientation", glm::dvec3(0.0), -3600.0, 3600.0); }
+
+}  // namespace
+
+ShipClassDef load_ship_class(const std::string& path, const std::string& name) {
+  auto doc = JsonDoc::load_file(path);
+  JsonObject r = root_of(doc);
+  ShipClassDef c;
+  c.name = name;
+  c.path = path;
+  c.model = r.require_string("model");
+  c.mass = r.require_number("mass", 1.0, 1.0e9);
+  c.thrust = r.require_number("thrust", 0.0, 1.0e12);
+  c.strafe_thrust = r.number("strafe_thrust", c.thrust * 0.5, 0.0, 1.0e12);
+  glm::dvec3 turn = r.vec3("turn_rates", glm::dvec3(90.0, 90.0, 120.0), 0.0, 3600.0);
+  c.turn_rate[0] = turn.x;
+  c.turn_rate[1] = turn.y;
+  c.turn_rate[2] = turn.z;
+  c.turn_response = r.number("turn_response", 6.0, 0.1, 100.0);
+  c.max_speed = r.require_number("max_speed", 1.0, 1.0e5);
+  c.reverse_fraction = r.number("reverse_fraction", 0.3, 0.0, 1.0);
+  c.afterburner_speed = r.number("afterburner_speed", 1.6, 1.0, 10.0);
+  c.afterburner_energy = r.number("afterburner_energy", 20.0, 0.0, kHuge);
+  c.hull = r.require_number("hull", 1.0, kHuge);
+  c.shield = r.number("shield", 0.0, 0.0, kHuge);
+  c.shield_regen = r.number("shield_regen", 10.0, 0.0, kHuge);
+  c.shield_regen_delay = r.number("shield_regen_delay", 3.0, 0.0, 3600.0);
+  c.energy = r.number("energy", 100.0, 0.0, kHuge);
+  c.energy_regen = r.number("energy_regen", 15.0, 0.0, kHuge);
+  c.collision_radius = r.require_number("collision_radius", 0.1, 1000.0);
+  c.shield_radius = r.number("shield_radius", c.collision_radius * 1.3, 0.1, 1000.0);
+  if (c.shield_radius < c.collision_radius)
+    r.fail_key("shield_radius", "'shield_radius' must be at least 'collision_radius' (" +
+                                    std::to_string(c.collision_radius) + ")");
+  JsonObject beam = r.require_object("beam");
+  c.beam.mounts = points(beam, "mounts", 100.0);
+  if (c.beam.mounts.empty()) beam.fail_key("mounts", "'mounts' must list at least one [x, y, z]");
+  c.beam.range = beam.number("range", 600.0, 1.0, 1.0e5);
+  c.beam.damage_per_second = beam.number("damage_per_second", 40.0, 0.0, kHuge);
+  c.beam.energy_per_second = beam.number("energy_per_second", 25.0, 0.0, kHuge);
+  beam.finish();
+  if (auto m = r.get("missile")) {
+    JsonObject o = m->object();
+    c.missile = projectile_weapon(o, true);
+  }
+  if (auto p = r.get("plasma")) {
+    JsonObject o = p->object();
+    c.plasma = projectile_weapon(o, false);
+  }
+  c.exhausts = points(r, "exhausts", 100.0);
+  r.finish();
+  return c;
+}
+
+LevelDef parse_level_doc(std::shared_ptr<const JsonDoc> doc, const std::string& root_dir) {
+  JsonObject r = root_of(doc);
+  LevelDef L;
+  L.path = doc->path();
+  L.name = r.require_string("name");
+  L.seed = static_cast<uint64_t>(r.integer("seed", 1, 0, 0xFFFFFFFFll));
+  L.tick_rate = static_cast<int>(r.integer("tick_rate", 60, 10, 480));
+  std::string diff = r.choice("difficulty", "normal", {"easy", "normal", "hard"});
+  L.difficulty = diff == "easy" ? 0 : diff == "normal" ? 1 : 2;
+  L.objective = r.require_string("objective");
+
+  JsonObject win = r.require_object("win");
+  std::string wk = win.choice("type", "destroy_all_hostiles",
+                              {"destroy_all_hostiles", "survive_ticks", "last_team_standing"});
+  L.win = wk == "destroy_all_hostiles" ? WinKind::DestroyAllHostiles
+          : wk == "survive_ticks"      ? WinKind::SurviveTicks
+                                       : WinKind::LastTeamStanding;
+  if (L.win == WinKind::SurviveTicks) L.win_ticks = win.require("ticks").integer(1, 100000000);
+  win.finish();
+  JsonObject lose = r.require_object("lose");
+  std::string lk = lose.choice("type", "player_destroyed", {"player_destroyed", "protect", "none"});
+  L.lose = lk == "player_destroyed" ? LoseKind::PlayerDestroyed : lk == "protect" ? LoseKind::Protect : LoseKind::None;
+  if (L.lose == LoseKind::Protect) L.protect_ship = lose.require_string("ship");
+  lose.finish();
+
+  if (auto s = r.get("splash")) {
+    JsonObject o = s->object();
+    L.splash = o.boolean("enabled", true);
+    L.splash_radius = o.number("radius", 60.0, 0.0, 1.0e5);
+    L.splash_damage = o.number("damage", 40.0, 0.0, kHuge);
+    o.finish();
+  }
+
+  std::optional<JsonValue> protect_pos;
+  bool have_player = false;
+  for (JsonObject s : r.objects("ships")) {
+    ShipSpawnDef d;
+    d.name = s.require_string("name");
+    JsonValue cls = s.require("class");
+    d.ship_class = cls.string();
+    d.team = s.require_string("team");
+    d.player = s.boolean("player", false);
+    if (d.player && have_player) s.fail_key("player", "only one ship may be the player");
+    have_player = have_player || d.player;
+    std::string ai = s.choice("ai", d.player ? "none" : "fighter", {"none", "fighter"});
+    d.ai = ai == "none" ? AiKind::None : AiKind::Fighter;
+    d.position = s.vec3("position", glm::dvec3(0.0), -kSpace, kSpace);
+    d.orientation_deg = orientation(s);
+    d.velocity = s.vec3("velocity", glm::dvec3(0.0), -1.0e5, 1.0e5);
+    s.finish();
+    for (const ShipSpawnDef& other : L.ships)
+      if (other.name == d.name) s.fail_key("name", "ship name '" + d.name + "' is used twice");
+    if (!L.classes.count(d.ship_class)) {
+      if (d.ship_class.empty() || d.ship_class.find_first_of("/\\.") != std::string::npos)
+        cls.fail("'class' must be a ship class name (a file stem in assets/ships/), got \"" + d.ship_class + "\"");
+      std::string file = (std::filesystem::path(root_dir) / "assets/ships" / (d.ship_class + ".json")).string();
+      if (!std::filesystem::exists(file))
+        cls.fail("ship class '" + d.ship_class + "' not found: no file " + file);
+      L.classes.emplace(d.ship_class, load_ship_class(file, d.ship_class));
+    }
+    L.ships.push_back(std::move(d));
+  }
+  if (L.ships.empty()) r.fail_key(r.has("ships") ? "ships" : "name", "a level needs at least one ship in 'ships'");
+
+  for (JsonObject p : r.objects("props")) {
+    PropDef d;
+    d.model = p.require_string("model");
+    d.label = p.string("label", "");
+    d.position = p.vec3("position", glm::dvec3(0.0), -kSpace, kSpace);
+    d.orientation_deg = orientation(p);
+    d.scale = p.number("scale", 1.0, 1.0e-3, 1.0e4);
+    d.radius = p.number("radius", 0.0, 0.0, 1.0e6);
+    p.finish();
+    L.props.push_back(std::move(d));
+  }
+  for (JsonObject e : r.objects("effects")) {
+    EffectSpawnDef d;
+    d.effect = e.require_string("effect");
+    d.label = e.string("label", "");
+    d.position = e.vec3("position", glm::dvec3(0.0), -kSpace, kSpace);
+    d.orientation_deg = orientation(e);
+    d.scale = e.number("scale", 1.0, 1.0e-3, 1.0e4);
+    d.repeat_ticks = static_cast<int>(e.integer("repeat_ticks", 0, 0, 1000000));
+    e.finish();
+    L.effects.push_back(std::move(d));
+  }
+  if (auto c = r.get("camera")) {
+    JsonObject o = c->object();
+    L.camera.mode = o.choice("mode", "chase", {"chase", "cockpit", "fixed"});
+    L.camera.position = o.vec3("position", L.camera.position, -kSpace, kSpace);
+    L.camera.look_at = o.vec3("look_at", L.camera.look_at, -kSpace, kSpace);
+    L.camera.fov_deg = o.number("fov", 60.0, 10.0, 150.0);
+    o.finish();
+  }
+  if (L.lose == LoseKind::Protect) {
+    bool found = false;
+    for (const ShipSpawnDef& s : L.ships) found = found || s.name == L.protect_ship;
+    if (!found) {
+      JsonObject lose2 = r.require_object("lose");
+      lose2.fail_key("ship", "'ship' names no ship of this level: \"" + L.protect_ship + "\"");
+    }
+  }
+  r.finish();
+  return L;
+}
+
+LevelDef load_level_def(const std::string& path, const std::string& root_dir) {
+  return parse_level_doc(JsonDoc::load_file(path), root_dir);
+}
+
+LevelDef parse_level_def(const std::string& text, const std::string& path, const std::string& root_dir) {
+  return parse_level_doc(JsonDoc::parse(text, path), root_dir);
+}
+
+}  // namespace arc

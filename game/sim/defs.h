@@ -1,0 +1,131 @@
+// game/sim/defs.h — ship classes and levels as plain definitions loaded from JSON.
+//
+// Loaders only fill defs and validate every value through core/json.h, so a wrong file fails
+// with `path:line:col: what is wrong and what is allowed` before anything is simulated.
+// ShipClassDef comes from assets/ships/*.json, LevelDef from levels/*.json (see levels/README.md
+// for every key). Paths inside files are relative to GameOptions::root_dir.
+//
+//   LevelDef level = load_level_def("levels/duel.json", ".");   // also loads the ship classes
+#pragma once
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+#include <glm/vec3.hpp>
+
+namespace arc {
+
+struct BeamDef {
+  std::vector<glm::dvec3> mounts;   // ship-local, forward is −Z
+  double range = 600.0;             // metres
+  double damage_per_second = 40.0;  // split over the mounts
+  double energy_per_second = 25.0;
+};
+
+struct ProjectileWeaponDef {
+  bool present = false;
+  std::vector<glm::dvec3> hardpoints;
+  double speed = 300.0;         // m/s relative to the ship
+  double damage = 30.0;
+  double energy = 10.0;         // per shot
+  double cooldown = 1.0;        // seconds between shots
+  double lifetime = 6.0;        // seconds
+  double turn_rate = 90.0;      // degrees per second (missiles home, plasma does not)
+  double hit_radius = 1.0;
+};
+
+struct ShipClassDef {
+  std::string name;      // file stem: "viper"
+  std::string path;      // the file it came from
+  std::string model;     // e.g. "assets/models/viper.glb"
+  double mass = 10000.0;       // kg
+  double thrust = 600000.0;    // N, main engine
+  double strafe_thrust = 300000.0;
+  double turn_rate[3] = {90.0, 90.0, 120.0};  // pitch, yaw, roll, degrees per second
+  double turn_response = 6.0;  // 1/s: how fast angular rates follow the stick
+  double max_speed = 150.0;    // m/s with flight assist
+  double reverse_fraction = 0.3;
+  double afterburner_speed = 1.6;   // speed and thrust factor
+  double afterburner_energy = 20.0; // per second
+  double hull = 100.0;
+  double shield = 100.0;
+  double shield_regen = 10.0;       // per second
+  double shield_regen_delay = 3.0;  // seconds after the last hit
+  double energy = 100.0;
+  double energy_regen = 15.0;       // per second
+  double collision_radius = 8.0;
+  double shield_radius = 11.0;
+  BeamDef beam;
+  ProjectileWeaponDef missile;
+  ProjectileWeaponDef plasma;
+  std::vector<glm::dvec3> exhausts;  // engine exhaust points, ship-local
+};
+
+enum class AiKind : uint8_t { None = 0, Fighter = 1 };
+
+struct ShipSpawnDef {
+  std::string name;
+  std::string ship_class;  // key into LevelDef::classes
+  std::string team;
+  bool player = false;
+  AiKind ai = AiKind::Fighter;
+  glm::dvec3 position{0.0};
+  glm::dvec3 orientation_deg{0.0};  // yaw, pitch, roll
+  glm::dvec3 velocity{0.0};
+};
+
+struct PropDef {
+  std::string model;
+  std::string label;
+  glm::dvec3 position{0.0};
+  glm::dvec3 orientation_deg{0.0};
+  double scale = 1.0;
+  double radius = 0.0;  // collision sphere; 0 = no collision
+};
+
+struct EffectSpawnDef {
+  std::string effect;
+  std::string label;
+  glm::dvec3 position{0.0};
+  glm::dvec3 orientation_deg{0.0};
+  double scale = 1.0;
+  int repeat_ticks = 0;  // 0 = once at the start
+};
+
+enum class WinKind : uint8_t { DestroyAllHostiles = 0, SurviveTicks = 1, LastTeamStanding = 2 };
+enum class LoseKind : uint8_t { PlayerDestroyed = 0, Protect = 1, None = 2 };
+
+struct CameraHintDef {
+  std::string mode = "chase";  // chase, cockpit, fixed
+  glm::dvec3 position{0.0, 30.0, 120.0};
+  glm::dvec3 look_at{0.0};
+  double fov_deg = 60.0;
+};
+
+struct LevelDef {
+  std::string path;
+  std::string name;
+  uint64_t seed = 1;
+  int tick_rate = 60;
+  int difficulty = 1;  // Difficulty
+  std::string objective;
+  WinKind win = WinKind::DestroyAllHostiles;
+  int64_t win_ticks = 0;
+  LoseKind lose = LoseKind::PlayerDestroyed;
+  std::string protect_ship;
+  bool splash = false;
+  double splash_radius = 60.0;
+  double splash_damage = 40.0;
+  std::vector<ShipSpawnDef> ships;
+  std::vector<PropDef> props;
+  std::vector<EffectSpawnDef> effects;
+  CameraHintDef camera;
+  std::map<std::string, ShipClassDef> classes;  // every class the ships name, by name
+};
+
+ShipClassDef load_ship_class(const std::string& path, const std::string& name);
+LevelDef load_level_def(const std::string& path, const std::string& root_dir);
+// Parses level text (tests write levels in memory); `path` names it in messages.
+LevelDef parse_level_def(const std::string& text, const std::string& path, const std::string& root_dir);
+
+}  // namespace arc
