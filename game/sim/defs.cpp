@@ -138,8 +138,8 @@ LevelDef parse_level_doc(std::shared_ptr<const JsonDoc> doc, const std::string& 
     d.player = s.boolean("player", false);
     if (d.player && have_player) s.fail_key("player", "only one ship may be the player");
     have_player = have_player || d.player;
-    std::string ai = s.choice("ai", d.player ? "none" : "fighter", {"none", "fighter"});
-    d.ai = ai == "none" ? AiKind::None : AiKind::Fighter;
+    std::string ai = s.choice("ai", d.player ? "none" : "fighter", {"none", "fighter", "gunner"});
+    d.ai = ai == "none" ? AiKind::None : ai == "fighter" ? AiKind::Fighter : AiKind::Gunner;
     d.position = s.vec3("position", glm::dvec3(0.0), -kSpace, kSpace);
     d.orientation_deg = orientation(s);
     d.velocity = s.vec3("velocity", glm::dvec3(0.0), -1.0e5, 1.0e5);

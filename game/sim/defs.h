@@ -61,7 +61,8 @@ struct ShipClassDef {
   std::vector<glm::dvec3> exhausts;  // engine exhaust points, ship-local
 };
 
-enum class AiKind : uint8_t { None = 0, Fighter = 1 };
+// Gunner: holds still and fires every weapon straight ahead in bursts (the effect gallery).
+enum class AiKind : uint8_t { None = 0, Fighter = 1, Gunner = 2 };
 
 struct ShipSpawnDef {
   std::string name;

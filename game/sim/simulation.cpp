@@ -195,6 +195,14 @@ void drive_ai(World& w, Ship& s) {
   s.controls = c;
 }
 
+void drive_gunner(const World& w, Ship& s) {
+  InputFrame c;
+  // Three seconds on, one off: the beam's energy drain outpaces regeneration only slightly.
+  if (w.tick % 240 < 180) c.buttons |= kFirePrimary;
+  c.buttons |= kFireSecondary;
+  s.controls = c;
+}
+
 // ---------------------------------------------------------------- weapons
 
 void stop_beam(World& w, Ship& s) {
@@ -719,6 +727,7 @@ void init_world(World& w, LevelDef level, const GameOptions& o) {
     s.hull = s.cls->hull;
     s.shield = s.cls->shield;
     s.energy = s.cls->energy;
+    if (!s.cls->missile.present && s.cls->plasma.present) s.secondary = SecondaryWeapon::Plasma;
     if (d.player) w.player = s.id;
     w.ships.push_back(std::move(s));
   }
@@ -775,6 +784,7 @@ void step_world(World& w, const InputFrame& input, const std::vector<Command>& c
     if (!s.alive) continue;
     if (s.id == w.player && s.ai == AiKind::None) s.controls = input;
     else if (s.ai == AiKind::Fighter) drive_ai(w, s);
+    else if (s.ai == AiKind::Gunner) drive_gunner(w, s);
     else s.controls = InputFrame{};
     s.afterburner_on = (s.controls.buttons & kAfterburner) && s.energy > 0;
     if (s.afterburner_on) s.energy = std::max(0.0, s.energy - s.cls->afterburner_energy * w.dt);

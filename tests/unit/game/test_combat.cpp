@@ -1,0 +1,205 @@
+#include <cmath>
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+
+#include "game/sim/simulation.h"
+#include "test_helpers.h"
+
+namespace arc {
+namespace {
+
+using test::level_text;
+using test::options;
+using test::write_level;
+
+// Two stationary ships: a shooter at the origin facing −Z and a target straight ahead.
+Game facing_pair(const std::string& name, double target_z, const std::string& target_ai = "none",
+                 const std::string& extra = "", double target_x = 0) {
+  std::string ships = R"({ "name": "Shooter", "class": "viper", "team": "blue", "player": true },
+    { "name": "Target", "class": "viper", "team": "red", "ai": ")" + target_ai + R"(", "position": [)" +
+                      std::to_string(target_x) + ", 0, " + std::to_string(target_z) + "] }";
+  return Game::load_level(write_level(name, level_text(ships, extra)), options());
+}
+
+InputFrame fire() {
+  InputFrame f;
+  f.buttons = kFirePrimary;
+  return f;
+}
+
+TEST(BeamGeometry, StraightLineAtAShipHitsAndStallsOnTheShieldSphere) {
+  Game g = facing_pair("beam_hit.json", -200);
+  const World& w = g.world();
+  const Ship& t = w.ships[1];
+  BeamHit hit = trace_beam(w, 0, {glm::dvec3(0, 0, -5), glm::dvec3(0, 0, -600)});
+  ASSERT_EQ(hit.ship, 1);
+  EXPECT_TRUE(hit.on_shield);
+  EXPECT_NEAR(glm::length(hit.point - t.position), t.cls->shield_radius, 1e-9);
+  EXPECT_NEAR(hit.distance, 200.0 - 5.0 - t.cls->shield_radius, 1e-9);
+}
+
+TEST(BeamGeometry, BeamAimedAwayMisses) {
+  Game g = facing_pair("beam_miss.json", -200);
+  BeamHit hit = trace_beam(g.world(), 0, {glm::dvec3(0, 0, -5), glm::dvec3(600, 0, -5)});
+  EXPECT_EQ(hit.ship, -1);
+  EXPECT_LT(hit.distance, 0.0);
+}
+
+TEST(BeamGeometry, PolylineHitsOnTheRightSegmentAndDepletedShieldStopsAtTheHull) {
+  Game g = facing_pair("beam_poly.json", -200);
+  World& w = g.world_mut();
+  w.ships[1].shield = 0;
+  // A jagged channel: the first segment misses, the second crosses the target.
+  std::vector<glm::dvec3> line{{0, 0, 0}, {50, 0, -100}, {-50, 0, -300}};
+  BeamHit hit = trace_beam(w, 0, line);
+  ASSERT_EQ(hit.ship, 1);
+  EXPECT_FALSE(hit.on_shield);
+  EXPECT_NEAR(glm::length(hit.point - w.ships[1].position), w.ships[1].cls->collision_radius, 1e-9);
+  EXPECT_GT(hit.distance, glm::length(line[1] - line[0]));
+}
+
+TEST(BeamGeometry, SegmentSphereEdgeCases) {
+  EXPECT_DOUBLE_EQ(segment_sphere({0, 0, 0}, {0, 0, -10}, {0, 0, -5}, 1.0), 0.4);
+  EXPECT_DOUBLE_EQ(segment_sphere({0, 0, -5}, {0, 0, -10}, {0, 0, -5}, 1.0), 0.0);  // starts inside
+  EXPECT_LT(segment_sphere({0, 0, 0}, {0, 0, -3}, {0, 0, -5}, 1.0), 0.0);         // stops short
+  EXPECT_LT(segment_sphere({0, 0, 0}, {0, 0, 0}, {0, 0, -5}, 1.0), 0.0);          // zero length
+  EXPECT_LT(segment_sphere({0, 0, -10}, {0, 0, -20}, {0, 0, -5}, 1.0), 0.0);      // moving away
+}
+
+TEST(Beam, FiringAtATargetDrainsShieldThenHullAndCostsEnergy) {
+  Game g = facing_pair("beam_damage.json", -150);
+  const World& w = g.world();
+  const double shield0 = w.ships[1].shield, hull0 = w.ships[1].hull;
+  for (int i = 0; i < 30; ++i) g.step(fire());
+  EXPECT_TRUE(w.ships[0].beam_firing);
+  EXPECT_EQ(w.ships[0].beam_target, 1);
+  EXPECT_LT(w.ships[1].shield, shield0);
+  EXPECT_DOUBLE_EQ(w.ships[1].hull, hull0);
+  EXPECT_LT(w.ships[0].energy, w.ships[0].cls->energy);
+  for (ClusterHandle ch : w.ships[0].beam_channels) EXPECT_TRUE(w.particles->alive(ch));
+  g.step(InputFrame{});
+  EXPECT_FALSE(w.ships[0].beam_firing);
+  EXPECT_TRUE(w.ships[0].beam_channels.empty());
+}
+
+TEST(Damage, FlowsShieldThenHullThenExplosion) {
+  Game g = facing_pair("damage_flow.json", -400);
+  World& w = g.world_mut();
+  Ship& t = w.ships[1];
+  const double shield = t.shield, hull = t.hull;
+  apply_damage(w, t, shield * 0.5, t.position, 0);
+  EXPECT_DOUBLE_EQ(t.shield, shield * 0.5);
+  EXPECT_DOUBLE_EQ(t.hull, hull);
+  apply_damage(w, t, shield * 0.5 + 10.0, t.position, 0);
+  EXPECT_DOUBLE_EQ(t.shield, 0.0);
+  EXPECT_DOUBLE_EQ(t.hull, hull - 10.0);
+  apply_damage(w, t, hull, t.position, 0);
+  EXPECT_LE(t.hull, 0.0);
+  EXPECT_TRUE(t.alive);  // deaths resolve inside the tick
+  g.step(InputFrame{});
+  EXPECT_FALSE(w.ships[1].alive);
+  EXPECT_EQ(w.ships[0].kills, 1);
+  EXPECT_EQ(w.explosions.size(), 1u);
+  EXPECT_GT(w.particles->stats().live_clusters, 0u);
+}
+
+TEST(Damage, AttachedClustersGoWithTheirShipInTheSameTick) {
+  Game g = facing_pair("attached.json", -400);
+  World& w = g.world_mut();
+  g.step(fire());
+  std::vector<ClusterHandle> attached = w.ships[1].shield_fx.clusters;
+  for (const EffectHandle& e : w.ships[1].exhaust_fx)
+    attached.insert(attached.end(), e.clusters.begin(), e.clusters.end());
+  ASSERT_FALSE(attached.empty());
+  for (ClusterHandle c : attached) ASSERT_TRUE(w.particles->alive(c));
+  apply_damage(w, w.ships[1], 1e6, w.ships[1].position, 0);
+  g.step(InputFrame{});
+  ASSERT_FALSE(w.ships[1].alive);
+  for (ClusterHandle c : attached) EXPECT_FALSE(w.particles->alive(c));
+}
+
+TEST(Damage, SplashDamageReachesNeighboursOnlyWhenTheLevelEnablesIt) {
+  for (bool splash : {false, true}) {
+    std::string ships = R"({ "name": "A", "class": "viper", "team": "blue", "ai": "none" },
+      { "name": "B", "class": "viper", "team": "red", "ai": "none", "position": [0, 0, -400] },
+      { "name": "C", "class": "viper", "team": "red", "ai": "none", "position": [30, 0, -400] })";
+    std::string extra = splash ? R"( "splash": { "radius": 60, "damage": 50 },)" : "";
+    Game g = Game::load_level(write_level("splash.json", test::level_text(ships, extra)), options());
+    World& w = g.world_mut();
+    apply_damage(w, w.ships[1], 1e6, w.ships[1].position, 0);
+    g.step(InputFrame{});
+    const Ship& c = w.ships[2];
+    if (splash) EXPECT_LT(c.shield, c.cls->shield);
+    else EXPECT_DOUBLE_EQ(c.shield, c.cls->shield);
+  }
+}
+
+TEST(Shield, RegeneratesOnlyAfterTheDelay) {
+  Game g = facing_pair("regen.json", -400);
+  World& w = g.world_mut();
+  apply_damage(w, w.ships[1], 50, w.ships[1].position, 0);
+  const double after_hit = w.ships[1].shield;
+  const int delay_ticks = int(std::llround(w.ships[1].cls->shield_regen_delay / w.dt));
+  for (int i = 0; i < delay_ticks - 2; ++i) g.step(InputFrame{});
+  EXPECT_DOUBLE_EQ(w.ships[1].shield, after_hit);
+  for (int i = 0; i < 60; ++i) g.step(InputFrame{});
+  EXPECT_GT(w.ships[1].shield, after_hit);
+}
+
+TEST(Missiles, HomeOnTheTargetAndHit) {
+  Game g = facing_pair("missile.json", -300, "none", "", 150);
+  World& w = g.world_mut();
+  g.step(InputFrame{}, {Command::TargetNextHostile});
+  ASSERT_EQ(w.ships[0].target, 1);
+  InputFrame f;
+  f.buttons = kFireSecondary;
+  g.step(f);
+  ASSERT_EQ(w.projectiles.size(), 1u);
+  EXPECT_EQ(w.projectiles[0].target, 1);
+  const double shield0 = w.ships[1].shield;
+  for (int i = 0; i < 600 && w.ships[1].shield == shield0; ++i) g.step(InputFrame{});
+  EXPECT_LT(w.ships[1].shield, shield0);
+  EXPECT_TRUE(w.projectiles.empty());
+}
+
+TEST(Plasma, SwitchWeaponFiresBoltsThatFlyStraight) {
+  Game g = facing_pair("plasma.json", -300);
+  World& w = g.world_mut();
+  g.step(InputFrame{}, {Command::SwitchWeapon});
+  EXPECT_EQ(w.ships[0].secondary, SecondaryWeapon::Plasma);
+  InputFrame f;
+  f.buttons = kFireSecondary;
+  g.step(f);
+  ASSERT_EQ(w.projectiles.size(), 1u);
+  EXPECT_EQ(w.projectiles[0].kind, SecondaryWeapon::Plasma);
+  const double shield0 = w.ships[1].shield;
+  for (int i = 0; i < 120; ++i) g.step(InputFrame{});
+  EXPECT_LT(w.ships[1].shield, shield0);
+}
+
+class AiVersusStationary : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(AiVersusStationary, DestroysItWithinSixtySeconds) {
+  std::string ships = R"({ "name": "Hunter", "class": "viper", "team": "red", "position": [300, 120, 500], "orientation": [70, 0, 0] },
+    { "name": "Sitting duck", "class": "warden", "team": "blue", "ai": "none", "position": [0, 0, -300] })";
+  std::string extra = std::string(R"( "difficulty": ")") + GetParam() + "\",";
+  Game g = Game::load_level(write_level(std::string("ai_") + GetParam() + ".json", level_text(ships, extra)), options());
+  const World& w = g.world();
+  int64_t limit = 60 * 60;
+  while (w.ships[1].alive && int64_t(g.tick()) < limit) g.step(InputFrame{});
+  EXPECT_FALSE(w.ships[1].alive) << "hull " << w.ships[1].hull << " shield " << w.ships[1].shield;
+  EXPECT_EQ(w.ships[0].kills, 1);
+  RecordProperty("ticks", std::to_string(g.tick()));
+}
+
+INSTANTIATE_TEST_SUITE_P(Difficulties, AiVersusStationary, ::testing::Values("easy", "normal", "hard"));
+
+TEST(Ai, HarderDifficultyAimsTighterAndReactsFaster) {
+  EXPECT_GT(ai_tuning(0).aim_error, ai_tuning(1).aim_error);
+  EXPECT_GT(ai_tuning(1).aim_error, ai_tuning(2).aim_error);
+  EXPECT_GT(ai_tuning(0).reaction_s, ai_tuning(2).reaction_s);
+  EXPECT_LT(ai_tuning(0).aggression, ai_tuning(2).aggression);
+}
+
+}  // namespace
+}  // namespace arc

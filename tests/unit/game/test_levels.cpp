@@ -1,0 +1,192 @@
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <gtest/gtest.h>
+
+#include "core/error.h"
+#include "game/sim/defs.h"
+#include "test_helpers.h"
+
+namespace arc {
+namespace {
+
+const std::string kRoot = ARCFIRE_SOURCE_DIR;
+
+// Parses level text and returns the error message ("" when it loads).
+std::string error_of(const std::string& text) {
+  try {
+    parse_level_def(text, "bad.json", kRoot);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+const char* kGood = R"({
+  "name": "ok",
+  "objective": "x",
+  "win": { "type": "destroy_all_hostiles" },
+  "lose": { "type": "player_destroyed" },
+  "ships": [
+    { "name": "P", "class": "viper", "team": "blue", "player": true }
+  ]
+})";
+
+TEST(LevelFiles, EveryShippedLevelValidatesAndLoads) {
+  int count = 0;
+  for (const auto& e : std::filesystem::directory_iterator(kRoot + "/levels")) {
+    if (e.path().extension() != ".json") continue;
+    SCOPED_TRACE(e.path().string());
+    LevelDef def = load_level_def(e.path().string(), kRoot);
+    EXPECT_FALSE(def.ships.empty());
+    EXPECT_FALSE(def.objective.empty());
+    Game g = Game::load_level(e.path().string(), test::options());
+    for (int i = 0; i < 3; ++i) g.step(InputFrame{});
+    EXPECT_EQ(g.tick(), 3u);
+    ++count;
+  }
+  EXPECT_GE(count, 5);  // duel, skirmish, arena, attract, gallery
+}
+
+TEST(LevelFiles, RequiredLevelsHaveTheirShapes) {
+  LevelDef duel = load_level_def(kRoot + "/levels/duel.json", kRoot);
+  EXPECT_EQ(duel.ships.size(), 2u);
+  LevelDef sk = load_level_def(kRoot + "/levels/skirmish.json", kRoot);
+  EXPECT_EQ(sk.ships.size(), 6u);
+  LevelDef arena = load_level_def(kRoot + "/levels/arena.json", kRoot);
+  EXPECT_GE(arena.ships.size(), 16u);
+  LevelDef attract = load_level_def(kRoot + "/levels/attract.json", kRoot);
+  for (const ShipSpawnDef& s : attract.ships) EXPECT_EQ(s.ai, AiKind::Fighter) << s.name;
+  LevelDef gallery = load_level_def(kRoot + "/levels/gallery.json", kRoot);
+  std::set<std::string> effects;
+  for (const EffectSpawnDef& e : gallery.effects) {
+    effects.insert(e.effect);
+    EXPECT_FALSE(e.label.empty());
+  }
+  for (const auto& e : std::filesystem::directory_iterator(kRoot + "/assets/effects"))
+    if (e.path().extension() == ".json") EXPECT_TRUE(effects.count(e.path().stem().string())) << e.path();
+  bool wall = false;
+  for (const PropDef& p : gallery.props) wall = wall || p.model == "assets/models/wall.glb";
+  EXPECT_TRUE(wall);
+}
+
+TEST(LevelFiles, ShipClassesValidate) {
+  for (const char* name : {"viper", "warden", "dart"}) {
+    ShipClassDef c = load_ship_class(kRoot + "/assets/ships/" + name + ".json", name);
+    EXPECT_GE(c.shield_radius, c.collision_radius);
+    EXPECT_FALSE(c.beam.mounts.empty());
+    EXPECT_TRUE(c.missile.present || c.plasma.present) << name;
+  }
+}
+
+TEST(LevelErrors, GoodTextLoads) { EXPECT_EQ(error_of(kGood), ""); }
+
+TEST(LevelErrors, SyntaxErrorHasPosition) {
+  std::string e = error_of("{\n  \"name\": \"x\",\n  \"seed\": ,\n}");
+  EXPECT_EQ(e.rfind("bad.json:3:", 0), 0u) << e;
+}
+
+TEST(LevelErrors, UnknownKeyPointsAtTheKey) {
+  std::string t = kGood;
+  t.replace(t.find("\"objective\""), 0, "\"objectve\": \"typo\",\n  ");
+  std::string e = error_of(t);
+  EXPECT_EQ(e.rfind("bad.json:3:3: unknown key 'objectve'", 0), 0u) << e;
+}
+
+TEST(LevelErrors, UnknownKeyInsideAShip) {
+  std::string t = kGood;
+  t.replace(t.find("\"player\": true"), 0, "\"hul\": 5, ");
+  std::string e = error_of(t);
+  EXPECT_EQ(e.rfind("bad.json:7:54: unknown key 'hul'", 0), 0u) << e;
+}
+
+TEST(LevelErrors, WrongTypePointsAtTheValue) {
+  std::string t = kGood;
+  t.replace(t.find("\"objective\": \"x\""), 16, "\"objective\": 5");
+  std::string e = error_of(t);
+  EXPECT_EQ(e.rfind("bad.json:3:16: 'objective' must be a string", 0), 0u) << e;
+}
+
+TEST(LevelErrors, OutOfRangeValue) {
+  std::string t = kGood;
+  t.replace(t.find("\"objective\""), 0, "\"tick_rate\": 5000,\n  ");
+  std::string e = error_of(t);
+  EXPECT_EQ(e.rfind("bad.json:3:16: 'tick_rate'", 0), 0u) << e;
+  EXPECT_NE(e.find("480"), std::string::npos) << e;
+}
+
+TEST(LevelErrors, HugeNumberIsRejected) {
+  std::string t = kGood;
+  t.replace(t.find("\"player\": true"), 0, "\"position\": [0, 1e300, 0], ");
+  std::string e = error_of(t);
+  EXPECT_EQ(e.rfind("bad.json:7:", 0), 0u) << e;
+  EXPECT_NE(e.find("position"), std::string::npos) << e;
+}
+
+TEST(LevelErrors, MissingShipClassNamesTheClassAtItsPosition) {
+  std::string t = kGood;
+  t.replace(t.find("\"viper\""), 7, "\"frigate\"");
+  std::string e = error_of(t);
+  EXPECT_EQ(e.rfind("bad.json:7:29: ship class 'frigate' not found", 0), 0u) << e;
+}
+
+TEST(LevelErrors, ClassNameMustNotBeAPath) {
+  std::string t = kGood;
+  t.replace(t.find("\"viper\""), 7, "\"../x\"");
+  EXPECT_EQ(error_of(t).rfind("bad.json:7:29:", 0), 0u) << error_of(t);
+}
+
+TEST(LevelErrors, MissingRequiredKeyAndBadChoices) {
+  std::string t = kGood;
+  t.replace(t.find("\"objective\": \"x\","), 17, "");
+  EXPECT_NE(error_of(t).find("missing required key 'objective'"), std::string::npos) << error_of(t);
+  std::string d = kGood;
+  d.replace(d.find("\"objective\""), 0, "\"difficulty\": \"insane\",\n  ");
+  std::string e = error_of(d);
+  EXPECT_EQ(e.rfind("bad.json:3:17: 'difficulty' must be one of", 0), 0u) << e;
+}
+
+TEST(LevelErrors, TwoPlayersAndDuplicateNamesAreRejected) {
+  std::string t = kGood;
+  t.replace(t.find("]\n}"), 0, ",{ \"name\": \"P\", \"class\": \"dart\", \"team\": \"red\" }");
+  EXPECT_NE(error_of(t).find("used twice"), std::string::npos) << error_of(t);
+  std::string u = kGood;
+  u.replace(u.find("]\n}"), 0, ",{ \"name\": \"Q\", \"class\": \"dart\", \"team\": \"red\", \"player\": true }");
+  EXPECT_NE(error_of(u).find("only one ship may be the player"), std::string::npos) << error_of(u);
+}
+
+TEST(LevelErrors, BadShipClassFileIsReportedInThatFile) {
+  auto dir = std::filesystem::temp_directory_path() / "arcfire_bad_root";
+  std::filesystem::create_directories(dir / "assets/ships");
+  std::filesystem::copy_file(kRoot + "/assets/ships/viper.json", dir / "assets/ships/viper.json",
+                             std::filesystem::copy_options::overwrite_existing);
+  {
+    std::ofstream f(dir / "assets/ships/broken.json");
+    f << "{\n  \"model\": \"m.glb\",\n  \"mass\": -3\n}\n";
+  }
+  std::string t = kGood;
+  t.replace(t.find("\"viper\""), 7, "\"broken\"");
+  try {
+    parse_level_def(t, "bad.json", dir.string());
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    std::string m = e.what();
+    EXPECT_NE(m.find("broken.json:3:11: 'mass'"), std::string::npos) << m;
+  }
+}
+
+TEST(LevelErrors, UnknownEffectInALevelIsAnInputErrorNamingTheLevel) {
+  std::string t = kGood;
+  t.replace(t.find("\"ships\""), 0, "\"effects\": [{ \"effect\": \"no_such_effect\" }],\n  ");
+  std::string path = test::write_level("bad_effect.json", t);
+  try {
+    Game g = Game::load_level(path, test::options());
+    g.step(InputFrame{});
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(path + ": ", 0), 0u) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace arc

@@ -1,0 +1,97 @@
+#include <gtest/gtest.h>
+
+#include "game/render/render_view_builder.h"
+#include "game/sim/world.h"
+#include "test_helpers.h"
+
+namespace arc {
+namespace {
+
+bool has_text(const RenderView& v, const std::string& s) {
+  for (const HudText& t : v.hud.texts)
+    if (t.text.find(s) != std::string::npos) return true;
+  return false;
+}
+
+TEST(RenderView, MeshesForLiveShipsAndPropsWithLevelModelTable) {
+  Game g = Game::load_level(test::repo("levels/duel.json"), test::options());
+  const World& w = g.world();
+  const auto& models = required_models(w);
+  ASSERT_EQ(models.size(), 2u);  // viper and the asteroid
+  EXPECT_EQ(models[0], "assets/models/viper.glb");
+  RenderView v;
+  build_render_view(w, 1.0, CameraSettings{}, 1280, 720, v);
+  ASSERT_EQ(v.meshes.size(), 3u);
+  for (const MeshInstance& m : v.meshes) EXPECT_TRUE(m.model >= 0 && m.model < int(models.size()));
+  EXPECT_TRUE(has_text(v, w.level.objective));
+  EXPECT_FALSE(v.hud.lines.empty());  // crosshair
+}
+
+TEST(RenderView, InterpolatesBetweenPreviousAndCurrentTick) {
+  Game g = Game::load_level(test::repo("levels/duel.json"), test::options());
+  InputFrame f;
+  f.throttle = 127;
+  for (int i = 0; i < 30; ++i) g.step(f);
+  const Ship& s = g.world().ships[0];
+  RenderView a, b, c;
+  build_render_view(g.world(), 0.0, CameraSettings{}, 640, 360, a);
+  build_render_view(g.world(), 0.5, CameraSettings{}, 640, 360, b);
+  build_render_view(g.world(), 1.0, CameraSettings{}, 640, 360, c);
+  EXPECT_DOUBLE_EQ(a.meshes[0].position.z, s.prev_position.z);
+  EXPECT_DOUBLE_EQ(c.meshes[0].position.z, s.position.z);
+  EXPECT_NEAR(b.meshes[0].position.z, 0.5 * (s.prev_position.z + s.position.z), 1e-9);
+  EXPECT_NE(a.camera.position.z, c.camera.position.z);
+}
+
+TEST(RenderView, TargetGetsBracketsOrAnArrowAndBars) {
+  Game g = Game::load_level(test::repo("levels/duel.json"), test::options());
+  g.step(InputFrame{}, {Command::TargetNextHostile});
+  RenderView v;
+  build_render_view(g.world(), 1.0, CameraSettings{}, 1280, 720, v);
+  EXPECT_TRUE(has_text(v, "Red Leader"));
+  const size_t lines_with_target = v.hud.lines.size();
+  g.step(InputFrame{}, {Command::TargetNext});  // only one other ship: stays targeted
+  RenderView none;
+  World& w = g.world_mut();
+  w.ships[0].target = -1;
+  build_render_view(w, 1.0, CameraSettings{}, 1280, 720, none);
+  EXPECT_GT(lines_with_target, none.hud.lines.size());
+}
+
+TEST(RenderView, PauseMenuFpsAndOutcomeMessages) {
+  Game g = Game::load_level(test::repo("levels/duel.json"), test::options());
+  g.step(InputFrame{}, {Command::Pause});
+  CameraSettings cs;
+  cs.show_fps = true;
+  cs.fps = 59.7;
+  cs.pause_selection = 1;
+  RenderView v;
+  build_render_view(g.world(), 1.0, cs, 1280, 720, v);
+  EXPECT_TRUE(has_text(v, "PAUSED"));
+  EXPECT_TRUE(has_text(v, "Restart"));
+  EXPECT_TRUE(has_text(v, "60 fps"));
+  g.step(InputFrame{}, {Command::Resume});
+  g.world_mut().ships[1].hull = -1;
+  g.step(InputFrame{});
+  build_render_view(g.world(), 1.0, CameraSettings{}, 1280, 720, v);
+  EXPECT_TRUE(has_text(v, "VICTORY"));
+  EXPECT_FALSE(has_text(v, "PAUSED"));
+}
+
+TEST(RenderView, CockpitHidesOwnShipAndGalleryLabelsEverything) {
+  Game g = Game::load_level(test::repo("levels/duel.json"), test::options());
+  g.step(InputFrame{}, {Command::CameraToggle});
+  RenderView v;
+  build_render_view(g.world(), 1.0, CameraSettings{}, 1280, 720, v);
+  EXPECT_EQ(v.meshes.size(), 2u);
+  Game gal = Game::load_level(test::repo("levels/gallery.json"), test::options());
+  for (int i = 0; i < 10; ++i) gal.step(InputFrame{});
+  build_render_view(gal.world(), 1.0, CameraSettings{}, 1280, 720, v);
+  EXPECT_TRUE(has_text(v, "wall.glb"));
+  EXPECT_TRUE(has_text(v, "lightning_beam"));
+  EXPECT_TRUE(has_text(v, "Hull target"));
+  EXPECT_FALSE(v.particles.empty());
+}
+
+}  // namespace
+}  // namespace arc
