@@ -228,13 +228,26 @@ void update_beam_trigger(World& w, Ship& s) {
   s.beam_hit_distance.assign(s.beam_channels.size(), -1.0);
 }
 
-// The beam's path: the lightning channel's polyline, or a straight seed line while the channel
-// has no points yet (the tick it was spawned).
+// The beam's path: the lightning channel's polyline clipped to the class's range, or a straight
+// seed line while the channel has no points yet (the tick it was spawned).
 std::vector<glm::dvec3> beam_path(const World& w, const Ship& s, size_t mount) {
+  const double range = s.cls->beam.range;
   std::vector<glm::dvec3> pts = w.particles->lightning_points(s.beam_channels[mount]);
-  if (pts.size() >= 2) return pts;
-  glm::dvec3 origin = s.position + s.orientation * s.cls->beam.mounts[mount];
-  return {origin, origin + forward_of(s.orientation) * s.cls->beam.range};
+  if (pts.size() < 2) {
+    glm::dvec3 origin = s.position + s.orientation * s.cls->beam.mounts[mount];
+    return {origin, origin + forward_of(s.orientation) * range};
+  }
+  double along = 0;
+  for (size_t i = 0; i + 1 < pts.size(); ++i) {
+    const double seg = safe_len(pts[i + 1] - pts[i]);
+    if (along + seg > range) {
+      pts[i + 1] = pts[i] + (pts[i + 1] - pts[i]) * ((range - along) / seg);
+      pts.resize(i + 2);
+      break;
+    }
+    along += seg;
+  }
+  return pts;
 }
 
 void resolve_beams(World& w) {
@@ -246,7 +259,7 @@ void resolve_beams(World& w) {
       ClusterHandle ch = s.beam_channels[m];
       BeamHit hit = trace_beam(w, s.id, beam_path(w, s, m));
       s.beam_hit_distance[m] = hit.distance;
-      w.particles->cut_lightning(ch, hit.ship >= 0 ? hit.distance : 1.0e30);
+      w.particles->cut_lightning(ch, hit.ship >= 0 ? hit.distance : s.cls->beam.range);
       if (hit.ship < 0) continue;
       Ship& t = w.ships[hit.ship];
       s.beam_target = hit.ship;

@@ -165,3 +165,33 @@ TEST(Outcome, AttractLevelIsDecidedWithinFiveMinutesOfGameTime) {
 
 }  // namespace
 }  // namespace arc
+
+namespace arc {
+namespace {
+
+TEST(Ai, FightersUseBothWeaponsEvadeAndBreakOff) {
+  Game g = Game::load_level(test::repo("levels/arena.json"), test::options());
+  const World& w = g.world();
+  bool beam = false, missile = false, plasma = false, evade = false, break_off = false;
+  for (int t = 0; t < 60 * 60 && w.outcome == Outcome::Undecided; ++t) {
+    g.step(InputFrame{});
+    for (const Ship& s : w.ships) {
+      beam = beam || (s.ai == AiKind::Fighter && s.beam_firing);
+      evade = evade || s.ai_state.mode == AiMode::Evade;
+      break_off = break_off || s.ai_state.mode == AiMode::BreakOff;
+    }
+    for (const Projectile& p : w.projectiles) {
+      if (w.ships[p.owner].ai != AiKind::Fighter) continue;
+      missile = missile || p.kind == SecondaryWeapon::Missile;
+      plasma = plasma || p.kind == SecondaryWeapon::Plasma;
+    }
+  }
+  EXPECT_TRUE(beam);
+  EXPECT_TRUE(missile);
+  EXPECT_TRUE(plasma);
+  EXPECT_TRUE(evade);
+  EXPECT_TRUE(break_off);
+}
+
+}  // namespace
+}  // namespace arc

@@ -123,6 +123,13 @@ TEST(LevelErrors, HugeNumberIsRejected) {
   EXPECT_NE(e.find("position"), std::string::npos) << e;
 }
 
+TEST(LevelErrors, OverflowingNumberIsRejectedWithPosition) {
+  std::string t = kGood;
+  t.replace(t.find("\"objective\""), 0, "\"seed\": 1e999,\n  ");
+  std::string e = error_of(t);
+  EXPECT_EQ(e.rfind("bad.json:3:", 0), 0u) << e;
+}
+
 TEST(LevelErrors, MissingShipClassNamesTheClassAtItsPosition) {
   std::string t = kGood;
   t.replace(t.find("\"viper\""), 7, "\"frigate\"");
