@@ -1,0 +1,106 @@
+// gfx/renderer.h — the OpenGL 3.3 renderer: starfield, lit glTF meshes, particles, HUD.
+//
+// Needs a current GL context (platform/ makes one: a GLFW window or EGL headless). Each frame
+// draws into an internal scene framebuffer at the window size × render.scale, then resolves it
+// to the window (default framebuffer) or, with RendererDesc::offscreen, to an RGBA8 target that
+// read_pixels() returns.
+//
+// Passes per frame (see DESIGN.md "Rendering"):
+//   1. starfield at infinity (procedural, keyed by RenderView::starfield_seed)
+//   2. opaque meshes (directional light + ambient + emissive, tint, flash)
+//   3. depth copy: glBlitFramebuffer of THIS frame's depth into a depth texture, only when a
+//      visible particle uses soft edges
+//   4. particles: one instanced draw, quads built in the vertex shader, controlled-additive
+//      blending (Ilmonen 2006 §4), soft edges (§3, Lorach, Krazanowski), back-to-front radix sort
+//   5. HUD quads, lines and text in pixels
+// Depth is reversed-Z with a float buffer when clip control exists, standard otherwise. All
+// positions reach the GPU relative to the camera (double subtraction, then float).
+//
+//   Renderer r({.offscreen = true});
+//   int ship = r.add_model(load_model("assets/models/ship.glb"));
+//   r.set_sprites({load_sprite("assets/sprites/smoke.png")});
+//   r.apply_settings(settings);
+//   r.render(view, 1280, 720);
+//   Image frame = r.read_pixels();
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "assets/model.h"
+#include "core/settings.h"
+#include "gfx/render_view.h"
+
+namespace arc {
+
+struct RendererDesc {
+  std::string shader_dir = ARCFIRE_SOURCE_DIR "/shaders";
+  bool offscreen = false;  // resolve into an RGBA8 target for read_pixels() instead of the window
+  bool float_scene = false;  // RGBA16F scene buffer: NaN/Inf survive to read_pixels_float()
+};
+
+struct FrameStats {
+  int particles_in = 0;      // instances handed in by the view
+  int particles_drawn = 0;   // after dropping invisible ones (zero alpha and zero colour)
+  int sorted = 0;            // particles put in back-to-front order
+  bool depth_copied = false; // the soft-edge depth copy ran this frame
+  int draw_calls = 0;
+  int particle_draw_calls = 0;
+  double particle_cpu_ms = 0;  // sorting + upload + draw submission
+  double particle_gpu_ms = -1; // GL_TIME_ELAPSED of the particle pass of an earlier frame; −1 if unknown
+};
+
+// Depth mode and settings as the renderer applies them (after falling back where unsupported).
+struct RenderSettings {
+  int soft_override = -1;  // −1: each particle's own SoftEdge; otherwise a SoftEdge value for all
+  enum class Sorting { Off, Cluster, Full } sorting = Sorting::Full;
+  bool reversed_z = true;
+  bool infinite_far = true;
+  enum class Filter { Nearest, Linear, Mipmap } filter = Filter::Mipmap;
+  double scale = 1.0;
+  float size_clamp = 0.5f;
+  float near_fade = 2.0f;
+  float contrast_power = 2.0f;
+};
+
+class Renderer {
+ public:
+  // Throws PlatformError-like std::runtime_error when GL is older than 3.3 or shaders fail.
+  explicit Renderer(const RendererDesc& desc);
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  std::string gl_version() const;
+  bool has_clip_control() const;
+
+  int add_model(const ModelData& model);  // returns the index MeshInstance::model refers to
+  void set_sprites(const std::vector<Image>& premultiplied_sprites);  // layers of one array texture
+  void apply_settings(const Settings& settings);  // render.* keys
+  void set_render_settings(const RenderSettings& s);
+  const RenderSettings& render_settings() const;
+
+  void render(const RenderView& view, int width, int height);
+  Image read_pixels();                      // offscreen only; RGBA8, rows top to bottom
+  std::vector<float> read_pixels_float();   // offscreen only; the scene buffer as RGBA floats, rows top to bottom
+  FrameStats last_stats() const;
+
+  // Recompiles all shaders from the shader folder. On error the old programs stay and the
+  // error text is returned; an empty string means success.
+  std::string reload();
+
+  // For the benchmark's raw fill-rate reference: draws `count` full-screen quads with the
+  // particle blend state into the scene buffer of the last frame's size.
+  void draw_fill_reference(int count);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// Back-to-front order by 32-bit depth keys (larger distance first), an LSD radix sort in
+// four 8-bit passes; stable, so equal keys keep their input order. Exposed for tests.
+void radix_sort_back_to_front(const std::vector<uint32_t>& keys, std::vector<uint32_t>& order);
+
+}  // namespace arc
