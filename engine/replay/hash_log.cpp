@@ -1,0 +1,51 @@
+#include "replay/hash_log.h"
+
+#include <charconv>
+#include <sstream>
+
+#include "core/error.h"
+#include "replay/script.h"
+
+namespace arc::replay {
+
+HashLog parse_hash_log(const std::string& text, const std::string& path) {
+  HashLog log;
+  std::istringstream in(text);
+  std::string l;
+  int line = 0;
+  auto fail = [&](int col, const std::string& m) {
+    throw InputError(path + ":" + std::to_string(line) + ":" + std::to_string(col) + ": " + m);
+  };
+  while (std::getline(in, l)) {
+    ++line;
+    if (!l.empty() && l.back() == '\r') l.pop_back();
+    if (line == 1) {
+      if (l != "arcfire-hashlog 1") fail(1, "a hash log starts with 'arcfire-hashlog 1'");
+      continue;
+    }
+    if (l.empty()) continue;
+    size_t sp = l.find(' ');
+    uint64_t tick = 0, value = 0;
+    auto [p, ec] = std::from_chars(l.data(), l.data() + (sp == std::string::npos ? l.size() : sp), tick);
+    if (sp == std::string::npos || ec != std::errc() || p != l.data() + sp)
+      fail(1, "expected 'TICK HEX', got '" + l + "'");
+    if (tick != log.hashes.size())
+      fail(1, "expected tick " + std::to_string(log.hashes.size()) + ", got " + std::to_string(tick) +
+                  " (ticks are consecutive from 0)");
+    auto [q, ec2] = std::from_chars(l.data() + sp + 1, l.data() + l.size(), value, 16);
+    if (ec2 != std::errc() || q != l.data() + l.size() || l.size() - sp - 1 > 16)
+      fail(static_cast<int>(sp) + 2, "hash must be up to 16 hex digits, got '" + l.substr(sp + 1) + "'");
+    log.hashes.push_back(value);
+  }
+  if (line == 0) throw InputError(path + ":1:1: empty hash log; it starts with 'arcfire-hashlog 1'");
+  return log;
+}
+
+std::string write_hash_log(const HashLog& log) {
+  std::string out = "arcfire-hashlog 1\n";
+  out.reserve(out.size() + log.hashes.size() * 24);
+  for (size_t t = 0; t < log.hashes.size(); ++t) out += std::to_string(t) + " " + hex64(log.hashes[t]) + "\n";
+  return out;
+}
+
+}  // namespace arc::replay

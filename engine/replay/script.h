@@ -1,0 +1,167 @@
+// replay/script.h — replay scripts: a line-based text format people write by hand and the
+// game records, parsed into plain structs (no game types, no GL).
+//
+// A script is a header (format version, level, seed, tick rate, difficulty, build id) and then
+// tick-stamped lines: input (press, release, axis), commands, checks (expect, hash, full_hash,
+// snapshot) and `end`. The full format, with an example of every line, is in
+// tests/replays/README.md. Every malformed line throws InputError "path:line:col: message".
+//
+//   Script s = load_script("tests/replays/duel_course.replay");   // or parse_script(text, path)
+//   for (const InputEvent& e : s.inputs) ...                      // in tick order
+//   std::string text = write_script(s);                            // parse(write(s)) == s
+//
+// Tick semantics: lines stamped T apply to the state after T simulation steps. Checks at T
+// look at that state; inputs and commands at T feed the step from T to T + 1. The run stops
+// after the checks of the `end` tick.
+//
+// Axes are quantised to signed bytes exactly like live input (game/sim/input.h), so a file
+// written from recorded bytes parses back to the very same bytes.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace arc::replay {
+
+constexpr int kFormatVersion = 1;
+
+// Same order, bits and values as the game's InputFrame / InputButton / Command; game/app
+// static_asserts the correspondence where it converts.
+enum class Axis : uint8_t { Pitch = 0, Yaw, Roll, Throttle, StrafeX, StrafeY };
+constexpr int kAxisCount = 6;
+enum Button : uint16_t { kFirePrimary = 1 << 0, kFireSecondary = 1 << 1, kAfterburner = 1 << 2, kFlightAssist = 1 << 3 };
+enum class ScriptCommand : uint8_t {
+  TargetNext = 1, TargetNearest, TargetNextHostile, SwitchWeapon, CameraToggle, Pause, Resume
+};
+
+const char* axis_name(Axis a);
+const char* button_name(Button b);  // "fire_primary", ...
+const char* command_name(ScriptCommand c);
+
+// −1..1 → −127..127, the live-input quantisation (non-finite → 0).
+int8_t quantise_axis(double v);
+// The shortest decimal text that quantises back to q ("0.5039" for 64).
+std::string axis_text(int8_t q);
+
+// Held input between ticks: what an InputFrame carries.
+struct InputState {
+  std::array<int8_t, kAxisCount> axes{};
+  uint16_t buttons = 0;
+  bool operator==(const InputState&) const = default;
+};
+
+struct SourceLine {
+  int line = 0;       // 1-based line in the script
+  std::string text;   // the line as written, for failure messages
+  bool operator==(const SourceLine&) const = default;
+};
+
+struct Header {
+  int version = kFormatVersion;
+  std::string level;                // required, relative to the repo root (or absolute)
+  std::optional<uint64_t> seed;     // absent: the level's own
+  std::optional<int> tick_rate;     // absent: the level's own; present: must equal it
+  std::optional<std::string> difficulty;  // "easy" | "normal" | "hard"; absent: the level's
+  std::string build;                // informational: the build that wrote the file
+  int snapshot_width = 640, snapshot_height = 360;
+  bool operator==(const Header&) const = default;
+};
+
+struct InputEvent {
+  enum class Kind : uint8_t { Press, Release, Axis };
+  uint64_t tick = 0;
+  Kind kind = Kind::Press;
+  Button button = kFirePrimary;  // Press / Release
+  Axis axis = Axis::Pitch;       // Axis
+  int8_t value = 0;              // Axis, quantised
+  SourceLine src;
+  bool operator==(const InputEvent&) const = default;
+};
+
+struct CommandEvent {
+  uint64_t tick = 0;
+  ScriptCommand command = ScriptCommand::TargetNext;
+  SourceLine src;
+  bool operator==(const CommandEvent&) const = default;
+};
+
+struct Range {
+  double min = 0, max = 0;
+  bool contains(double v) const { return v >= min && v <= max; }
+  bool operator==(const Range&) const = default;
+};
+
+struct Expectation {
+  enum class Kind : uint8_t { Alive, Destroyed, Hull, Shield, Position, Distance, Particles, Winner };
+  uint64_t tick = 0;
+  Kind kind = Kind::Alive;
+  std::string ship;   // Alive .. Distance
+  std::string other;  // Distance: the second ship
+  std::string team;   // Winner: a team name, or "none" while undecided
+  Range range;        // Hull, Shield, Distance, Particles
+  std::array<Range, 3> box{};  // Position: x, y, z
+  SourceLine src;
+  bool operator==(const Expectation&) const = default;
+};
+
+struct HashCheck {
+  uint64_t tick = 0;
+  bool full = false;              // full_hash (every particle) instead of the cheap hash
+  std::optional<uint64_t> value;  // absent ("?"): to be filled in by --update-golden
+  SourceLine src;
+  bool operator==(const HashCheck&) const = default;
+};
+
+struct SnapshotCheck {
+  uint64_t tick = 0;
+  std::string name;  // [A-Za-z0-9_-]+, the golden file is golden/<script>/<name>.png
+  SourceLine src;
+  bool operator==(const SnapshotCheck&) const = default;
+};
+
+struct Script {
+  std::string path;
+  Header header;
+  std::vector<InputEvent> inputs;        // all vectors in non-decreasing tick order
+  std::vector<CommandEvent> commands;
+  std::vector<Expectation> expectations;
+  std::vector<HashCheck> hashes;
+  std::vector<SnapshotCheck> snapshots;
+  std::optional<uint64_t> end_tick;  // absent (a recording cut short): the last stamped tick
+  SourceLine end_src;
+
+  // The tick the run stops at: `end`, else the last tick any line names.
+  uint64_t last_tick() const;
+  // Equal content, ignoring source positions and text.
+  bool same_content(const Script& other) const;
+};
+
+Script parse_script(const std::string& text, const std::string& path);
+Script load_script(const std::string& path);  // InputError "path: cannot read file" when missing
+
+// The whole script as text in the canonical form (header, then lines in tick order: inputs,
+// commands, then checks). Source positions are not used.
+std::string write_script(const Script& script);
+
+// Single lines, as the recorder appends them (each ends with '\n').
+std::string header_text(const Header& header);
+std::string input_event_line(const InputEvent& e);
+std::string command_line(const CommandEvent& c);
+std::string hash_line(const HashCheck& h);
+std::string end_line(uint64_t tick);
+// The press/release/axis lines that turn `before` into `after` at `tick` ("" when equal).
+std::string input_diff_lines(uint64_t tick, const InputState& before, const InputState& after);
+
+// Applies one input event to the held state.
+void apply_input(InputState& state, const InputEvent& e);
+
+// Replaces the value of every hash line (by its source line) with `values[i]` for
+// script.hashes[i], keeping every other byte of the original text. For --update-golden.
+std::string fill_hash_values(const std::string& original_text, const Script& script,
+                             const std::vector<uint64_t>& values);
+
+std::string hex64(uint64_t v);  // 16 lowercase hex digits
+
+}  // namespace arc::replay

@@ -1,0 +1,342 @@
+// Parsing of replay scripts: one pass over lines, each split into positioned tokens, so every
+// error names the exact line and column of the word that is wrong.
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <sstream>
+
+#include "core/error.h"
+#include "core/json.h"
+#include "replay/script.h"
+
+namespace arc::replay {
+namespace {
+
+struct Token {
+  std::string text;
+  int col = 1;
+};
+
+struct LineParser {
+  const std::string& path;
+  int line;
+  std::vector<Token> tokens;
+  size_t next = 0;
+  int end_col = 1;  // column just past the last character, for "missing ..." errors
+
+  [[noreturn]] void fail_at(int col, const std::string& message) const {
+    throw InputError(path + ":" + std::to_string(line) + ":" + std::to_string(col) + ": " + message);
+  }
+  [[noreturn]] void fail(const Token& t, const std::string& message) const { fail_at(t.col, message); }
+
+  const Token& take(const std::string& what) {
+    if (next >= tokens.size()) fail_at(end_col, "missing " + what);
+    return tokens[next++];
+  }
+  void done(const std::string& after) {
+    if (next < tokens.size())
+      fail(tokens[next], "unexpected '" + tokens[next].text + "' after " + after);
+  }
+};
+
+std::vector<Token> tokenize(const std::string& text, const std::string& path, int line, int& end_col) {
+  std::vector<Token> out;
+  size_t i = 0;
+  end_col = 1;
+  while (i < text.size()) {
+    char c = text[i];
+    if (c == ' ' || c == '\t' || c == '\r') {
+      ++i;
+      continue;
+    }
+    if (c == '#') break;
+    Token t;
+    t.col = static_cast<int>(i) + 1;
+    if (c == '"') {
+      size_t close = text.find('"', i + 1);
+      if (close == std::string::npos)
+        throw InputError(path + ":" + std::to_string(line) + ":" + std::to_string(t.col) +
+                         ": unterminated quoted name (missing closing \")");
+      t.text = text.substr(i + 1, close - i - 1);
+      if (t.text.empty())
+        throw InputError(path + ":" + std::to_string(line) + ":" + std::to_string(t.col) + ": empty quoted name");
+      i = close + 1;
+    } else {
+      size_t j = i;
+      while (j < text.size() && text[j] != ' ' && text[j] != '\t' && text[j] != '\r' && text[j] != '#') ++j;
+      t.text = text.substr(i, j - i);
+      i = j;
+    }
+    end_col = static_cast<int>(i) + 1;
+    out.push_back(std::move(t));
+  }
+  return out;
+}
+
+bool parse_u64(const std::string& s, uint64_t& v) {
+  if (s.empty() || s[0] == '+' || s[0] == '-') return false;
+  auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  return ec == std::errc() && p == s.data() + s.size();
+}
+
+bool parse_double(const std::string& s, double& v) {
+  const char* b = s.data();
+  if (!s.empty() && s[0] == '+') ++b;
+  auto [p, ec] = std::from_chars(b, s.data() + s.size(), v, std::chars_format::fixed);
+  if (ec != std::errc() || p != s.data() + s.size()) {
+    auto [p2, ec2] = std::from_chars(b, s.data() + s.size(), v, std::chars_format::general);
+    if (ec2 != std::errc() || p2 != s.data() + s.size()) return false;
+  }
+  return std::isfinite(v);
+}
+
+uint64_t integer_in(LineParser& lp, const Token& t, const std::string& what, uint64_t lo, uint64_t hi) {
+  uint64_t v = 0;
+  if (!parse_u64(t.text, v) || v < lo || v > hi)
+    lp.fail(t, what + " must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got '" +
+                   t.text + "'");
+  return v;
+}
+
+double number(LineParser& lp, const Token& t, const std::string& what) {
+  double v = 0;
+  if (!parse_double(t.text, v)) lp.fail(t, what + " must be a finite number, got '" + t.text + "'");
+  return v;
+}
+
+Range range(LineParser& lp, const std::string& what) {
+  const Token& t = lp.take(what + " range MIN..MAX");
+  size_t dots = t.text.find("..");
+  if (dots == std::string::npos || dots == 0 || dots + 2 >= t.text.size())
+    lp.fail(t, what + " must be a range MIN..MAX (e.g. 0..50), got '" + t.text + "'");
+  Range r;
+  if (!parse_double(t.text.substr(0, dots), r.min) || !parse_double(t.text.substr(dots + 2), r.max))
+    lp.fail(t, what + " range bounds must be finite numbers, got '" + t.text + "'");
+  if (r.min > r.max) lp.fail(t, what + " range is empty: " + t.text + " (MIN must be <= MAX)");
+  return r;
+}
+
+template <typename E, size_t N>
+E choose(LineParser& lp, const Token& t, const std::string& what, const std::array<E, N>& values,
+         const char* (*name)(E)) {
+  std::vector<std::string> names;
+  for (E v : values) {
+    if (t.text == name(v)) return v;
+    names.push_back(name(v));
+  }
+  lp.fail(t, "unknown " + what + " '" + t.text + "'; allowed: " + join_allowed(names));
+}
+
+constexpr std::array<Button, 4> kButtons{kFirePrimary, kFireSecondary, kAfterburner, kFlightAssist};
+constexpr std::array<Axis, kAxisCount> kAxes{Axis::Pitch, Axis::Yaw, Axis::Roll, Axis::Throttle, Axis::StrafeX, Axis::StrafeY};
+constexpr std::array<ScriptCommand, 7> kCommands{ScriptCommand::TargetNext,        ScriptCommand::TargetNearest,
+                                                 ScriptCommand::TargetNextHostile, ScriptCommand::SwitchWeapon,
+                                                 ScriptCommand::CameraToggle,      ScriptCommand::Pause,
+                                                 ScriptCommand::Resume};
+
+bool valid_snapshot_name(const std::string& s) {
+  return !s.empty() && s.size() <= 64 && std::all_of(s.begin(), s.end(), [](char c) {
+           return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-';
+         });
+}
+
+void parse_header_line(LineParser& lp, Header& h, std::vector<std::string>& seen) {
+  const Token& key = lp.tokens[lp.next++];
+  if (std::find(seen.begin(), seen.end(), key.text) != seen.end())
+    lp.fail(key, "header key '" + key.text + "' appears twice");
+  seen.push_back(key.text);
+  if (key.text == "level") {
+    h.level = lp.take("level path").text;
+  } else if (key.text == "seed") {
+    h.seed = integer_in(lp, lp.take("seed value"), "seed", 0, 4294967295ull);
+  } else if (key.text == "tick_rate") {
+    h.tick_rate = static_cast<int>(integer_in(lp, lp.take("tick rate"), "tick_rate", 10, 480));
+  } else if (key.text == "difficulty") {
+    const Token& t = lp.take("difficulty (easy, normal or hard)");
+    if (t.text != "easy" && t.text != "normal" && t.text != "hard")
+      lp.fail(t, "difficulty must be easy, normal or hard, got '" + t.text + "'");
+    h.difficulty = t.text;
+  } else if (key.text == "build") {
+    h.build = lp.take("build id").text;
+  } else if (key.text == "snapshot_size") {
+    h.snapshot_width = static_cast<int>(integer_in(lp, lp.take("snapshot width"), "snapshot width", 16, 4096));
+    h.snapshot_height = static_cast<int>(integer_in(lp, lp.take("snapshot height"), "snapshot height", 16, 4096));
+  } else {
+    lp.fail(key, "unknown header key '" + key.text +
+                     "'; allowed: level, seed, tick_rate, difficulty, build, snapshot_size, or a tick-stamped line");
+  }
+  lp.done(key.text);
+}
+
+Expectation parse_expect(LineParser& lp, uint64_t tick) {
+  Expectation e;
+  e.tick = tick;
+  const Token& what = lp.take("what to expect (alive, destroyed, hull, shield, position, distance, particles, winner)");
+  const std::string& w = what.text;
+  if (w == "alive" || w == "destroyed") {
+    e.kind = w == "alive" ? Expectation::Kind::Alive : Expectation::Kind::Destroyed;
+    e.ship = lp.take("ship name").text;
+  } else if (w == "hull" || w == "shield") {
+    e.kind = w == "hull" ? Expectation::Kind::Hull : Expectation::Kind::Shield;
+    e.ship = lp.take("ship name").text;
+    e.range = range(lp, w);
+  } else if (w == "position") {
+    e.kind = Expectation::Kind::Position;
+    e.ship = lp.take("ship name").text;
+    e.box[0] = range(lp, "x");
+    e.box[1] = range(lp, "y");
+    e.box[2] = range(lp, "z");
+  } else if (w == "distance") {
+    e.kind = Expectation::Kind::Distance;
+    e.ship = lp.take("first ship name").text;
+    e.other = lp.take("second ship name").text;
+    e.range = range(lp, "distance");
+  } else if (w == "particles") {
+    e.kind = Expectation::Kind::Particles;
+    e.range = range(lp, "particle count");
+  } else if (w == "winner") {
+    e.kind = Expectation::Kind::Winner;
+    e.team = lp.take("team name (or none)").text;
+  } else {
+    lp.fail(what, "unknown expectation '" + w +
+                      "'; allowed: alive, destroyed, hull, shield, position, distance, particles or winner");
+  }
+  lp.done("expect " + w);
+  return e;
+}
+
+HashCheck parse_hash(LineParser& lp, uint64_t tick, bool full) {
+  HashCheck h;
+  h.tick = tick;
+  h.full = full;
+  const Token& t = lp.take("hash value (16 hex digits, or ? to fill in with --update-golden)");
+  if (t.text != "?") {
+    uint64_t v = 0;
+    auto [p, ec] = std::from_chars(t.text.data(), t.text.data() + t.text.size(), v, 16);
+    if (t.text.size() > 16 || ec != std::errc() || p != t.text.data() + t.text.size())
+      lp.fail(t, "hash value must be 1 to 16 hex digits or ?, got '" + t.text + "'");
+    h.value = v;
+  }
+  lp.done(full ? "full_hash value" : "hash value");
+  return h;
+}
+
+}  // namespace
+
+Script parse_script(const std::string& text, const std::string& path) {
+  Script s;
+  s.path = path;
+  std::istringstream in(text);
+  std::string raw;
+  int line = 0;
+  bool have_version = false;
+  bool in_body = false;
+  uint64_t last_tick = 0;
+  std::vector<std::string> seen_keys;
+  while (std::getline(in, raw)) {
+    ++line;
+    LineParser lp{path, line, {}, 0, 1};
+    lp.tokens = tokenize(raw, path, line, lp.end_col);
+    if (lp.tokens.empty()) continue;
+    SourceLine src{line, raw};
+    const Token& first = lp.tokens[0];
+    if (!have_version) {
+      if (first.text != "arcfire-replay")
+        lp.fail(first, "a replay script starts with 'arcfire-replay " + std::to_string(kFormatVersion) + "', got '" +
+                           first.text + "'");
+      lp.next = 1;
+      s.header.version = static_cast<int>(
+          integer_in(lp, lp.take("format version"), "format version", kFormatVersion, kFormatVersion));
+      lp.done("the format version");
+      have_version = true;
+      continue;
+    }
+    const bool stamped = (first.text[0] >= '0' && first.text[0] <= '9') || first.text[0] == '+';
+    if (!stamped) {
+      if (in_body)
+        lp.fail(first, "expected a tick number (or +N) at the start of the line, got '" + first.text +
+                           "'; header lines come before the first tick-stamped line");
+      parse_header_line(lp, s.header, seen_keys);
+      continue;
+    }
+    if (!in_body) {
+      if (s.header.level.empty())
+        lp.fail_at(1, "the header has no 'level' line (e.g. 'level levels/duel.json') before the first tick");
+      in_body = true;
+    }
+    if (s.end_tick) lp.fail(first, "line after 'end' (line " + std::to_string(s.end_src.line) + ")");
+    lp.next = 1;
+    uint64_t tick = 0;
+    if (first.text[0] == '+') {
+      Token delta{first.text.substr(1), first.col + 1};
+      tick = last_tick + integer_in(lp, delta, "relative tick", 0, 100000000);
+    } else {
+      tick = integer_in(lp, first, "tick", 0, 1000000000);
+    }
+    if (tick < last_tick)
+      lp.fail(first, "tick " + std::to_string(tick) + " is before the previous line's tick " +
+                         std::to_string(last_tick) + "; lines must be in tick order");
+    last_tick = tick;
+    const Token& verb = lp.take("what happens at this tick (press, release, axis, command, expect, snapshot, hash, full_hash, end)");
+    const std::string& v = verb.text;
+    if (v == "press" || v == "release") {
+      InputEvent e;
+      e.tick = tick;
+      e.kind = v == "press" ? InputEvent::Kind::Press : InputEvent::Kind::Release;
+      e.button = choose(lp, lp.take("button name"), "button", kButtons, &button_name);
+      e.src = src;
+      lp.done(v + " " + button_name(e.button));
+      s.inputs.push_back(e);
+    } else if (v == "axis") {
+      InputEvent e;
+      e.tick = tick;
+      e.kind = InputEvent::Kind::Axis;
+      e.axis = choose(lp, lp.take("axis name"), "axis", kAxes, &axis_name);
+      const Token& t = lp.take("axis value in [-1, 1]");
+      double x = number(lp, t, "axis value");
+      if (x < -1.0 || x > 1.0) lp.fail(t, "axis value must be in [-1, 1], got " + t.text);
+      e.value = quantise_axis(x);
+      e.src = src;
+      lp.done("the axis value");
+      s.inputs.push_back(e);
+    } else if (v == "command") {
+      CommandEvent c;
+      c.tick = tick;
+      c.command = choose(lp, lp.take("command name"), "command", kCommands, &command_name);
+      c.src = src;
+      lp.done(std::string("command ") + command_name(c.command));
+      s.commands.push_back(c);
+    } else if (v == "expect") {
+      Expectation e = parse_expect(lp, tick);
+      e.src = src;
+      s.expectations.push_back(std::move(e));
+    } else if (v == "snapshot") {
+      const Token& t = lp.take("snapshot name");
+      if (!valid_snapshot_name(t.text))
+        lp.fail(t, "snapshot name must be 1 to 64 of A-Z a-z 0-9 _ -, got '" + t.text + "'");
+      for (const SnapshotCheck& o : s.snapshots)
+        if (o.name == t.text) lp.fail(t, "snapshot name '" + t.text + "' is used twice (also line " + std::to_string(o.src.line) + ")");
+      lp.done("the snapshot name");
+      s.snapshots.push_back(SnapshotCheck{tick, t.text, src});
+    } else if (v == "hash" || v == "full_hash") {
+      HashCheck h = parse_hash(lp, tick, v == "full_hash");
+      h.src = src;
+      s.hashes.push_back(h);
+    } else if (v == "end") {
+      lp.done("end");
+      s.end_tick = tick;
+      s.end_src = src;
+    } else {
+      lp.fail(verb, "unknown line '" + v +
+                        "'; allowed: press, release, axis, command, expect, snapshot, hash, full_hash or end");
+    }
+  }
+  if (!have_version)
+    throw InputError(path + ":1:1: empty script; it starts with 'arcfire-replay " + std::to_string(kFormatVersion) + "'");
+  if (s.header.level.empty()) throw InputError(path + ":1:1: the header has no 'level' line");
+  return s;
+}
+
+Script load_script(const std::string& path) { return parse_script(read_text_file(path), path); }
+
+}  // namespace arc::replay

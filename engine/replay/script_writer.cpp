@@ -1,0 +1,248 @@
+// Writing replay scripts (whole files and the recorder's single lines), names of inputs and
+// commands, and the axis quantisation shared with live input.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "replay/script.h"
+
+namespace arc::replay {
+
+const char* axis_name(Axis a) {
+  switch (a) {
+    case Axis::Pitch: return "pitch";
+    case Axis::Yaw: return "yaw";
+    case Axis::Roll: return "roll";
+    case Axis::Throttle: return "throttle";
+    case Axis::StrafeX: return "strafe_x";
+    case Axis::StrafeY: return "strafe_y";
+  }
+  return "?";
+}
+
+const char* button_name(Button b) {
+  switch (b) {
+    case kFirePrimary: return "fire_primary";
+    case kFireSecondary: return "fire_secondary";
+    case kAfterburner: return "afterburner";
+    case kFlightAssist: return "flight_assist_off";
+  }
+  return "?";
+}
+
+const char* command_name(ScriptCommand c) {
+  switch (c) {
+    case ScriptCommand::TargetNext: return "target_next";
+    case ScriptCommand::TargetNearest: return "target_nearest";
+    case ScriptCommand::TargetNextHostile: return "target_next_hostile";
+    case ScriptCommand::SwitchWeapon: return "switch_weapon";
+    case ScriptCommand::CameraToggle: return "camera";
+    case ScriptCommand::Pause: return "pause";
+    case ScriptCommand::Resume: return "resume";
+  }
+  return "?";
+}
+
+int8_t quantise_axis(double v) {
+  if (!std::isfinite(v)) return 0;
+  v = std::clamp(v, -1.0, 1.0);
+  return static_cast<int8_t>(std::lround(v * 127.0));
+}
+
+std::string axis_text(int8_t q) {
+  // Four decimals are always enough: the rounding error (5e-5 · 127) is far below half a step.
+  for (int digits = 0; digits <= 4; ++digits) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.*f", digits, double(q) / 127.0);
+    double back = std::strtod(buf, nullptr);
+    if (quantise_axis(back) == q) {
+      std::string s = buf;
+      if (s == "-0") s = "0";
+      return s;
+    }
+  }
+  return std::to_string(double(q) / 127.0);
+}
+
+std::string hex64(uint64_t v) {
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(v));
+  return buf;
+}
+
+namespace {
+
+std::string quoted(const std::string& name) {
+  return name.find_first_of(" \t#") == std::string::npos ? name : "\"" + name + "\"";
+}
+
+std::string number_text(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+std::string range_text(const Range& r) { return number_text(r.min) + ".." + number_text(r.max); }
+
+std::string expectation_line(const Expectation& e) {
+  std::string s = std::to_string(e.tick) + " expect ";
+  switch (e.kind) {
+    case Expectation::Kind::Alive: return s + "alive " + quoted(e.ship) + "\n";
+    case Expectation::Kind::Destroyed: return s + "destroyed " + quoted(e.ship) + "\n";
+    case Expectation::Kind::Hull: return s + "hull " + quoted(e.ship) + " " + range_text(e.range) + "\n";
+    case Expectation::Kind::Shield: return s + "shield " + quoted(e.ship) + " " + range_text(e.range) + "\n";
+    case Expectation::Kind::Position:
+      return s + "position " + quoted(e.ship) + " " + range_text(e.box[0]) + " " + range_text(e.box[1]) + " " +
+             range_text(e.box[2]) + "\n";
+    case Expectation::Kind::Distance:
+      return s + "distance " + quoted(e.ship) + " " + quoted(e.other) + " " + range_text(e.range) + "\n";
+    case Expectation::Kind::Particles: return s + "particles " + range_text(e.range) + "\n";
+    case Expectation::Kind::Winner: return s + "winner " + quoted(e.team) + "\n";
+  }
+  return s + "\n";
+}
+
+}  // namespace
+
+uint64_t Script::last_tick() const {
+  if (end_tick) return *end_tick;
+  uint64_t t = 0;
+  for (const auto& e : inputs) t = std::max(t, e.tick);
+  for (const auto& e : commands) t = std::max(t, e.tick);
+  for (const auto& e : expectations) t = std::max(t, e.tick);
+  for (const auto& e : hashes) t = std::max(t, e.tick);
+  for (const auto& e : snapshots) t = std::max(t, e.tick);
+  return t;
+}
+
+bool Script::same_content(const Script& o) const {
+  auto strip = [](Script s) {
+    s.path.clear();
+    s.end_src = {};
+    for (auto& e : s.inputs) e.src = {};
+    for (auto& e : s.commands) e.src = {};
+    for (auto& e : s.expectations) e.src = {};
+    for (auto& e : s.hashes) e.src = {};
+    for (auto& e : s.snapshots) e.src = {};
+    return s;
+  };
+  Script a = strip(*this), b = strip(o);
+  return a.header == b.header && a.inputs == b.inputs && a.commands == b.commands &&
+         a.expectations == b.expectations && a.hashes == b.hashes && a.snapshots == b.snapshots &&
+         a.end_tick == b.end_tick;
+}
+
+std::string header_text(const Header& h) {
+  std::string s = "arcfire-replay " + std::to_string(h.version) + "\n";
+  s += "level " + quoted(h.level) + "\n";
+  if (h.seed) s += "seed " + std::to_string(*h.seed) + "\n";
+  if (h.tick_rate) s += "tick_rate " + std::to_string(*h.tick_rate) + "\n";
+  if (h.difficulty) s += "difficulty " + *h.difficulty + "\n";
+  if (!h.build.empty()) s += "build " + quoted(h.build) + "\n";
+  if (h.snapshot_width != Header{}.snapshot_width || h.snapshot_height != Header{}.snapshot_height)
+    s += "snapshot_size " + std::to_string(h.snapshot_width) + " " + std::to_string(h.snapshot_height) + "\n";
+  return s;
+}
+
+std::string input_event_line(const InputEvent& e) {
+  std::string s = std::to_string(e.tick);
+  switch (e.kind) {
+    case InputEvent::Kind::Press: return s + " press " + button_name(e.button) + "\n";
+    case InputEvent::Kind::Release: return s + " release " + button_name(e.button) + "\n";
+    case InputEvent::Kind::Axis: return s + " axis " + axis_name(e.axis) + " " + axis_text(e.value) + "\n";
+  }
+  return s + "\n";
+}
+
+std::string command_line(const CommandEvent& c) {
+  return std::to_string(c.tick) + " command " + command_name(c.command) + "\n";
+}
+
+std::string hash_line(const HashCheck& h) {
+  return std::to_string(h.tick) + (h.full ? " full_hash " : " hash ") + (h.value ? hex64(*h.value) : "?") + "\n";
+}
+
+std::string end_line(uint64_t tick) { return std::to_string(tick) + " end\n"; }
+
+void apply_input(InputState& state, const InputEvent& e) {
+  switch (e.kind) {
+    case InputEvent::Kind::Press: state.buttons |= e.button; break;
+    case InputEvent::Kind::Release: state.buttons &= static_cast<uint16_t>(~e.button); break;
+    case InputEvent::Kind::Axis: state.axes[static_cast<size_t>(e.axis)] = e.value; break;
+  }
+}
+
+std::string input_diff_lines(uint64_t tick, const InputState& before, const InputState& after) {
+  std::string s;
+  for (Button b : {kFirePrimary, kFireSecondary, kAfterburner, kFlightAssist}) {
+    bool was = before.buttons & b, is = after.buttons & b;
+    if (was == is) continue;
+    InputEvent e;
+    e.tick = tick;
+    e.kind = is ? InputEvent::Kind::Press : InputEvent::Kind::Release;
+    e.button = b;
+    s += input_event_line(e);
+  }
+  for (int a = 0; a < kAxisCount; ++a)
+    if (before.axes[a] != after.axes[a]) {
+      InputEvent e;
+      e.tick = tick;
+      e.kind = InputEvent::Kind::Axis;
+      e.axis = static_cast<Axis>(a);
+      e.value = after.axes[a];
+      s += input_event_line(e);
+    }
+  return s;
+}
+
+std::string write_script(const Script& script) {
+  // Lines of one tick in a fixed order: inputs, commands, then checks, which see the state
+  // before that tick's inputs apply (the order in the file does not change meaning).
+  struct Timed {
+    uint64_t tick;
+    int group;
+    size_t index;
+    std::string text;
+  };
+  std::vector<Timed> lines;
+  for (size_t i = 0; i < script.inputs.size(); ++i) lines.push_back({script.inputs[i].tick, 0, i, input_event_line(script.inputs[i])});
+  for (size_t i = 0; i < script.commands.size(); ++i) lines.push_back({script.commands[i].tick, 1, i, command_line(script.commands[i])});
+  for (size_t i = 0; i < script.expectations.size(); ++i)
+    lines.push_back({script.expectations[i].tick, 2, i, expectation_line(script.expectations[i])});
+  for (size_t i = 0; i < script.hashes.size(); ++i) lines.push_back({script.hashes[i].tick, 3, i, hash_line(script.hashes[i])});
+  for (size_t i = 0; i < script.snapshots.size(); ++i)
+    lines.push_back({script.snapshots[i].tick, 4, i,
+                     std::to_string(script.snapshots[i].tick) + " snapshot " + script.snapshots[i].name + "\n"});
+  std::stable_sort(lines.begin(), lines.end(), [](const Timed& a, const Timed& b) {
+    if (a.tick != b.tick) return a.tick < b.tick;
+    if (a.group != b.group) return a.group < b.group;
+    return a.index < b.index;
+  });
+  std::string out = header_text(script.header);
+  for (const Timed& t : lines) out += t.text;
+  if (script.end_tick) out += end_line(*script.end_tick);
+  return out;
+}
+
+std::string fill_hash_values(const std::string& original_text, const Script& script,
+                             const std::vector<uint64_t>& values) {
+  std::vector<std::string> lines;
+  std::istringstream in(original_text);
+  for (std::string l; std::getline(in, l);) lines.push_back(l);
+  for (size_t i = 0; i < script.hashes.size() && i < values.size(); ++i) {
+    const HashCheck& h = script.hashes[i];
+    std::string& l = lines.at(static_cast<size_t>(h.src.line - 1));
+    // The value is the third word: keep the tick as written (+N or absolute) and any comment.
+    size_t verb = l.find(h.full ? "full_hash" : "hash");
+    size_t start = l.find_first_not_of(" \t", verb + (h.full ? 9 : 4));
+    size_t stop = l.find_first_of(" \t#\r", start);
+    if (stop == std::string::npos) stop = l.size();
+    l = l.substr(0, start) + hex64(values[i]) + l.substr(stop);
+  }
+  std::string out;
+  for (const std::string& l : lines) out += l + "\n";
+  return out;
+}
+
+}  // namespace arc::replay

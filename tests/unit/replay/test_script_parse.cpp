@@ -1,0 +1,165 @@
+// Parser: every line kind, and a positioned error for every kind of malformed line.
+#include <gtest/gtest.h>
+
+#include "core/error.h"
+#include "replay/script.h"
+
+using namespace arc::replay;
+
+namespace {
+
+const char* kGood = R"(# A hand-written script using every line kind.
+arcfire-replay 1
+level levels/duel.json
+seed 1101
+tick_rate 60
+difficulty hard
+build "0.1.0 release"
+snapshot_size 320 180
+
+0 axis throttle 1          # full ahead
+0 press fire_primary
++30 release fire_primary
+30 axis pitch -0.5
+45 command target_nearest
+45 command pause
+50 command resume
+60 expect alive Player
+60 expect destroyed "Red Leader"
+60 expect hull Player 50..100
+60 expect shield "Red Leader" 0..0
+60 expect position Player -10..10 -5.5..5.5 -1e3..0
+60 expect distance Player "Red Leader" 100..2000
+60 expect particles 0..100000
+60 expect winner none
+60 snapshot first-contact_1
+60 hash 00000000deadbeef
+60 full_hash ?
+120 end
+)";
+
+std::string error_of(const std::string& text) {
+  try {
+    parse_script(text, "s.replay");
+  } catch (const arc::InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+const std::string kHead = "arcfire-replay 1\nlevel levels/duel.json\n";
+
+}  // namespace
+
+TEST(ReplayParse, EveryLineKind) {
+  Script s = parse_script(kGood, "good.replay");
+  EXPECT_EQ(s.header.level, "levels/duel.json");
+  EXPECT_EQ(s.header.seed, 1101u);
+  EXPECT_EQ(s.header.tick_rate, 60);
+  EXPECT_EQ(s.header.difficulty, "hard");
+  EXPECT_EQ(s.header.build, "0.1.0 release");
+  EXPECT_EQ(s.header.snapshot_width, 320);
+  EXPECT_EQ(s.header.snapshot_height, 180);
+  ASSERT_EQ(s.inputs.size(), 4u);
+  EXPECT_EQ(s.inputs[0].kind, InputEvent::Kind::Axis);
+  EXPECT_EQ(s.inputs[0].axis, Axis::Throttle);
+  EXPECT_EQ(s.inputs[0].value, 127);
+  EXPECT_EQ(s.inputs[1].kind, InputEvent::Kind::Press);
+  EXPECT_EQ(s.inputs[1].button, kFirePrimary);
+  EXPECT_EQ(s.inputs[2].tick, 30u);  // +30 after tick 0
+  EXPECT_EQ(s.inputs[2].kind, InputEvent::Kind::Release);
+  EXPECT_EQ(s.inputs[3].value, -64);  // -0.5 * 127 = -63.5 rounds away from zero
+  EXPECT_EQ(s.inputs[3].src.line, 13);
+  ASSERT_EQ(s.commands.size(), 3u);
+  EXPECT_EQ(s.commands[0].command, ScriptCommand::TargetNearest);
+  EXPECT_EQ(s.commands[1].command, ScriptCommand::Pause);
+  EXPECT_EQ(s.commands[2].command, ScriptCommand::Resume);
+  ASSERT_EQ(s.expectations.size(), 8u);
+  EXPECT_EQ(s.expectations[1].kind, Expectation::Kind::Destroyed);
+  EXPECT_EQ(s.expectations[1].ship, "Red Leader");
+  EXPECT_EQ(s.expectations[2].range, (Range{50, 100}));
+  EXPECT_EQ(s.expectations[4].box[1], (Range{-5.5, 5.5}));
+  EXPECT_EQ(s.expectations[4].box[2], (Range{-1000, 0}));
+  EXPECT_EQ(s.expectations[5].other, "Red Leader");
+  EXPECT_EQ(s.expectations[7].team, "none");
+  ASSERT_EQ(s.snapshots.size(), 1u);
+  EXPECT_EQ(s.snapshots[0].name, "first-contact_1");
+  ASSERT_EQ(s.hashes.size(), 2u);
+  EXPECT_EQ(s.hashes[0].value, 0xdeadbeefu);
+  EXPECT_FALSE(s.hashes[0].full);
+  EXPECT_TRUE(s.hashes[1].full);
+  EXPECT_FALSE(s.hashes[1].value.has_value());
+  EXPECT_EQ(s.end_tick, 120u);
+  EXPECT_EQ(s.last_tick(), 120u);
+}
+
+TEST(ReplayParse, MissingEndRunsToTheLastStampedTick) {
+  Script s = parse_script(kHead + "10 press afterburner\n250 hash 1\n", "cut.replay");
+  EXPECT_FALSE(s.end_tick.has_value());
+  EXPECT_EQ(s.last_tick(), 250u);
+}
+
+TEST(ReplayParse, DefaultsWhenHeaderIsMinimal) {
+  Script s = parse_script(kHead + "5 end\n", "m.replay");
+  EXPECT_FALSE(s.header.seed.has_value());
+  EXPECT_FALSE(s.header.tick_rate.has_value());
+  EXPECT_FALSE(s.header.difficulty.has_value());
+  EXPECT_EQ(s.header.snapshot_width, 640);
+}
+
+struct BadCase {
+  const char* name;
+  std::string text;
+  const char* error;  // the full "path:line:col: message" prefix expected
+};
+
+class ReplayParseBad : public ::testing::TestWithParam<BadCase> {};
+
+TEST_P(ReplayParseBad, PositionedError) {
+  const BadCase& c = GetParam();
+  std::string e = error_of(c.text);
+  EXPECT_EQ(e.rfind(c.error, 0), 0u) << "got: " << e;
+  EXPECT_EQ(e.find('\n'), std::string::npos) << "one line: " << e;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, ReplayParseBad,
+    ::testing::Values(
+        BadCase{"empty", "# nothing\n", "s.replay:1:1: empty script"},
+        BadCase{"no_magic", "level x\n", "s.replay:1:1: a replay script starts with 'arcfire-replay 1'"},
+        BadCase{"bad_version", "arcfire-replay 2\n", "s.replay:1:16: format version must be an integer in [1, 1]"},
+        BadCase{"no_level", "arcfire-replay 1\n0 end\n", "s.replay:2:1: the header has no 'level' line"},
+        BadCase{"unknown_header", kHead + "  colour red\n", "s.replay:3:3: unknown header key 'colour'"},
+        BadCase{"dup_header", kHead + "level b\n", "s.replay:3:1: header key 'level' appears twice"},
+        BadCase{"bad_seed", kHead + "seed -4\n", "s.replay:3:6: seed must be an integer in [0, 4294967295]"},
+        BadCase{"bad_rate", kHead + "tick_rate 5\n", "s.replay:3:11: tick_rate must be an integer in [10, 480]"},
+        BadCase{"bad_difficulty", kHead + "difficulty insane\n", "s.replay:3:12: difficulty must be easy, normal or hard"},
+        BadCase{"header_after_body", kHead + "0 end\nseed 3\n", "s.replay:4:1: expected a tick number"},
+        BadCase{"bad_tick", kHead + "1x press fire_primary\n", "s.replay:3:1: tick must be an integer"},
+        BadCase{"order", kHead + "50 end_not\n", "s.replay:3:4: unknown line 'end_not'"},
+        BadCase{"backwards", kHead + "50 press afterburner\n40 release afterburner\n",
+                "s.replay:4:1: tick 40 is before the previous line's tick 50"},
+        BadCase{"no_verb", kHead + "50   \n", "s.replay:3:3: missing what happens at this tick"},
+        BadCase{"bad_button", kHead + "0 press fire\n", "s.replay:3:9: unknown button 'fire'; allowed: fire_primary"},
+        BadCase{"bad_axis", kHead + "0 axis pich 1\n", "s.replay:3:8: unknown axis 'pich'"},
+        BadCase{"axis_range", kHead + "0 axis pitch 1.5\n", "s.replay:3:14: axis value must be in [-1, 1], got 1.5"},
+        BadCase{"axis_nan", kHead + "0 axis pitch nan\n", "s.replay:3:14: axis value must be a finite number"},
+        BadCase{"axis_missing", kHead + "0 axis pitch\n", "s.replay:3:13: missing axis value"},
+        BadCase{"bad_command", kHead + "0 command fly\n", "s.replay:3:11: unknown command 'fly'"},
+        BadCase{"extra", kHead + "0 press afterburner now\n", "s.replay:3:21: unexpected 'now' after press afterburner"},
+        BadCase{"bad_expect", kHead + "0 expect happy Player\n", "s.replay:3:10: unknown expectation 'happy'"},
+        BadCase{"bad_range", kHead + "0 expect hull Player 50\n", "s.replay:3:22: hull must be a range MIN..MAX"},
+        BadCase{"empty_range", kHead + "0 expect hull Player 50..10\n", "s.replay:3:22: hull range is empty"},
+        BadCase{"range_words", kHead + "0 expect hull Player a..b\n", "s.replay:3:22: hull range bounds must be finite"},
+        BadCase{"box_short", kHead + "0 expect position P 0..1 0..1\n", "s.replay:3:30: missing z range MIN..MAX"},
+        BadCase{"quote", kHead + "0 expect alive \"Red\n", "s.replay:3:16: unterminated quoted name"},
+        BadCase{"snapshot_name", kHead + "0 snapshot a/b\n", "s.replay:3:12: snapshot name must be 1 to 64"},
+        BadCase{"snapshot_twice", kHead + "0 snapshot a\n1 snapshot a\n", "s.replay:4:12: snapshot name 'a' is used twice"},
+        BadCase{"hash_hex", kHead + "0 hash xyz\n", "s.replay:3:8: hash value must be 1 to 16 hex digits"},
+        BadCase{"hash_long", kHead + "0 hash 0123456789abcdef0\n", "s.replay:3:8: hash value must be 1 to 16 hex digits"},
+        BadCase{"after_end", kHead + "10 end\n20 press afterburner\n", "s.replay:4:1: line after 'end' (line 3)"}),
+    [](const ::testing::TestParamInfo<BadCase>& i) { return std::string(i.param.name); });
+
+TEST(ReplayParse, MissingFileIsAnInputError) {
+  EXPECT_THROW(load_script("tests/replays/no_such_script.replay"), arc::InputError);
+}
