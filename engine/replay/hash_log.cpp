@@ -32,10 +32,18 @@ HashLog parse_hash_log(const std::string& text, const std::string& path) {
     if (tick != log.hashes.size())
       fail(1, "expected tick " + std::to_string(log.hashes.size()) + ", got " + std::to_string(tick) +
                   " (ticks are consecutive from 0)");
-    auto [q, ec2] = std::from_chars(l.data() + sp + 1, l.data() + l.size(), value, 16);
-    if (ec2 != std::errc() || q != l.data() + l.size() || l.size() - sp - 1 > 16)
-      fail(static_cast<int>(sp) + 2, "hash must be up to 16 hex digits, got '" + l.substr(sp + 1) + "'");
+    size_t sp2 = l.find(' ', sp + 1);
+    size_t stop = sp2 == std::string::npos ? l.size() : sp2;
+    auto [q, ec2] = std::from_chars(l.data() + sp + 1, l.data() + stop, value, 16);
+    if (ec2 != std::errc() || q != l.data() + stop || stop - sp - 1 > 16)
+      fail(static_cast<int>(sp) + 2, "hash must be up to 16 hex digits, got '" + l.substr(sp + 1, stop - sp - 1) + "'");
     log.hashes.push_back(value);
+    if (sp2 == std::string::npos) continue;
+    uint64_t full = 0;
+    auto [r, ec3] = std::from_chars(l.data() + sp2 + 1, l.data() + l.size(), full, 16);
+    if (ec3 != std::errc() || r != l.data() + l.size() || l.size() - sp2 - 1 > 16)
+      fail(static_cast<int>(sp2) + 2, "full hash must be up to 16 hex digits, got '" + l.substr(sp2 + 1) + "'");
+    log.full.emplace_back(tick, full);
   }
   if (line == 0) throw InputError(path + ":1:1: empty hash log; it starts with 'arcfire-hashlog 1'");
   return log;
@@ -44,7 +52,17 @@ HashLog parse_hash_log(const std::string& text, const std::string& path) {
 std::string write_hash_log(const HashLog& log) {
   std::string out = "arcfire-hashlog 1\n";
   out.reserve(out.size() + log.hashes.size() * 24);
-  for (size_t t = 0; t < log.hashes.size(); ++t) out += std::to_string(t) + " " + hex64(log.hashes[t]) + "\n";
+  size_t f = 0;
+  for (size_t t = 0; t < log.hashes.size(); ++t) {
+    out += std::to_string(t);
+    out += ' ';
+    out += hex64(log.hashes[t]);
+    if (f < log.full.size() && log.full[f].first == t) {
+      out += ' ';
+      out += hex64(log.full[f++].second);
+    }
+    out += '\n';
+  }
   return out;
 }
 
