@@ -1,0 +1,121 @@
+// assets/image.cpp — images through OpenImageIO, always handed out as RGBA8.
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imageio.h>
+#include "assets/image_decode.h"
+#include "assets/model.h"
+#include "core/error.h"
+
+namespace arc {
+namespace {
+
+// Larger images are certainly a mistake for a game asset and would only exhaust memory.
+constexpr int kMaxImageSide = 16384;
+
+// OIIO premultiplies PNG colour on read and divides it out on write unless told that alpha is
+// unassociated; Arcfire keeps the stored bytes as they are and premultiplies explicitly.
+const OIIO::ImageSpec& raw_alpha_config() {
+  static const OIIO::ImageSpec config = [] {
+    OIIO::ImageSpec s;
+    s.attribute("oiio:UnassociatedAlpha", 1);
+    return s;
+  }();
+  return config;
+}
+
+Image read_rgba8(OIIO::ImageInput& in, const std::string& path) {
+  const OIIO::ImageSpec& spec = in.spec();
+  if (spec.width <= 0 || spec.height <= 0 || spec.width > kMaxImageSide || spec.height > kMaxImageSide)
+    throw InputError(path + ": image size " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+                     " is not allowed (1 to " + std::to_string(kMaxImageSide) + " pixels per side)");
+  const int channels = spec.nchannels;
+  if (channels < 1 || channels > 4)
+    throw InputError(path + ": image has " + std::to_string(channels) + " channels; 1 to 4 are supported");
+  std::vector<uint8_t> pixels(size_t(spec.width) * size_t(spec.height) * size_t(channels));
+  // OIIO converts 16-bit, half and float data to UINT8 itself (clamped, rounded).
+  if (!in.read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, pixels.data()))
+    throw InputError(path + ": cannot decode image: " + in.geterror());
+  Image img;
+  img.width = spec.width;
+  img.height = spec.height;
+  img.rgba.resize(size_t(spec.width) * size_t(spec.height) * 4);
+  const size_t n = size_t(spec.width) * size_t(spec.height);
+  for (size_t i = 0; i < n; ++i) {
+    const uint8_t* s = &pixels[i * size_t(channels)];
+    uint8_t* d = &img.rgba[i * 4];
+    switch (channels) {
+      case 1: d[0] = d[1] = d[2] = s[0]; d[3] = 255; break;
+      case 2: d[0] = d[1] = d[2] = s[0]; d[3] = s[1]; break;
+      case 3: d[0] = s[0]; d[1] = s[1]; d[2] = s[2]; d[3] = 255; break;
+      default: d[0] = s[0]; d[1] = s[1]; d[2] = s[2]; d[3] = s[3]; break;
+    }
+  }
+  return img;
+}
+
+}  // namespace
+
+Image load_image(const std::string& path) {
+  if (!std::filesystem::is_regular_file(path)) throw InputError(path + ": cannot read file (missing or not a file)");
+  auto in = OIIO::ImageInput::open(path, &raw_alpha_config());
+  if (!in) throw InputError(path + ": not a readable image: " + OIIO::geterror());
+  Image img = read_rgba8(*in, path);
+  in->close();
+  return img;
+}
+
+Image decode_image_memory(const uint8_t* data, size_t size, const std::string& name) {
+  OIIO::Filesystem::IOMemReader reader(const_cast<uint8_t*>(data), size);
+  // The format is found from the name's extension or, failing that, by probing each reader.
+  auto in = OIIO::ImageInput::open(name, &raw_alpha_config(), &reader);
+  if (!in) throw InputError(name + ": not a readable embedded image: " + OIIO::geterror());
+  Image img = read_rgba8(*in, name);
+  in->close();
+  return img;
+}
+
+void premultiply(Image& image) {
+  if (image.premultiplied) return;
+  for (size_t i = 0; i + 3 < image.rgba.size(); i += 4) {
+    const unsigned a = image.rgba[i + 3];
+    // Round to nearest: c·a/255 can never be exactly k + 0.5 because 255 is odd.
+    for (int c = 0; c < 3; ++c) image.rgba[i + size_t(c)] = uint8_t((image.rgba[i + size_t(c)] * a + 127u) / 255u);
+  }
+  image.premultiplied = true;
+}
+
+Image load_sprite(const std::string& path) {
+  Image img = load_image(path);
+  premultiply(img);
+  return img;
+}
+
+void save_image(const std::string& path, const Image& image) {
+  if (image.width <= 0 || image.height <= 0 || image.rgba.size() != size_t(image.width) * size_t(image.height) * 4)
+    throw InputError(path + ": cannot save an image whose size does not match its pixel data");
+  // The writer is chosen by the final name's extension; the temporary name only has to be unique.
+  auto out = OIIO::ImageOutput::create(path);
+  if (!out) throw InputError(path + ": no image writer for this file extension: " + OIIO::geterror());
+  const std::string tmp = path + ".tmp";
+  OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::UINT8);
+  spec.attribute("oiio:UnassociatedAlpha", 1);
+  if (!out->open(tmp, spec)) throw InputError(path + ": cannot write image: " + out->geterror());
+  const bool wrote = out->write_image(OIIO::TypeDesc::UINT8, image.rgba.data());
+  const bool closed = out->close();
+  if (!wrote || !closed) {
+    std::error_code ec;
+    std::filesystem::remove(tmp, ec);
+    throw InputError(path + ": cannot write image: " + out->geterror());
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) {
+    std::filesystem::remove(tmp, ec);
+    throw InputError(path + ": cannot replace file: " + ec.message());
+  }
+}
+
+}  // namespace arc
