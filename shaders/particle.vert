@@ -1,0 +1,59 @@
+#version 330 core
+// One instance per ParticleInstance (particles/render_output.h); gl_VertexID 0..3 picks the
+// quad corner of a triangle strip. All vectors are camera-relative, built in view space so
+// the quad always faces the camera and the degenerate cases stay finite.
+layout(location = 0) in vec4 i_pos_size;
+layout(location = 1) in vec4 i_axis_rot;
+layout(location = 2) in vec4 i_color;
+layout(location = 3) in vec2 i_burn_extent;
+layout(location = 4) in uint i_sprite;
+layout(location = 5) in uvec2 i_soft_board;
+uniform mat4 u_view;        // rotation only
+uniform mat4 u_proj;
+uniform float u_tan_half_y; // tan(fov_y / 2)
+uniform float u_size_clamp; // largest on-screen size as a fraction of screen height
+uniform float u_near;
+out vec3 v_uv;
+out vec4 v_color;
+out float v_burn;
+out float v_depth;          // linear view depth of this fragment
+out float v_extent;
+flat out uint v_soft;
+
+const float kEps = 1e-6;
+
+void main() {
+  vec2 corner = vec2((gl_VertexID & 1) != 0 ? 1.0 : -1.0, (gl_VertexID & 2) != 0 ? 1.0 : -1.0);
+  vec3 c = (u_view * vec4(i_pos_size.xyz, 1.0)).xyz;
+  float dist = max(-c.z, u_near);
+  float size = max(i_pos_size.w, kEps);
+  size = min(size, max(u_size_clamp * dist * u_tan_half_y, kEps));
+
+  float len_c = length(c);
+  vec3 to_p = len_c > kEps ? c / len_c : vec3(0.0, 0.0, -1.0);
+  vec3 right, up;
+  float half_long = size;
+  bool axis_locked = i_soft_board.y == 1u;
+  vec3 a = (u_view * vec4(i_axis_rot.xyz, 0.0)).xyz;
+  vec3 a_screen = a - dot(a, to_p) * to_p;  // the part of the segment seen across the view
+  float a_len = length(a_screen);
+  if (axis_locked && a_len > kEps * max(1.0, length(a))) {
+    up = a_screen / a_len;
+    right = normalize(cross(up, to_p));
+    half_long = 0.5 * a_len + size;
+  } else {
+    float r = axis_locked ? 0.0 : i_axis_rot.w;
+    float cs = cos(r), sn = sin(r);
+    right = vec3(cs, sn, 0.0);
+    up = vec3(-sn, cs, 0.0);
+  }
+  vec3 p = c + right * (corner.x * size) + up * (corner.y * half_long);
+  gl_Position = u_proj * vec4(p, 1.0);
+  v_uv = vec3(corner * 0.5 + 0.5, float(i_sprite));
+  v_uv.y = 1.0 - v_uv.y;
+  v_color = i_color;
+  v_burn = i_burn_extent.x;
+  v_depth = -p.z;
+  v_extent = max(i_burn_extent.y > 0.0 ? i_burn_extent.y : size, kEps);
+  v_soft = i_soft_board.x;
+}

@@ -1,0 +1,362 @@
+// Renderer tests, headless through EGL (Mesa llvmpipe). They skip, with the reason, when no
+// EGL context can be made.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include <glm/gtc/quaternion.hpp>
+
+#include "gfx/image_compare.h"
+#include "gfx_test_util.h"
+
+namespace arc {
+namespace {
+
+using test::channel;
+using test::particle;
+
+#define REQUIRE_CONTEXT()                                 \
+  do {                                                    \
+    std::string why;                                      \
+    if (!test::headless(why)) GTEST_SKIP() << "no EGL context: " << why; \
+  } while (0)
+
+RenderView base_view() {
+  RenderView v;
+  v.camera.position = {0, 0, 0};
+  v.camera.fov_y_radians = 0.9;
+  v.camera.near_plane = 0.1;
+  v.light_color = glm::vec3(0);
+  v.ambient = glm::vec3(0);
+  v.starfield_seed = 7;
+  return v;
+}
+
+std::unique_ptr<Renderer> make_renderer(bool float_scene = false) {
+  RendererDesc d;
+  d.offscreen = true;
+  d.float_scene = float_scene;
+  auto r = std::make_unique<Renderer>(d);
+  r->set_render_settings(test::plain_settings());
+  return r;
+}
+
+TEST(Renderer, ReportsVersionAndClipControl) {
+  REQUIRE_CONTEXT();
+  auto r = make_renderer();
+  EXPECT_FALSE(r->gl_version().empty());
+  RenderSettings s = test::plain_settings();
+  s.reversed_z = true;
+  r->set_render_settings(s);
+  EXPECT_EQ(r->render_settings().reversed_z, r->has_clip_control());
+}
+
+// Ilmonen eq. 3: result = rgb·alpha + (1 − alpha·(1 − burn))·background, per channel.
+TEST(Renderer, BurnBlendMatchesEquation3) {
+  REQUIRE_CONTEXT();
+  auto r = make_renderer();
+  const glm::vec3 bgs[] = {{0.2f, 0.4f, 0.6f}, {0.9f, 0.1f, 0.3f}};
+  const glm::vec3 fg(0.8f, 0.5f, 0.1f);
+  const float alpha = 0.6f;
+  int wall_models[2] = {r->add_model(test::wall_model(100, 100, {0, 0, 0, 1}, bgs[0])),
+                        r->add_model(test::wall_model(100, 100, {0, 0, 0, 1}, bgs[1]))};
+  for (int b = 0; b < 2; ++b)
+    for (float burn : {0.0f, 0.25f, 0.5f, 1.0f}) {
+      RenderView v = base_view();
+      v.meshes.push_back({wall_models[b], {0, 0, -20}});
+      v.particles.push_back(particle({0, 0, -10}, 2.0f, fg, alpha, burn));
+      r->render(v, 64, 64);
+      Image img = r->read_pixels();
+      for (int c = 0; c < 3; ++c) {
+        float expect = std::min(1.0f, fg[c] * alpha + (1 - alpha * (1 - burn)) * bgs[b][c]);
+        EXPECT_NEAR(channel(img, 32, 32, c), expect, 1.0f / 255 + 1e-4f) << "burn " << burn << " channel " << c;
+      }
+      float over = fg[0] * alpha + (1 - alpha) * bgs[b][0];
+      float add = std::min(1.0f, fg[0] * alpha + bgs[b][0]);
+      if (burn == 0.0f) {
+        EXPECT_NEAR(channel(img, 32, 32, 0), over, 1.0f / 255 + 1e-4f);
+      }
+      if (burn == 1.0f) {
+        EXPECT_NEAR(channel(img, 32, 32, 0), add, 1.0f / 255 + 1e-4f);
+      }
+    }
+  EXPECT_EQ(r->last_stats().particle_draw_calls, 1);
+}
+
+// A wall turned 60° about Y so its depth changes across the image; a particle sits on it.
+struct CutScene {
+  RenderView view;
+  int width = 200, height = 100;
+};
+
+CutScene cut_scene(Renderer& r, SoftEdge soft) {
+  CutScene s;
+  s.view = base_view();
+  int wall = r.add_model(test::wall_model(60, 60, {0, 0, 0, 1}, glm::vec3(0.05f, 0.05f, 0.1f)));
+  s.view.meshes.push_back({wall, {0, 0, -12}, glm::angleAxis(glm::radians(60.0), glm::dvec3(0, 1, 0))});
+  s.view.particles.push_back(particle({0, 0, -12}, 3.0f, glm::vec3(1.0f, 0.8f, 0.5f), 0.9f, 0.0f, soft));
+  return s;
+}
+
+float largest_step_along_row(const Image& img, int y) {
+  float worst = 0;
+  for (int x = 1; x < img.width; ++x)
+    for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(channel(img, x, y, c) - channel(img, x - 1, y, c)));
+  return worst;
+}
+
+TEST(Renderer, SoftEdgesRemoveTheHardCut) {
+  REQUIRE_CONTEXT();
+  auto r = make_renderer();
+  CutScene hard = cut_scene(*r, SoftEdge::Off);
+  r->render(hard.view, hard.width, hard.height);
+  Image hard_img = r->read_pixels();
+  test::dump_if_asked("cut_hard", hard_img);
+  float hard_step = largest_step_along_row(hard_img, hard.height / 2);
+  EXPECT_GT(hard_step, 0.5f) << "without soft edges the cut must be a hard edge";
+  for (SoftEdge m : {SoftEdge::Linear, SoftEdge::Contrast, SoftEdge::AverageDensity, SoftEdge::DensityExtent}) {
+    CutScene soft = cut_scene(*r, m);
+    r->render(soft.view, soft.width, soft.height);
+    Image img = r->read_pixels();
+    test::dump_if_asked("cut_soft_" + std::to_string(int(m)), img);
+    float step = largest_step_along_row(img, soft.height / 2);
+    EXPECT_LT(step, 0.2f) << "soft method " << int(m);
+    EXPECT_TRUE(r->last_stats().depth_copied);
+  }
+}
+
+// Meshes and particles near the origin, then everything (camera included) moved by 1e9.
+RenderView offset_scene(Renderer& r, int wall, int box, glm::dvec3 offset) {
+  RenderView v = base_view();
+  v.light_color = glm::vec3(1.0f, 0.95f, 0.9f);
+  v.ambient = glm::vec3(0.1f);
+  v.camera.position = offset + glm::dvec3(0.3, 0.7, 2.0);
+  v.camera.orientation = glm::angleAxis(0.2, glm::dvec3(0, 1, 0));
+  v.meshes.push_back({wall, offset + glm::dvec3(0, 0, -25)});
+  v.meshes.push_back({box, offset + glm::dvec3(-2, 0.5, -12), glm::angleAxis(0.7, glm::normalize(glm::dvec3(1, 1, 0)))});
+  for (int i = 0; i < 40; ++i) {
+    glm::dvec3 world = offset + glm::dvec3(-4 + 0.2 * i, std::sin(i * 0.7), -14 + 0.1 * i);
+    glm::vec3 rel(world - v.camera.position);
+    v.particles.push_back(particle(rel, 0.8f, glm::vec3(1.0f, 0.5f + 0.01f * i, 0.2f), 0.7f, (i % 3) * 0.5f,
+                                   SoftEdge(i % 5)));
+  }
+  return v;
+}
+
+TEST(Renderer, LargeCoordinatesRenderLikeTheOrigin) {
+  REQUIRE_CONTEXT();
+  auto r = make_renderer();
+  r->set_sprites({test::soft_sprite(64)});
+  int wall = r->add_model(test::wall_model(80, 80, {0.5f, 0.5f, 0.55f, 1}, glm::vec3(0)));
+  int box = r->add_model(test::box_model({1.5f, 1.0f, 2.5f}, {0.7f, 0.3f, 0.2f, 1}, glm::vec3(0.05f)));
+  r->render(offset_scene(*r, wall, box, glm::dvec3(0)), 320, 180);
+  Image a = r->read_pixels();
+  r->render(offset_scene(*r, wall, box, glm::dvec3(1e9, -1e9, 1e9)), 320, 180);
+  Image b = r->read_pixels();
+  test::dump_if_asked("origin", a);
+  test::dump_if_asked("far_away", b);
+  ImageDiff d = compare_images(a, b);
+  if (!d.passed) write_failure_images("test_gfx_large_coordinates", b, a);
+  EXPECT_TRUE(d.passed) << d.summary();
+}
+
+TEST(Renderer, DegenerateBillboardsGiveFinitePixels) {
+  REQUIRE_CONTEXT();
+  auto r = make_renderer(true);
+  r->set_sprites({test::soft_sprite(32)});
+  int wall = r->add_model(test::wall_model(50, 50, {0.3f, 0.3f, 0.3f, 1}, glm::vec3(0.1f)));
+  RenderView v = base_view();
+  v.meshes.push_back({wall, {0, 0, -10}});
+  auto at_camera = particle({0, 0, 0}, 1.0f, glm::vec3(1, 0.5, 0.2), 0.8f, 0.3f, SoftEdge::Linear);
+  auto zero_size = particle({0.5f, 0, -5}, 0.0f, glm::vec3(1), 1.0f, 0.0f, SoftEdge::Contrast);
+  auto along_view = particle({0, 0.2f, -5}, 0.3f, glm::vec3(0.2, 0.6, 1), 0.9f, 1.0f, SoftEdge::DensityExtent);
+  along_view.billboard = uint8_t(Billboard::AxisLocked);
+  along_view.axis[2] = -4.0f;
+  auto zero_axis = particle({-0.5f, 0, -5}, 0.4f, glm::vec3(1), 0.5f, 0.5f, SoftEdge::AverageDensity);
+  zero_axis.billboard = uint8_t(Billboard::AxisLocked);
+  auto tiny_extent = particle({0, -0.5f, -10}, 1e-9f, glm::vec3(1), 1.0f, 0.0f, SoftEdge::Linear);
+  v.particles = {at_camera, zero_size, along_view, zero_axis, tiny_extent};
+  for (bool reversed : {true, false}) {
+    RenderSettings s = test::plain_settings();
+    s.reversed_z = reversed;
+    s.near_fade = 1.0f;
+    r->set_render_settings(s);
+    r->render(v, 96, 96);
+    std::vector<float> px = r->read_pixels_float();
+    size_t bad = 0;
+    for (float f : px) bad += !std::isfinite(f);
+    EXPECT_EQ(bad, 0u) << (reversed ? "reversed" : "standard");
+    EXPECT_EQ(r->last_stats().particles_drawn, 5);
+  }
+  // The segment seen end-on still covers pixels (it becomes a camera-facing quad), and its
+  // colour is there: a bluish spot above the centre.
+  Image img = r->read_pixels();
+  test::dump_if_asked("degenerate", img);
+  EXPECT_GT(channel(img, 48, 44, 2), channel(img, 48, 44, 0));
+}
+
+TEST(Renderer, ReversedAndStandardDepthAgree) {
+  REQUIRE_CONTEXT();
+  auto r = make_renderer();
+  r->set_sprites({test::soft_sprite(64)});
+  int wall = r->add_model(test::wall_model(80, 80, {0.5f, 0.5f, 0.55f, 1}, glm::vec3(0)));
+  int box = r->add_model(test::box_model({1.5f, 1.0f, 2.5f}, {0.7f, 0.3f, 0.2f, 1}, glm::vec3(0.05f)));
+  Image images[2];
+  for (int i = 0; i < 2; ++i) {
+    RenderSettings s = test::plain_settings();
+    s.reversed_z = i == 0;
+    s.infinite_far = i == 0;
+    r->set_render_settings(s);
+    r->render(offset_scene(*r, wall, box, glm::dvec3(0)), 320, 180);
+    images[i] = r->read_pixels();
+  }
+  ImageDiff d = compare_images(images[0], images[1]);
+  if (!d.passed) write_failure_images("test_gfx_depth_modes", images[1], images[0]);
+  EXPECT_TRUE(d.passed) << d.summary();
+}
+
+TEST(Renderer, DepthCopyOnlyWhenASoftParticleIsVisible) {
+  REQUIRE_CONTEXT();
+  auto r = make_renderer();
+  RenderView v = base_view();
+  v.particles.push_back(particle({0, 0, -5}, 1.0f, glm::vec3(1), 1.0f, 0.0f, SoftEdge::Off));
+  r->render(v, 32, 32);
+  EXPECT_FALSE(r->last_stats().depth_copied);
+  auto invisible = particle({0, 0, -5}, 1.0f, glm::vec3(0), 0.0f, 0.0f, SoftEdge::Linear);
+  v.particles.push_back(invisible);
+  r->render(v, 32, 32);
+  EXPECT_FALSE(r->last_stats().depth_copied) << "an invisible soft particle needs no depth copy";
+  EXPECT_EQ(r->last_stats().particles_drawn, 1);
+  v.particles.push_back(particle({0, 0, -6}, 1.0f, glm::vec3(1), 0.5f, 0.0f, SoftEdge::Linear));
+  r->render(v, 32, 32);
+  EXPECT_TRUE(r->last_stats().depth_copied);
+  RenderSettings s = test::plain_settings();
+  s.soft_override = int(SoftEdge::Off);
+  r->set_render_settings(s);
+  r->render(v, 32, 32);
+  EXPECT_FALSE(r->last_stats().depth_copied) << "the global override turns soft edges off";
+}
+
+TEST(Renderer, SortingPutsTheNearParticleOnTop) {
+  REQUIRE_CONTEXT();
+  auto r = make_renderer();
+  RenderView v = base_view();
+  // Input order: near red first, far green second; unsorted, green ends up over red.
+  v.particles.push_back(particle({0, 0, -5}, 1.0f, glm::vec3(1, 0, 0), 1.0f, 0.0f));
+  v.particles.push_back(particle({0, 0, -8}, 2.0f, glm::vec3(0, 1, 0), 1.0f, 0.0f));
+  r->render(v, 32, 32);
+  Image sorted = r->read_pixels();
+  EXPECT_GT(channel(sorted, 16, 16, 0), 0.9f);
+  EXPECT_EQ(r->last_stats().sorted, 2);
+  RenderSettings s = test::plain_settings();
+  s.sorting = RenderSettings::Sorting::Off;
+  r->set_render_settings(s);
+  r->render(v, 32, 32);
+  Image unsorted = r->read_pixels();
+  EXPECT_GT(channel(unsorted, 16, 16, 1), 0.9f);
+  EXPECT_EQ(r->last_stats().sorted, 0);
+}
+
+TEST(Renderer, PureAdditiveParticlesAreNotSorted) {
+  REQUIRE_CONTEXT();
+  auto r = make_renderer();
+  RenderView v = base_view();
+  v.particles.push_back(particle({0, 0, -5}, 1.0f, glm::vec3(0.3f, 0, 0), 1.0f, 1.0f));
+  v.particles.push_back(particle({0, 0, -8}, 2.0f, glm::vec3(0, 0.3f, 0), 1.0f, 1.0f));
+  r->render(v, 32, 32);
+  EXPECT_EQ(r->last_stats().sorted, 0);
+  EXPECT_EQ(r->last_stats().particles_drawn, 2);
+}
+
+TEST(Renderer, RenderScaleKeepsTheOutputSize) {
+  REQUIRE_CONTEXT();
+  auto r = make_renderer();
+  RenderSettings s = test::plain_settings();
+  s.scale = 0.5;
+  r->set_render_settings(s);
+  RenderView v = base_view();
+  v.particles.push_back(particle({0, 0, -5}, 1.0f, glm::vec3(1), 1.0f, 0.0f));
+  r->render(v, 80, 60);
+  Image img = r->read_pixels();
+  EXPECT_EQ(img.width, 80);
+  EXPECT_EQ(img.height, 60);
+  EXPECT_GT(channel(img, 40, 30, 0), 0.9f);
+}
+
+TEST(Renderer, HudDrawsQuadsLinesAndText) {
+  REQUIRE_CONTEXT();
+  auto r = make_renderer();
+  RenderView v = base_view();
+  v.hud.quads.push_back({4, 4, 10, 10, glm::vec4(1, 0, 0, 1)});
+  v.hud.lines.push_back({0, 40, 63, 40, 3, glm::vec4(0, 1, 0, 1)});
+  v.hud.texts.push_back({20, 4, 2.0f, glm::vec4(1, 1, 1, 1), "HI"});
+  r->render(v, 64, 64);
+  Image img = r->read_pixels();
+  test::dump_if_asked("hud", img);
+  EXPECT_GT(channel(img, 8, 8, 0), 0.99f);
+  EXPECT_LT(channel(img, 8, 8, 1), 0.01f);
+  EXPECT_GT(channel(img, 30, 40, 1), 0.99f);
+  int lit = 0;
+  for (int y = 4; y < 34; ++y)
+    for (int x = 20; x < 50; ++x) lit += channel(img, x, y, 0) > 0.9f && channel(img, x, y, 2) > 0.9f;
+  EXPECT_GT(lit, 20) << "text pixels";
+}
+
+TEST(Renderer, ShaderReloadKeepsOldProgramsOnError) {
+  REQUIRE_CONTEXT();
+  namespace fs = std::filesystem;
+  fs::path dir = fs::temp_directory_path() / ("arcfire_shaders_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::copy(ARCFIRE_SOURCE_DIR "/shaders", dir);
+  RendererDesc d;
+  d.offscreen = true;
+  d.shader_dir = dir.string();
+  Renderer r(d);
+  r.set_render_settings(test::plain_settings());
+  EXPECT_EQ(r.reload(), "");
+  { std::ofstream(dir / "particle.frag") << "#version 330 core\nvoid main() { this is not glsl; }\n"; }
+  std::string err = r.reload();
+  EXPECT_NE(err.find("particle.frag"), std::string::npos) << err;
+  RenderView v = base_view();
+  v.particles.push_back(particle({0, 0, -5}, 1.0f, glm::vec3(1, 0, 0), 1.0f, 0.0f));
+  r.render(v, 32, 32);
+  Image img = r.read_pixels();
+  EXPECT_GT(channel(img, 16, 16, 0), 0.9f) << "the old particle program still draws";
+  fs::remove_all(dir);
+}
+
+TEST(Renderer, AppliesQualitySettings) {
+  REQUIRE_CONTEXT();
+  auto r = make_renderer();
+  Settings s = Settings::defaults();
+  s.apply_preset_file(ARCFIRE_SOURCE_DIR "/assets/settings/quality.json", "low");
+  s.set_from_text("render.depth_mode=standard", "--set");
+  r->apply_settings(s);
+  EXPECT_EQ(r->render_settings().soft_override, int(SoftEdge::Off));
+  EXPECT_EQ(r->render_settings().sorting, RenderSettings::Sorting::Off);
+  EXPECT_FALSE(r->render_settings().reversed_z);
+  EXPECT_DOUBLE_EQ(r->render_settings().scale, 0.5);
+  s.apply_preset_file(ARCFIRE_SOURCE_DIR "/assets/settings/quality.json", "high");
+  r->apply_settings(s);
+  EXPECT_EQ(r->render_settings().soft_override, -1);
+}
+
+TEST(RadixSort, BackToFrontAndStable) {
+  std::vector<uint32_t> keys = {5, 0x80000000u, 5, 7, 0, 0xFFFFFFFFu, 300, 70000};
+  std::vector<uint32_t> order;
+  radix_sort_back_to_front(keys, order);
+  ASSERT_EQ(order.size(), keys.size());
+  for (size_t i = 1; i < order.size(); ++i) {
+    EXPECT_GE(keys[order[i - 1]], keys[order[i]]);
+    if (keys[order[i - 1]] == keys[order[i]]) {
+      EXPECT_LT(order[i - 1], order[i]);
+    }
+  }
+  EXPECT_EQ(order.front(), 5u);
+}
+
+}  // namespace
+}  // namespace arc
