@@ -10,9 +10,9 @@
 //   for (const InputEvent& e : s.inputs) ...                      // in tick order
 //   std::string text = write_script(s);                            // parse(write(s)) == s
 //
-// Tick semantics: lines stamped T apply to the state after T simulation steps. Checks at T
-// look at that state; inputs and commands at T feed the step from T to T + 1. The run stops
-// after the checks of the `end` tick.
+// Tick semantics: lines stamped T apply to the state after T simulation steps (Game::step
+// calls; a paused step counts although game time stands still). Checks at T look at that
+// state; inputs and commands at T feed step T + 1. The run stops after the checks at `end`.
 //
 // Axes are quantised to signed bytes exactly like live input (game/sim/input.h), so a file
 // written from recorded bytes parses back to the very same bytes.
@@ -61,12 +61,17 @@ struct SourceLine {
 struct Header {
   int version = kFormatVersion;
   std::string level;                // required, relative to the repo root (or absolute)
+  int level_line = 0;               // where the level line is, for "not found" messages
   std::optional<uint64_t> seed;     // absent: the level's own
   std::optional<int> tick_rate;     // absent: the level's own; present: must equal it
   std::optional<std::string> difficulty;  // "easy" | "normal" | "hard"; absent: the level's
   std::string build;                // informational: the build that wrote the file
   int snapshot_width = 640, snapshot_height = 360;
-  bool operator==(const Header&) const = default;
+  bool same_content(const Header& o) const {
+    return version == o.version && level == o.level && seed == o.seed && tick_rate == o.tick_rate &&
+           difficulty == o.difficulty && build == o.build && snapshot_width == o.snapshot_width &&
+           snapshot_height == o.snapshot_height;
+  }
 };
 
 struct InputEvent {

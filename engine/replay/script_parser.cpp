@@ -147,6 +147,7 @@ void parse_header_line(LineParser& lp, Header& h, std::vector<std::string>& seen
   seen.push_back(key.text);
   if (key.text == "level") {
     h.level = lp.take("level path").text;
+    h.level_line = lp.line;
   } else if (key.text == "seed") {
     h.seed = integer_in(lp, lp.take("seed value"), "seed", 0, 4294967295ull);
   } else if (key.text == "tick_rate") {

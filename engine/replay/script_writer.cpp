@@ -128,7 +128,7 @@ bool Script::same_content(const Script& o) const {
     return s;
   };
   Script a = strip(*this), b = strip(o);
-  return a.header == b.header && a.inputs == b.inputs && a.commands == b.commands &&
+  return a.header.same_content(b.header) && a.inputs == b.inputs && a.commands == b.commands &&
          a.expectations == b.expectations && a.hashes == b.hashes && a.snapshots == b.snapshots &&
          a.end_tick == b.end_tick;
 }
