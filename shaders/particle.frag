@@ -36,11 +36,13 @@ void main() {
     } else if (v_soft == 2u) {
       k = contrast(clamp(diff / v_extent, 0.0, 1.0), u_contrast_power);
     } else if (v_soft == 3u) {
-      // Average density: the fraction of the volume [z − E/2, z + E/2] in front of the scene.
-      k = clamp((diff + 0.5 * v_extent) / v_extent, 0.0, 1.0);
+      // Average density: the fraction of the volume [z − E/2, z + E/2] in front of the scene;
+      // the quad already sits at z − E/2.
+      k = clamp(diff / v_extent, 0.0, 1.0);
     } else {
       // Density extent: texture alpha is the volume's extent around the mirror plane.
-      float range = diff / v_extent / max(tex.a, kEps);
+      // The quad sits at z − E, so the mirror plane is one extent behind it.
+      float range = (diff - v_extent) / v_extent / max(tex.a, kEps);
       k = clamp(range, -1.0, 1.0) * 0.5 + 0.5;
     }
   }

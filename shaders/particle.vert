@@ -48,12 +48,19 @@ void main() {
     up = vec3(-sn, cs, 0.0);
   }
   vec3 p = c + right * (corner.x * size) + up * (corner.y * half_long);
+  float extent = max(i_burn_extent.y > 0.0 ? i_burn_extent.y : size, kEps);
+  // Krazanowski's volumes reach in front of the particle's mirror plane (by extent/2 for average
+  // density, by the full extent for density extent); the quad moves there along the view ray,
+  // which keeps its screen footprint, so the depth test cuts it only where the volume ends.
+  float push = i_soft_board.x == 3u ? 0.5 * extent : i_soft_board.x == 4u ? extent : 0.0;
+  float pd = -p.z;
+  if (push > 0.0 && pd > u_near) p *= max(pd - push, u_near * 1.001) / pd;
   gl_Position = u_proj * vec4(p, 1.0);
   v_uv = vec3(corner * 0.5 + 0.5, float(i_sprite));
   v_uv.y = 1.0 - v_uv.y;
   v_color = i_color;
   v_burn = i_burn_extent.x;
   v_depth = -p.z;
-  v_extent = max(i_burn_extent.y > 0.0 ? i_burn_extent.y : size, kEps);
+  v_extent = extent;
   v_soft = i_soft_board.x;
 }
