@@ -1,0 +1,29 @@
+#include "particles/curves.h"
+
+#include <algorithm>
+
+namespace arc {
+
+Curve Curve::flat(float value) { return from_keys({{0.0f, value}}); }
+
+Curve Curve::from_keys(std::vector<CurveKey> keys) {
+  Curve c;
+  c.keys = std::move(keys);
+  for (const CurveKey& k : c.keys) c.constant = c.constant && k.value == c.keys.front().value;
+  for (int i = 0; i <= kCurveSamples; ++i) c.table[size_t(i)] = c.exact(float(i) / float(kCurveSamples));
+  return c;
+}
+
+float Curve::exact(float t) const {
+  if (t <= keys.front().t) return keys.front().value;
+  if (t >= keys.back().t) return keys.back().value;
+  size_t i = 1;
+  while (keys[i].t < t) ++i;
+  const CurveKey& a = keys[i - 1];
+  const CurveKey& b = keys[i];
+  const float span = b.t - a.t;
+  if (span <= 0.0f) return b.value;
+  return a.value + (b.value - a.value) * ((t - a.t) / span);
+}
+
+}  // namespace arc

@@ -1,0 +1,256 @@
+#include "particles/effect_library.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "core/error.h"
+#include "core/json.h"
+#include "particles/sprites.h"
+
+namespace arc {
+namespace {
+
+constexpr double kDeg = 3.14159265358979323846 / 180.0;
+constexpr double kBig = 1e6;
+
+// A distribution: a number (constant) or [min, max] with min ≤ max.
+Range read_range(JsonObject& o, const std::string& key, Range fallback, double lo, double hi, double unit = 1.0) {
+  auto v = o.get(key);
+  if (!v) return fallback;
+  if (v->is_number()) {
+    double x = v->number(lo, hi) * unit;
+    return {x, x};
+  }
+  if (!v->is_array() || v->raw().size() != 2)
+    v->fail("'" + key + "' must be a number or [min, max] with numbers in [" + std::to_string(lo) + ", " +
+            std::to_string(hi) + "]");
+  std::vector<double> n = v->numbers(lo, hi);
+  if (n[0] > n[1]) v->fail("'" + key + "' must be [min, max] with min <= max");
+  return {n[0] * unit, n[1] * unit};
+}
+
+// [[t, value], ...] with t in [0, 1] increasing, or a single number.
+std::vector<CurveKey> read_keys(const JsonValue& v, double lo, double hi, int component) {
+  if (v.is_number() && component < 0) return {{0.0f, float(v.number(lo, hi))}};
+  if (!v.is_array() || v.raw().empty())
+    v.fail("'" + v.name() + "' must be a number or a non-empty array of [t, value] keyframes");
+  std::vector<CurveKey> keys;
+  for (const JsonValue& k : v.array()) {
+    if (!k.is_array() || k.raw().size() != 2)
+      k.fail("a keyframe must be [t, value] with t in [0, 1]");
+    std::vector<JsonValue> tv = k.array();
+    float t = float(tv[0].number(0.0, 1.0));
+    if (!keys.empty() && t < keys.back().t) tv[0].fail("keyframe times must not decrease");
+    const double value = component < 0 ? tv[1].number(lo, hi) : tv[1].vec3(lo, hi)[component];
+    keys.push_back({t, float(value)});
+  }
+  return keys;
+}
+
+void read_curves(JsonObject o, ClusterDef& c) {
+  if (auto v = o.get("size")) c.size = Curve::from_keys(read_keys(*v, 0.0, 1000.0, -1));
+  if (auto v = o.get("alpha")) c.alpha = Curve::from_keys(read_keys(*v, 0.0, 1.0, -1));
+  if (auto v = o.get("burn")) c.burn = Curve::from_keys(read_keys(*v, 0.0, 1.0, -1));
+  if (auto v = o.get("color")) {
+    if (v->is_number()) v->fail("'color' must be an array of [t, [r, g, b]] keyframes");
+    c.red = Curve::from_keys(read_keys(*v, 0.0, 8.0, 0));
+    c.green = Curve::from_keys(read_keys(*v, 0.0, 8.0, 1));
+    c.blue = Curve::from_keys(read_keys(*v, 0.0, 8.0, 2));
+  }
+  o.finish();
+}
+
+void read_emitter(JsonObject o, ClusterDef& c) {
+  EmitterDef& e = c.emitter;
+  if (c.animation == AnimationType::Sphere && o.has("shape"))
+    o.fail_key("shape", "a sphere cluster places its particles uniformly on its sphere; 'shape' is not allowed");
+  static const std::initializer_list<const char*> shapes = {"point", "sphere", "sphere_surface", "cone", "box", "line", "mesh"};
+  std::string shape = o.choice("shape", "point", shapes);
+  e.shape = shape == "point" ? EmitterShape::Point
+            : shape == "sphere" ? EmitterShape::Sphere
+            : shape == "sphere_surface" ? EmitterShape::SphereSurface
+            : shape == "cone" ? EmitterShape::Cone
+            : shape == "box" ? EmitterShape::Box
+            : shape == "line" ? EmitterShape::Line
+                              : EmitterShape::Mesh;
+  e.offset = o.vec3("offset", glm::dvec3(0.0), -kBig, kBig);
+  const bool needs_radius = e.shape == EmitterShape::Sphere || e.shape == EmitterShape::SphereSurface;
+  e.radius = needs_radius ? o.require_number("radius", 0.0, kBig) : o.number("radius", 0.0, 0.0, kBig);
+  if (e.shape == EmitterShape::Cone) e.angle = o.require_number("angle_deg", 0.0, 180.0) * kDeg;
+  if (e.shape == EmitterShape::Box) e.half_extents = o.vec3("half_extents", glm::dvec3(0.0), 0.0, kBig);
+  if (e.shape == EmitterShape::Box && !o.has("half_extents")) o.require("half_extents");
+  if (e.shape == EmitterShape::Line) e.length = o.require_number("length", 0.0, kBig);
+  if (e.shape == EmitterShape::Mesh) {
+    JsonValue tri = o.require("triangles");
+    for (const JsonValue& v : tri.array()) e.triangles.push_back(v.vec3(-kBig, kBig));
+    if (e.triangles.empty() || e.triangles.size() % 3 != 0)
+      tri.fail("'triangles' must list 3 vertices [x, y, z] per triangle, got " + std::to_string(e.triangles.size()) +
+               " vertices");
+    double total = 0.0;
+    for (size_t i = 0; i < e.triangles.size(); i += 3) {
+      glm::dvec3 a = e.triangles[i + 1] - e.triangles[i], b = e.triangles[i + 2] - e.triangles[i];
+      glm::dvec3 n(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+      total += 0.5 * std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+      e.area_prefix.push_back(total);
+    }
+    if (!(total > 0.0)) tri.fail("'triangles' must have a total area above zero");
+  }
+  e.rate = o.number("rate", 0.0, 0.0, 1e7);
+  e.burst = uint32_t(o.integer("burst", 0, 0, 1000000));
+  e.duration = o.number("duration", 0.0, 0.0, 1e6);
+  std::string dir = o.choice("direction", "shape", {"shape", "random", "forward"});
+  e.direction = dir == "shape" ? EmitDirection::Shape : dir == "random" ? EmitDirection::Random : EmitDirection::Forward;
+  if (e.rate == 0.0 && e.burst == 0) o.fail("emitter must have 'rate' > 0 or 'burst' > 0");
+  o.finish();
+}
+
+void read_particles(JsonObject o, ClusterDef& c) {
+  ParticleInitDef& p = c.particles;
+  p.speed = read_range(o, "speed", p.speed, 0.0, 1e5);
+  p.lifetime = read_range(o, "lifetime", p.lifetime, 0.0, 3600.0);
+  p.size = read_range(o, "size", p.size, 0.0, 1e5);
+  if (p.size.max <= 0.0) o.fail_key("size", "'size' must be above zero");
+  p.rotation = read_range(o, "rotation_deg", p.rotation, -3600.0, 3600.0, kDeg);
+  p.spin = read_range(o, "spin_deg", p.spin, -1e5, 1e5, kDeg);
+  p.inherit_velocity = o.number("inherit_velocity", p.inherit_velocity, 0.0, 1.0);
+  o.finish();
+}
+
+void read_animation(JsonObject o, ClusterDef& c) {
+  std::string type = o.choice("type", "linear", {"linear", "sphere", "lightning"});
+  if (type == "linear") {
+    c.animation = AnimationType::Linear;
+    c.linear.drag = o.number("drag", 0.0, 0.0, 1e4);
+    c.linear.acceleration = o.vec3("acceleration", glm::dvec3(0.0), -1e5, 1e5);
+  } else if (type == "sphere") {
+    c.animation = AnimationType::Sphere;
+    SphereDef& s = c.sphere;
+    std::string m = o.choice("motion", "static", {"static", "stochastic", "rotational"});
+    s.motion = m == "static" ? SphereMotion::Static : m == "stochastic" ? SphereMotion::Stochastic : SphereMotion::Rotational;
+    s.radius = o.require_number("radius", 0.0, kBig);
+    s.rotation_rate = o.vec3("rotation_deg", glm::dvec3(0.0), -1e5, 1e5) * kDeg;
+    std::string r = o.choice("radius_animation", "constant", {"constant", "pulsating", "contracting", "exploding"});
+    s.radius_animation = r == "constant" ? RadiusAnimation::Constant
+                         : r == "pulsating" ? RadiusAnimation::Pulsating
+                         : r == "contracting" ? RadiusAnimation::Contracting
+                                              : RadiusAnimation::Exploding;
+    s.amplitude = o.number("amplitude", 0.0, 0.0, 1.0);
+    s.frequency = o.number("frequency_hz", 0.0, 0.0, 1000.0);
+    s.ramp = o.number("ramp", 0.2, 1e-3, 0.5);
+    s.growth = o.number("growth", 0.0, 0.0, 1e5);
+  } else {
+    c.animation = AnimationType::Lightning;
+    LightningDef& l = c.lightning;
+    auto seed = o.require("seed_length");
+    l.seed_length = seed.number(0.0, kBig);
+    if (l.seed_length <= 0.0) seed.fail("'seed_length' must be above zero (a zero-length seed has no direction)");
+    l.max_length = o.require_number("max_length", 0.0, kBig);
+    if (l.max_length < l.seed_length)
+      o.fail_key("max_length", "'max_length' must be at least 'seed_length'");
+    l.max_angle = o.number("max_angle_deg", 20.0, 0.0, 89.0) * kDeg;
+    l.length_jitter = o.number("length_jitter", 0.3, 0.0, 0.9);
+    l.sizzle_ticks = int(o.integer("sizzle_ticks", 3, 1, 600));
+    l.width = o.number("width", 1.0, 1e-3, kBig);
+    if (l.max_length / (l.seed_length * (1.0 - l.length_jitter)) > 4096.0)
+      o.fail_key("max_length", "'max_length' allows more than 4096 segments; raise 'seed_length'");
+  }
+  o.finish();
+}
+
+ClusterDef read_cluster(JsonObject o, int index) {
+  ClusterDef c;
+  c.name = o.string("name", "cluster" + std::to_string(index));
+  std::string sprite = o.require_string("sprite");
+  auto s = sprite_index(sprite);
+  if (!s) {
+    std::vector<std::string> names;
+    for (auto n : kSpriteNames) names.emplace_back("\"" + std::string(n) + "\"");
+    o.require("sprite").fail("'sprite' must be one of " + join_allowed(names) + ", got \"" + sprite + "\"");
+  }
+  c.sprite = *s;
+  std::string soft = o.choice("soft_edge", "off", {"off", "linear", "contrast", "average_density", "density_extent"});
+  c.soft_edge = soft == "off" ? SoftEdge::Off
+                : soft == "linear" ? SoftEdge::Linear
+                : soft == "contrast" ? SoftEdge::Contrast
+                : soft == "average_density" ? SoftEdge::AverageDensity
+                                            : SoftEdge::DensityExtent;
+  c.soft_extent = o.number("soft_extent", 0.0, 0.0, kBig);
+  c.owner_space = o.choice("space", "world", {"world", "owner"}) == "owner";
+  c.lifetime = o.number("lifetime", 0.0, 0.0, 3600.0);
+  c.priority = int(o.integer("priority", -1, -1, 100));
+  read_animation(o.require_object("animation"), c);
+  if (c.animation == AnimationType::Sphere && c.sphere.radius_animation == RadiusAnimation::Contracting &&
+      c.lifetime <= 0.0)
+    o.fail_key("lifetime", "a contracting sphere needs a cluster 'lifetime' above zero (it shrinks before dying)");
+  if (c.animation == AnimationType::Lightning) {
+    c.owner_space = true;
+    if (o.has("emitter")) o.fail_key("emitter", "a lightning cluster has no emitter: its particles are the channel");
+  } else {
+    read_emitter(o.require_object("emitter"), c);
+  }
+  if (auto p = o.get("particles")) read_particles(p->object(), c);
+  if (c.animation == AnimationType::Linear && !(c.particles.lifetime.min > 0.0 && c.particles.lifetime.max <= 600.0))
+    o.fail_key(o.has("particles") ? "particles" : "animation",
+               "linear particles need a 'lifetime' in (0, 600] seconds, got [" + std::to_string(c.particles.lifetime.min) +
+                   ", " + std::to_string(c.particles.lifetime.max) + "]");
+  if (auto cv = o.get("curves")) read_curves(cv->object(), c);
+  o.finish();
+  return c;
+}
+
+std::shared_ptr<EffectDef> parse_effect(const std::shared_ptr<const JsonDoc>& doc, const std::string& name) {
+  auto def = std::make_shared<EffectDef>();
+  def->name = name;
+  def->path = doc->path();
+  JsonObject root(doc, "", &doc->root());
+  root.string("description", "");
+  auto clusters = root.require("clusters");
+  int i = 0;
+  for (const JsonValue& v : clusters.array()) def->clusters.push_back(read_cluster(v.object(), i++));
+  if (def->clusters.empty()) clusters.fail("'clusters' must list at least one cluster");
+  root.finish();
+  return def;
+}
+
+}  // namespace
+
+void EffectLibrary::load_directory(const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) throw InputError(dir + ": effect folder not found");
+  std::vector<std::string> files;
+  for (const auto& e : fs::directory_iterator(dir, ec))
+    if (e.is_regular_file() && e.path().extension() == ".json") files.push_back(e.path().string());
+  std::sort(files.begin(), files.end());
+  for (const std::string& f : files) load_file(f);
+}
+
+void EffectLibrary::load_file(const std::string& path) {
+  auto doc = JsonDoc::load_file(path);
+  effects_[std::filesystem::path(path).stem().string()] = parse_effect(doc, std::filesystem::path(path).stem().string());
+}
+
+void EffectLibrary::load_text(const std::string& text, const std::string& path) {
+  auto doc = JsonDoc::parse(text, path);
+  effects_[std::filesystem::path(path).stem().string()] = parse_effect(doc, std::filesystem::path(path).stem().string());
+}
+
+bool EffectLibrary::has(const std::string& name) const { return effects_.count(name) != 0; }
+
+const EffectDef& EffectLibrary::get(const std::string& name) const {
+  auto it = effects_.find(name);
+  if (it == effects_.end()) {
+    std::vector<std::string> n = names();
+    throw InputError("unknown effect '" + name + "'; known: " + (n.empty() ? std::string("none") : join_allowed(n)));
+  }
+  return *it->second;
+}
+
+std::vector<std::string> EffectLibrary::names() const {
+  std::vector<std::string> out;
+  for (const auto& [n, d] : effects_) out.push_back(n);
+  return out;
+}
+
+}  // namespace arc

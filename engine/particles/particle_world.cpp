@@ -1,0 +1,635 @@
+#include "particles/particle_world.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <glm/mat3x3.hpp>
+
+#include "core/error.h"
+#include "core/hash.h"
+#include "core/rng.h"
+#include "particles/cluster.h"
+#include "particles/effect_library.h"
+#include "particles/emitter.h"
+
+namespace arc {
+namespace {
+
+constexpr double kFlashGain = 3.0;  // a flashed particle's alpha at the impact point, × the normal
+constexpr double kFlashCos = 0.6;   // particles within acos(0.6) ≈ 53° of the impact direction flash
+
+double length(const glm::dvec3& v) { return std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z); }
+
+// Clusters whose particles live in a moving frame: owner-space linear, spheres and lightning.
+bool moves_with_frame(const Cluster& c) { return c.def->owner_space || c.def->animation != AnimationType::Linear; }
+
+float curve_max(const Curve& c) {
+  float m = 0.0f;
+  for (const CurveKey& k : c.keys) m = std::max(m, k.value);
+  return m;
+}
+
+uint32_t life_ticks(double seconds, double h) {
+  if (seconds <= 0.0) return kNeverDies;
+  return uint32_t(std::clamp<double>(std::llround(seconds / h), 1.0, double(kNeverDies / 2)));
+}
+
+}  // namespace
+
+struct ParticleWorld::Impl {
+  ParticleConfig config;
+  const EffectLibrary* effects = nullptr;
+  std::vector<Cluster> slots;
+  std::vector<uint32_t> free_slots;
+  std::map<uint32_t, OwnerTransform> owners;
+  std::map<std::pair<double, double>, std::shared_ptr<const MotionTable>> motion_tables;  // by (drag, longest life)
+  uint64_t tick = 0;
+  uint64_t next_serial = 1;
+  uint32_t live_particles = 0;
+  uint64_t refused = 0;
+  uint32_t skipped = 0;
+  mutable ParticlePool scratch;  // a culled cluster drawn anyway is evaluated here, not in place
+
+  double h() const { return config.tick_seconds; }
+
+  Cluster* find(ClusterHandle hnd) {
+    if (!hnd || hnd.index > slots.size()) return nullptr;
+    Cluster& c = slots[hnd.index - 1];
+    return c.alive && c.generation == hnd.generation ? &c : nullptr;
+  }
+  const Cluster* find(ClusterHandle hnd) const { return const_cast<Impl*>(this)->find(hnd); }
+
+  Pose owner_pose(uint32_t owner) const {
+    if (owner == 0) return {};
+    auto it = owners.find(owner);
+    if (it == owners.end()) return {};
+    return {it->second.position, it->second.orientation};
+  }
+  glm::dvec3 owner_velocity(const Cluster& c) const {
+    if (c.owner == 0) return c.spawn_velocity;
+    auto it = owners.find(c.owner);
+    return it == owners.end() ? glm::dvec3(0.0) : it->second.velocity;
+  }
+  Pose emitter_pose(const Cluster& c) const {
+    const Pose o = owner_pose(c.owner);
+    return {o.position + o.orientation * c.local_position, o.orientation * c.local_orientation};
+  }
+  Pose frame(const Cluster& c) const {
+    if (moves_with_frame(c)) return emitter_pose(c);
+    return {c.world_origin, glm::dquat(1, 0, 0, 0)};
+  }
+
+  uint32_t budget_limit(int priority) const {
+    // Policy: cosmetic particles (priority 0) are refused once 90% of the budget is live, so
+    // explosions and beams keep the last tenth; everything is refused at the budget.
+    return priority == 0 ? uint32_t(uint64_t(config.budget) * 9 / 10) : config.budget;
+  }
+
+  int lightning_interval(const Cluster& c) const {
+    return config.lightning_interval > 0 ? config.lightning_interval : c.def->lightning.sizzle_ticks;
+  }
+
+  std::shared_ptr<const MotionTable> motion_table(const ClusterDef& d) {
+    const auto key = std::make_pair(d.linear.drag, d.particles.lifetime.max);
+    auto it = motion_tables.find(key);
+    if (it != motion_tables.end()) return it->second;
+    auto t = MotionTable::build(d.linear.drag, h(), d.particles.lifetime.max);
+    motion_tables.emplace(key, t);
+    return t;
+  }
+
+  Cluster& allocate(uint32_t& slot) {
+    if (!free_slots.empty()) {
+      slot = free_slots.back();
+      free_slots.pop_back();
+    } else {
+      slot = uint32_t(slots.size());
+      slots.emplace_back();
+    }
+    Cluster& c = slots[slot];
+    ParticlePool keep = std::move(c.pool);
+    std::vector<glm::dvec3> keep_points = std::move(c.lightning.points);
+    const uint32_t generation = c.generation + 1;
+    c = Cluster{};
+    c.pool = std::move(keep);
+    c.pool.clear();
+    c.lightning.points = std::move(keep_points);
+    c.lightning.points.clear();
+    c.generation = generation;
+    c.alive = true;
+    return c;
+  }
+
+  ClusterHandle create(const EffectDef& effect, uint32_t index, const SpawnParams& p) {
+    const ClusterDef& d = effect.clusters[index];
+    uint32_t slot = 0;
+    Cluster& c = allocate(slot);
+    c.serial = next_serial++;
+    c.effect = &effect;
+    c.def_index = index;
+    c.def = &d;
+    c.spawn_tick = tick + 1;
+    c.owner = p.owner;
+    c.local_position = p.position;
+    c.local_orientation = p.orientation;
+    c.spawn_velocity = p.velocity;
+    c.scale = p.scale;
+    c.intensity = p.intensity;
+    c.priority = d.priority >= 0 ? d.priority : p.priority;
+    if (d.animation == AnimationType::Linear) c.motion = motion_table(d);
+    const Pose e = emitter_pose(c);
+    c.world_origin = e.position;
+    c.last_emit_position = e.position;
+    const double expected = d.emitter.burst * p.intensity + d.emitter.rate * p.intensity * d.particles.lifetime.max + 16.0;
+    c.pool.reserve(size_t(std::min(expected, double(config.budget))));
+    return {slot + 1, c.generation};
+  }
+
+  void release(Cluster& c) {
+    live_particles -= uint32_t(c.pool.count());
+    c.pool.clear();
+    c.alive = false;
+    ++c.generation;
+    free_slots.push_back(uint32_t(&c - slots.data()));
+  }
+
+  // ---- emission ---------------------------------------------------------------------------
+
+  void emit(Cluster& c, uint64_t t, uint32_t age) {
+    const ClusterDef& d = *c.def;
+    const EmitterDef& ed = d.emitter;
+    uint64_t count = 0;
+    if (age == 0 && ed.burst > 0) count += uint64_t(std::llround(ed.burst * c.intensity));
+    const bool in_duration = ed.duration <= 0.0 || double(age) * h() < ed.duration;
+    if (c.emitting && ed.rate > 0.0 && in_duration) {
+      c.emit_accumulator += ed.rate * h() * c.intensity;
+      const double whole = std::floor(c.emit_accumulator);
+      c.emit_accumulator -= whole;
+      count += uint64_t(whole);
+    }
+    const Pose ep = emitter_pose(c);
+    const glm::dvec3 from = c.last_emit_position;
+    c.last_emit_position = ep.position;
+    if (count == 0) return;
+    const Rng rng{config.seed, c.serial, t};
+    const uint32_t limit = budget_limit(c.priority);
+    const glm::dvec3 inherited = owner_velocity(c) * d.particles.inherit_velocity;
+    const ParticleInitDef& pd = d.particles;
+    for (uint64_t i = 0; i < count; ++i) {
+      if (live_particles >= limit) {
+        refused += count - i;
+        return;
+      }
+      const uint64_t base = i * 16;
+      const EmitSample s = sample_emitter(ed, rng, base);
+      const double speed = rng.range(base + 8, pd.speed.min, pd.speed.max) * c.scale;
+      const uint32_t life = life_ticks(rng.range(base + 9, pd.lifetime.min, pd.lifetime.max), h());
+      const size_t k = c.pool.count();
+      c.pool.resize(k + 1);
+      glm::dvec3 p0, v0;
+      if (d.animation == AnimationType::Sphere) {
+        p0 = uniform_direction(rng.uniform(base + 13), rng.uniform(base + 14));
+        v0 = glm::dvec3(0.0);
+      } else if (moves_with_frame(c)) {
+        p0 = s.position * c.scale;
+        v0 = s.direction * speed;
+      } else {
+        // World space: spread this tick's particles along the emitter's path since last tick.
+        const double along = double(i + 1) / double(count);
+        const glm::dvec3 at = from + (ep.position - from) * along;
+        p0 = at - c.world_origin + ep.orientation * (s.position * c.scale);
+        v0 = ep.orientation * (s.direction * speed) + inherited;
+      }
+      ParticlePool& pl = c.pool;
+      pl.p0x[k] = pl.px[k] = float(p0.x);
+      pl.p0y[k] = pl.py[k] = float(p0.y);
+      pl.p0z[k] = pl.pz[k] = float(p0.z);
+      pl.vx[k] = float(v0.x);
+      pl.vy[k] = float(v0.y);
+      pl.vz[k] = float(v0.z);
+      if (c.motion) {
+        const uint32_t n = std::min(life, c.motion->last());
+        const double a = length(d.linear.acceleration) * c.scale;
+        pl.reach[k] = float(length(v0) * c.motion->g[n] + a * c.motion->f[n]);
+      }
+      pl.size0[k] = float(rng.range(base + 10, pd.size.min, pd.size.max) * c.scale);
+      pl.rot0[k] = float(rng.range(base + 11, pd.rotation.min, pd.rotation.max));
+      pl.spin[k] = float(rng.range(base + 12, pd.spin.min, pd.spin.max));
+      pl.birth[k] = age;
+      pl.death[k] = life == kNeverDies ? kNeverDies : age + life;
+      pl.uid[k] = c.next_uid++;
+      pl.sprite[k] = d.sprite;
+      ++live_particles;
+    }
+  }
+
+  // ---- lightning --------------------------------------------------------------------------
+
+  void rebuild_lightning(Cluster& c, uint64_t t) {
+    const uint64_t epoch = lightning_epoch(t, c.spawn_tick, lightning_interval(c));
+    if (epoch == c.lightning.epoch) return;
+    c.lightning.epoch = epoch;
+    build_lightning(c.def->lightning, c.scale, Rng{config.seed, c.serial, epoch}, c.lightning);
+    const size_t segments = c.lightning.points.size() - 1;
+    const size_t have = c.pool.count();
+    size_t want = segments;
+    if (segments > have) {
+      const uint32_t limit = budget_limit(c.priority);
+      const size_t room = live_particles >= limit ? 0 : limit - live_particles;
+      want = std::min(segments, have + room);
+      refused += segments - want;
+    }
+    live_particles = uint32_t(live_particles - have + want);
+    c.pool.resize(want);
+    const uint32_t age = uint32_t(epoch - c.spawn_tick);
+    for (size_t i = 0; i < want; ++i) {
+      c.pool.birth[i] = age;
+      c.pool.death[i] = kNeverDies;
+      c.pool.uid[i] = uint32_t(i);
+      c.pool.size0[i] = float(c.def->lightning.width * c.scale);
+      c.pool.rot0[i] = c.pool.spin[i] = c.pool.reach[i] = 0.0f;
+      c.pool.sprite[i] = c.def->sprite;
+    }
+    apply_cut(c);
+  }
+
+  // Segment particles: start, visible segment vector (shortened at the cut), centre, hidden flag.
+  static void apply_cut(Cluster& c) {
+    const auto& pts = c.lightning.points;
+    double along = 0.0;
+    ParticlePool& pl = c.pool;
+    for (size_t i = 0; i < pl.count(); ++i) {
+      const glm::dvec3 seg = pts[i + 1] - pts[i];
+      const double len = length(seg);
+      const double visible = std::clamp(c.lightning.cut - along, 0.0, len);
+      const glm::dvec3 v = len > 0.0 ? seg * (visible / len) : glm::dvec3(0.0);
+      const glm::dvec3 mid = pts[i] + v * 0.5;
+      pl.p0x[i] = float(pts[i].x), pl.p0y[i] = float(pts[i].y), pl.p0z[i] = float(pts[i].z);
+      pl.vx[i] = float(v.x), pl.vy[i] = float(v.y), pl.vz[i] = float(v.z);
+      pl.px[i] = float(mid.x), pl.py[i] = float(mid.y), pl.pz[i] = float(mid.z);
+      pl.flags[i] = visible > 0.0 ? uint8_t(0) : uint8_t(kParticleHidden);
+      along += len;
+    }
+  }
+
+  // ---- per tick ---------------------------------------------------------------------------
+
+  // Emission, deaths and lightning re-evaluation: done every tick for every cluster (culled or
+  // not), because they decide what exists and what the budget admits.
+  void advance(Cluster& c, uint64_t t) {
+    if (t < c.spawn_tick) return;
+    const uint32_t age = uint32_t(t - c.spawn_tick);
+    const ClusterDef& d = *c.def;
+    if (d.lifetime > 0.0 && age >= life_ticks(d.lifetime, h())) {
+      release(c);
+      return;
+    }
+    live_particles -= uint32_t(c.pool.retire(age));
+    if (d.animation == AnimationType::Lightning) {
+      rebuild_lightning(c, t);
+      return;
+    }
+    emit(c, t, age);
+    const EmitterDef& ed = d.emitter;
+    const bool rate_done = !c.emitting || ed.rate <= 0.0 || (ed.duration > 0.0 && double(age + 1) * h() >= ed.duration);
+    if (rate_done && c.pool.count() == 0) release(c);
+  }
+
+  float max_particle_size(const Cluster& c) const {
+    const ClusterDef& d = *c.def;
+    if (d.animation == AnimationType::Lightning) return float(d.lightning.width * c.scale);
+    return float(d.particles.size.max * c.scale) * std::max(curve_max(d.size), 1.0f);
+  }
+
+  void update_bound(Cluster& c, uint64_t t) {
+    const ClusterDef& d = *c.def;
+    const double margin = max_particle_size(c);
+    if (d.animation == AnimationType::Sphere) {
+      c.bound_center = glm::dvec3(0.0);
+      c.bound_radius = sphere_radius(d.sphere, c.scale, double(t - c.spawn_tick) * h(), d.lifetime) *
+                           (1.0 + d.sphere.amplitude) + margin;
+      return;
+    }
+    if (d.animation == AnimationType::Lightning) {
+      c.bound_center = c.lightning.origin;
+      c.bound_radius = d.lightning.max_length * c.scale + margin;
+      return;
+    }
+    const ParticlePool& p = c.pool;
+    if (p.count() == 0) {
+      c.bound_center = glm::dvec3(0.0), c.bound_radius = 0.0;
+      return;
+    }
+    float lo[3] = {p.p0x[0], p.p0y[0], p.p0z[0]}, hi[3] = {lo[0], lo[1], lo[2]};
+    for (size_t i = 0; i < p.count(); ++i) {
+      const float r = p.reach[i];
+      lo[0] = std::min(lo[0], p.p0x[i] - r), hi[0] = std::max(hi[0], p.p0x[i] + r);
+      lo[1] = std::min(lo[1], p.p0y[i] - r), hi[1] = std::max(hi[1], p.p0y[i] + r);
+      lo[2] = std::min(lo[2], p.p0z[i] - r), hi[2] = std::max(hi[2], p.p0z[i] + r);
+    }
+    const glm::dvec3 a(lo[0], lo[1], lo[2]), b(hi[0], hi[1], hi[2]);
+    c.bound_center = (a + b) * 0.5;
+    c.bound_radius = length(b - a) * 0.5 + margin;
+  }
+
+  bool visible(const Cluster& c, const ParticleCamera& cam) const {
+    const Pose f = frame(c);
+    const glm::dvec3 d = f.position + f.orientation * c.bound_center - cam.position;
+    const double dist = length(d);
+    const double r = c.bound_radius;
+    if (dist - r > config.cull_distance) return false;
+    if (dist <= r) return true;
+    const glm::dvec3 fwd = cam.orientation * glm::dvec3(0, 0, -1);
+    const double depth = glm::dot(d, fwd);
+    const double half_diag = std::atan(std::tan(cam.fov_y_radians * 0.5) * std::sqrt(1.0 + cam.aspect * cam.aspect));
+    const double angle = std::acos(std::clamp(depth / dist, -1.0, 1.0));
+    // 10% wider than the view, so interpolated frame cameras rarely meet a stale cluster.
+    return angle - std::asin(std::min(1.0, r / dist)) <= std::min(3.14159265358979, half_diag * 1.1);
+  }
+
+  // Brings a pool to tick t from its birth state (the same arithmetic for skipped and animated clusters).
+  void animate(const Cluster& c, uint64_t t, ParticlePool& pool) const {
+    const ClusterDef& d = *c.def;
+    const uint32_t age = uint32_t(t - c.spawn_tick);
+    const double age_s = double(age) * h();
+    switch (d.animation) {
+      case AnimationType::Linear:
+        animate_linear(pool, age, *c.motion, glm::vec3(d.linear.acceleration * c.scale));
+        break;
+      case AnimationType::Sphere: {
+        const float radius = float(sphere_radius(d.sphere, c.scale, age_s, d.lifetime));
+        if (d.sphere.motion == SphereMotion::Stochastic) {
+          animate_sphere_stochastic(pool, radius, config.seed, c.serial, t);
+        } else {
+          const glm::dquat q = d.sphere.motion == SphereMotion::Rotational ? sphere_rotation(d.sphere.rotation_rate, h(), age)
+                                                                            : glm::dquat(1, 0, 0, 0);
+          animate_sphere(pool, radius, glm::mat3(glm::mat3_cast(q)));
+        }
+        break;
+      }
+      case AnimationType::Lightning:
+        break;
+    }
+    const float life_t = d.lifetime > 0.0 ? float(std::min(1.0, age_s / d.lifetime)) : 0.0f;
+    animate_attributes(pool, age, h(), CurveSet{&d.size, &d.red, &d.green, &d.blue, &d.alpha, &d.burn},
+                       float(c.intensity), life_t);
+    if (d.animation == AnimationType::Sphere) apply_flash(c, t, pool);
+  }
+
+  void apply_flash(const Cluster& c, uint64_t t, ParticlePool& pool) const {
+    if (c.flash_ticks == 0 || t < c.flash_tick || t - c.flash_tick >= c.flash_ticks) return;
+    const float fade = 1.0f - float(t - c.flash_tick) / float(c.flash_ticks);
+    const glm::vec3 dir(c.flash_direction);
+    for (size_t i = 0; i < pool.count(); ++i) {
+      const glm::vec3 p(pool.px[i], pool.py[i], pool.pz[i]);
+      const float l = std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z);
+      if (l <= 0.0f) continue;
+      const float cosang = (p.x * dir.x + p.y * dir.y + p.z * dir.z) / l;
+      const float w = std::max(0.0f, (cosang - float(kFlashCos)) / (1.0f - float(kFlashCos)));
+      const float gain = 1.0f + float(kFlashGain) * fade * w * w;
+      pool.a[i] = std::min(1.0f, pool.a[i] * gain);
+      pool.size[i] *= 1.0f + 0.5f * fade * w;
+    }
+  }
+};
+
+// ---- public API -------------------------------------------------------------------------------
+
+ParticleWorld::ParticleWorld(const ParticleConfig& config, const EffectLibrary* effects) : impl_(std::make_unique<Impl>()) {
+  impl_->config = config;
+  impl_->effects = effects;
+}
+ParticleWorld::~ParticleWorld() = default;
+ParticleWorld::ParticleWorld(const ParticleWorld& o) : impl_(std::make_unique<Impl>(*o.impl_)) {}
+ParticleWorld& ParticleWorld::operator=(const ParticleWorld& o) {
+  if (this != &o) impl_ = std::make_unique<Impl>(*o.impl_);
+  return *this;
+}
+
+EffectHandle ParticleWorld::spawn(const std::string& effect, const SpawnParams& params) {
+  if (!impl_->effects) throw InputError("unknown effect '" + effect + "': no effect library");
+  const EffectDef& def = impl_->effects->get(effect);
+  EffectHandle out;
+  for (uint32_t i = 0; i < def.clusters.size(); ++i) {
+    if (def.clusters[i].animation == AnimationType::Lightning) {
+      out.clusters.push_back(spawn_lightning(effect, params.owner, params.position, params.orientation * glm::dvec3(0, 0, -1)));
+      continue;
+    }
+    out.clusters.push_back(impl_->create(def, i, params));
+  }
+  return out;
+}
+
+ClusterHandle ParticleWorld::spawn_lightning(const std::string& effect, uint32_t owner, const glm::dvec3& local_origin,
+                                             const glm::dvec3& local_direction) {
+  if (!impl_->effects) throw InputError("unknown effect '" + effect + "': no effect library");
+  const EffectDef& def = impl_->effects->get(effect);
+  for (uint32_t i = 0; i < def.clusters.size(); ++i) {
+    if (def.clusters[i].animation != AnimationType::Lightning) continue;
+    SpawnParams p;
+    p.owner = owner;
+    ClusterHandle hnd = impl_->create(def, i, p);
+    Cluster& c = *impl_->find(hnd);
+    const double l = length(local_direction);
+    c.lightning.origin = local_origin;
+    c.lightning.direction = l > 1e-12 ? local_direction / l : glm::dvec3(0, 0, -1);
+    impl_->rebuild_lightning(c, c.spawn_tick);
+    return hnd;
+  }
+  throw InputError(def.path + ": effect '" + effect + "' has no lightning cluster (animation type \"lightning\")");
+}
+
+void ParticleWorld::destroy(ClusterHandle cluster) {
+  if (Cluster* c = impl_->find(cluster)) impl_->release(*c);
+}
+
+void ParticleWorld::destroy(const EffectHandle& effect) {
+  for (ClusterHandle c : effect.clusters) destroy(c);
+}
+
+void ParticleWorld::destroy_owner(uint32_t owner) {
+  if (owner == 0) return;
+  for (Cluster& c : impl_->slots)
+    if (c.alive && c.owner == owner) impl_->release(c);
+  impl_->owners.erase(owner);
+}
+
+bool ParticleWorld::alive(ClusterHandle cluster) const { return impl_->find(cluster) != nullptr; }
+
+void ParticleWorld::set_owner_transform(uint32_t owner, const OwnerTransform& t) {
+  if (owner != 0) impl_->owners[owner] = t;
+}
+
+void ParticleWorld::stop_emitting(ClusterHandle cluster) {
+  if (Cluster* c = impl_->find(cluster)) c->emitting = false;
+}
+
+void ParticleWorld::set_intensity(ClusterHandle cluster, double intensity) {
+  if (Cluster* c = impl_->find(cluster)) c->intensity = std::isfinite(intensity) ? std::max(0.0, intensity) : 0.0;
+}
+
+void ParticleWorld::flash(ClusterHandle cluster, const glm::dvec3& world_point, double seconds) {
+  Cluster* c = impl_->find(cluster);
+  if (!c || !(seconds > 0.0)) return;
+  const Pose f = impl_->frame(*c);
+  const glm::dvec3 local = glm::inverse(f.orientation) * (world_point - f.position);
+  const double l = length(local);
+  c->flash_direction = l > 1e-12 ? local / l : glm::dvec3(0, 0, -1);
+  c->flash_tick = impl_->tick;
+  c->flash_ticks = life_ticks(seconds, impl_->h());
+  if (c->animated_tick == impl_->tick && impl_->tick >= c->spawn_tick) impl_->animate(*c, impl_->tick, c->pool);
+}
+
+std::vector<glm::dvec3> ParticleWorld::lightning_points(ClusterHandle channel) const {
+  std::vector<glm::dvec3> out;
+  const Cluster* c = impl_->find(channel);
+  if (!c || c->def->animation != AnimationType::Lightning) return out;
+  const Pose f = impl_->frame(*c);
+  for (const glm::dvec3& p : c->lightning.points) out.push_back(f.position + f.orientation * p);
+  return out;
+}
+
+double ParticleWorld::lightning_length(ClusterHandle channel) const {
+  const Cluster* c = impl_->find(channel);
+  return c && c->def->animation == AnimationType::Lightning ? c->lightning.length() : 0.0;
+}
+
+void ParticleWorld::cut_lightning(ClusterHandle channel, double distance) {
+  Cluster* c = impl_->find(channel);
+  if (!c || c->def->animation != AnimationType::Lightning) return;
+  c->lightning.cut = std::isnan(distance) ? 0.0 : std::max(0.0, distance);
+  Impl::apply_cut(*c);
+}
+
+glm::dvec3 ParticleWorld::lightning_point_at(ClusterHandle channel, double distance) const {
+  const Cluster* c = impl_->find(channel);
+  if (!c || c->def->animation != AnimationType::Lightning) return glm::dvec3(0.0);
+  const Pose f = impl_->frame(*c);
+  return f.position + f.orientation * c->lightning.point_at(distance);
+}
+
+void ParticleWorld::step(uint64_t tick, const ParticleCamera& camera) {
+  Impl& w = *impl_;
+  for (uint64_t t = w.tick + 1; t <= tick; ++t)
+    for (Cluster& c : w.slots)
+      if (c.alive) w.advance(c, t);
+  w.tick = std::max(w.tick, tick);
+  w.skipped = 0;
+  for (Cluster& c : w.slots) {
+    if (!c.alive || w.tick < c.spawn_tick) continue;
+    w.update_bound(c, w.tick);
+    c.culled = c.intensity <= 0.0 || !w.visible(c, camera);
+    if (c.culled) {
+      ++w.skipped;
+      continue;
+    }
+    w.animate(c, w.tick, c.pool);
+    c.animated_tick = w.tick;
+  }
+}
+
+void ParticleWorld::collect(const ParticleCamera& camera, std::vector<ParticleInstance>& out) const {
+  const Impl& w = *impl_;
+  for (size_t slot = 0; slot < w.slots.size(); ++slot) {
+    const Cluster& c = w.slots[slot];
+    if (!c.alive || c.intensity <= 0.0 || w.tick < c.spawn_tick || c.pool.count() == 0) continue;
+    if (!w.visible(c, camera)) continue;
+    const ParticlePool* pool = &c.pool;
+    if (c.animated_tick != w.tick) {
+      w.scratch = c.pool;
+      w.animate(c, w.tick, w.scratch);
+      pool = &w.scratch;
+    }
+    const Pose f = w.frame(c);
+    const glm::vec3 offset(f.position - camera.position);
+    const glm::mat3 rot(glm::mat3_cast(f.orientation));
+    const ClusterDef& d = *c.def;
+    const bool lightning = d.animation == AnimationType::Lightning;
+    const float soft_extent = float(d.soft_extent * c.scale);
+    for (size_t i = 0; i < pool->count(); ++i) {
+      const float a = pool->a[i];
+      if ((pool->flags[i] & kParticleHidden) || !(a > 0.0f)) continue;
+      ParticleInstance p{};
+      const glm::vec3 pos = offset + rot * glm::vec3(pool->px[i], pool->py[i], pool->pz[i]);
+      p.pos[0] = pos.x, p.pos[1] = pos.y, p.pos[2] = pos.z;
+      p.size = std::max(pool->size[i], 1e-4f);
+      if (lightning) {
+        const glm::vec3 axis = rot * glm::vec3(pool->vx[i], pool->vy[i], pool->vz[i]);
+        p.axis[0] = axis.x, p.axis[1] = axis.y, p.axis[2] = axis.z;
+      }
+      p.rotation = pool->rotation[i];
+      p.color[0] = pool->r[i] * a, p.color[1] = pool->g[i] * a, p.color[2] = pool->b[i] * a, p.color[3] = a;
+      p.burn = std::clamp(pool->burn[i], 0.0f, 1.0f);
+      p.soft_extent = soft_extent;
+      p.sprite = pool->sprite[i];
+      p.soft_edge = uint8_t(d.soft_edge);
+      p.billboard = uint8_t(lightning ? Billboard::AxisLocked : Billboard::CameraFacing);
+      p.cluster = uint32_t(slot + 1);
+      out.push_back(p);
+    }
+  }
+}
+
+ParticleStats ParticleWorld::stats() const {
+  ParticleStats s;
+  s.live_particles = impl_->live_particles;
+  for (const Cluster& c : impl_->slots) s.live_clusters += c.alive ? 1u : 0u;
+  s.refused_particles = impl_->refused;
+  s.skipped_clusters = impl_->skipped;
+  return s;
+}
+
+void ParticleWorld::hash(StateHasher& h) const {
+  const Impl& w = *impl_;
+  h.add_u64(w.tick);
+  h.add_u64(w.next_serial);
+  h.add_u64(w.live_particles);
+  h.add_u64(w.refused);
+  h.add_u64(w.skipped);
+  for (const auto& [id, t] : w.owners) {
+    h.add_u64(id);
+    h.add_vec(t.position);
+    h.add_quat(t.orientation);
+    h.add_vec(t.velocity);
+  }
+  for (uint32_t s : w.free_slots) h.add_u64(s);
+  for (const Cluster& c : w.slots) {
+    h.add_u64(c.generation);
+    h.add_bool(c.alive);
+    if (!c.alive) continue;
+    h.add_u64(c.serial);
+    h.add_str(c.effect->name);
+    h.add_u64(c.def_index);
+    h.add_u64(c.spawn_tick);
+    h.add_u64(c.owner);
+    h.add_vec(c.local_position);
+    h.add_quat(c.local_orientation);
+    h.add_vec(c.world_origin);
+    h.add_vec(c.spawn_velocity);
+    h.add_vec(c.last_emit_position);
+    h.add_f64(c.scale);
+    h.add_f64(c.intensity);
+    h.add_i64(c.priority);
+    h.add_f64(c.emit_accumulator);
+    h.add_bool(c.emitting);
+    h.add_u64(c.next_uid);
+    h.add_vec(c.flash_direction);
+    h.add_u64(c.flash_tick);
+    h.add_u64(c.flash_ticks);
+    h.add_vec(c.lightning.origin);
+    h.add_vec(c.lightning.direction);
+    h.add_u64(c.lightning.points.size());
+    for (const glm::dvec3& p : c.lightning.points) h.add_vec(p);
+    h.add_u64(c.lightning.epoch);
+    h.add_f64(c.lightning.cut);
+    h.add_u64(c.animated_tick);
+    h.add_bool(c.culled);
+    h.add_vec(c.bound_center);
+    h.add_f64(c.bound_radius);
+    c.pool.hash(h);
+  }
+}
+
+uint64_t ParticleWorld::tick() const { return impl_->tick; }
+
+}  // namespace arc
