@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "core/json.h"
+#include "particles/effect_library.h"
 
 namespace arc {
 namespace {
@@ -94,7 +95,7 @@ ShipClassDef load_ship_class(const std::string& path, const std::string& name) {
   return c;
 }
 
-LevelDef parse_level_doc(std::shared_ptr<const JsonDoc> doc, const std::string& root_dir) {
+LevelDef parse_level_doc(std::shared_ptr<const JsonDoc> doc, const std::string& root_dir, const EffectLibrary* fx) {
   JsonObject r = root_of(doc);
   LevelDef L;
   L.path = doc->path();
@@ -171,7 +172,12 @@ LevelDef parse_level_doc(std::shared_ptr<const JsonDoc> doc, const std::string& 
   }
   for (JsonObject e : r.objects("effects")) {
     EffectSpawnDef d;
-    d.effect = e.require_string("effect");
+    JsonValue name = e.require("effect");
+    d.effect = name.string();
+    if (fx && !fx->has(d.effect)) {
+      std::vector<std::string> known = fx->names();
+      name.fail("unknown effect \"" + d.effect + "\"; known: " + join_allowed(known));
+    }
     d.label = e.string("label", "");
     d.position = e.vec3("position", glm::dvec3(0.0), -kSpace, kSpace);
     d.orientation_deg = orientation(e);
@@ -200,12 +206,13 @@ LevelDef parse_level_doc(std::shared_ptr<const JsonDoc> doc, const std::string& 
   return L;
 }
 
-LevelDef load_level_def(const std::string& path, const std::string& root_dir) {
-  return parse_level_doc(JsonDoc::load_file(path), root_dir);
+LevelDef load_level_def(const std::string& path, const std::string& root_dir, const EffectLibrary* effects) {
+  return parse_level_doc(JsonDoc::load_file(path), root_dir, effects);
 }
 
-LevelDef parse_level_def(const std::string& text, const std::string& path, const std::string& root_dir) {
-  return parse_level_doc(JsonDoc::parse(text, path), root_dir);
+LevelDef parse_level_def(const std::string& text, const std::string& path, const std::string& root_dir,
+                         const EffectLibrary* effects) {
+  return parse_level_doc(JsonDoc::parse(text, path), root_dir, effects);
 }
 
 }  // namespace arc

@@ -124,9 +124,13 @@ struct LevelDef {
   std::map<std::string, ShipClassDef> classes;  // every class the ships name, by name
 };
 
+class EffectLibrary;
+
 ShipClassDef load_ship_class(const std::string& path, const std::string& name);
-LevelDef load_level_def(const std::string& path, const std::string& root_dir);
+// With `effects`, every effect a level names must be in it (checked at its position).
+LevelDef load_level_def(const std::string& path, const std::string& root_dir, const EffectLibrary* effects = nullptr);
 // Parses level text (tests write levels in memory); `path` names it in messages.
-LevelDef parse_level_def(const std::string& text, const std::string& path, const std::string& root_dir);
+LevelDef parse_level_def(const std::string& text, const std::string& path, const std::string& root_dir,
+                         const EffectLibrary* effects = nullptr);
 
 }  // namespace arc

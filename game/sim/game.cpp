@@ -2,13 +2,13 @@
 
 #include <array>
 #include <bit>
-#include <cstdio>
 #include <cstring>
 #include <sstream>
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
 #include "core/hash.h"
+#include "game/sim/effects.h"
 #include "game/sim/simulation.h"
 #include "game/sim/world.h"
 
@@ -75,7 +75,8 @@ Game::~Game() = default;
 
 Game Game::load_level(const std::string& level_path, const GameOptions& options) {
   Game g;
-  init_world(*g.world_, load_level_def(level_path, options.root_dir), options);
+  std::shared_ptr<const EffectLibrary> fx = load_effect_library(options.root_dir);
+  init_world(*g.world_, load_level_def(level_path, options.root_dir, fx.get()), fx, options);
   return g;
 }
 

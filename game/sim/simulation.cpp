@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
 
@@ -704,7 +703,7 @@ void integrate_flight(Ship& s, double h) {
   s.position += s.velocity * h;
 }
 
-void init_world(World& w, LevelDef level, const GameOptions& o) {
+void init_world(World& w, LevelDef level, std::shared_ptr<const EffectLibrary> effects, const GameOptions& o) {
   w.options = o;
   w.level = std::move(level);
   w.seed = o.seed_override ? o.seed : w.level.seed;
@@ -717,7 +716,7 @@ void init_world(World& w, LevelDef level, const GameOptions& o) {
     w.model_paths.push_back(path);
     return static_cast<int>(w.model_paths.size() - 1);
   };
-  w.effects = load_effect_library(o.root_dir);
+  w.effects = std::move(effects);
   ParticleConfig pc;
   pc.seed = w.seed;
   pc.budget = o.particle_budget;

@@ -18,7 +18,7 @@ struct AiTuning {
 };
 AiTuning ai_tuning(int difficulty);
 
-void init_world(World& w, LevelDef level, const GameOptions& options);
+void init_world(World& w, LevelDef level, std::shared_ptr<const EffectLibrary> effects, const GameOptions& options);
 void step_world(World& w, const InputFrame& input, const std::vector<Command>& commands);
 
 // Flight for one ship and one tick from its `controls` (exposed for the flight tests).

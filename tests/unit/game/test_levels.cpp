@@ -5,6 +5,7 @@
 
 #include "core/error.h"
 #include "game/sim/defs.h"
+#include "game/sim/effects.h"
 #include "test_helpers.h"
 
 namespace arc {
@@ -182,17 +183,17 @@ TEST(LevelErrors, BadShipClassFileIsReportedInThatFile) {
   }
 }
 
-TEST(LevelErrors, UnknownEffectInALevelIsAnInputErrorNamingTheLevel) {
+TEST(LevelErrors, UnknownEffectIsReportedAtItsPosition) {
   std::string t = kGood;
   t.replace(t.find("\"ships\""), 0, "\"effects\": [{ \"effect\": \"no_such_effect\" }],\n  ");
-  std::string path = test::write_level("bad_effect.json", t);
+  auto fx = load_effect_library(kRoot);
   try {
-    Game g = Game::load_level(path, test::options());
-    g.step(InputFrame{});
+    parse_level_def(t, "bad.json", kRoot, fx.get());
     FAIL() << "no error";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()).rfind(path + ": ", 0), 0u) << e.what();
+    EXPECT_EQ(std::string(e.what()).rfind("bad.json:6:27: unknown effect \"no_such_effect\"", 0), 0u) << e.what();
   }
+  EXPECT_NO_THROW(parse_level_def(t, "bad.json", kRoot));  // without a library names are not checked
 }
 
 }  // namespace
