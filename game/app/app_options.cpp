@@ -87,6 +87,7 @@ std::optional<int> parse_command_line(int argc, char** argv, AppOptions& o) {
     return int(kExitBadInput);
   }
   o.vsync = !no_vsync;
+  o.game.root_dir = ARCFIRE_SOURCE_DIR;
   try {
     o.level = resolve_data_path(o.level, "--level");
     o.bindings_path = resolve_data_path(o.bindings_path, "--bindings");

@@ -1,0 +1,25 @@
+#include "game/app/scene_resources.h"
+
+#include <filesystem>
+#include <vector>
+
+#include "assets/model.h"
+#include "gfx/renderer.h"
+#include "game/sim/world.h"
+#include "particles/sprites.h"
+
+namespace arc {
+
+void load_scene_resources(Renderer& renderer, const World& world, const std::string& root_dir) {
+  namespace fs = std::filesystem;
+  auto resolve = [&](const std::string& p) {
+    return fs::path(p).is_absolute() ? p : (fs::path(root_dir) / p).string();
+  };
+  for (const std::string& path : world.model_paths) renderer.add_model(load_model(resolve(path)));
+  std::vector<Image> sprites;
+  for (std::string_view name : kSpriteNames)
+    sprites.push_back(load_sprite(resolve("assets/textures/sprite_" + std::string(name) + ".png")));
+  renderer.set_sprites(sprites);
+}
+
+}  // namespace arc
