@@ -87,6 +87,8 @@ std::optional<int> parse_command_line(int argc, char** argv, AppOptions& o) {
     return int(kExitBadInput);
   }
   o.vsync = !no_vsync;
+  o.level_given = app.get_option("--level")->count() > 0;
+  if (o.demo && !o.level_given) o.level = "levels/attract.json";
   o.game.root_dir = ARCFIRE_SOURCE_DIR;
   try {
     o.level = resolve_data_path(o.level, "--level");

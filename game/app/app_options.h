@@ -12,6 +12,7 @@ namespace arc {
 
 struct AppOptions {
   std::string level = "levels/duel.json";
+  bool level_given = false;  // --level was on the command line
   bool headless = false;
   bool demo = false;        // attract demo: AI vs AI frames and a contact sheet
   bool no_render = false;

@@ -10,6 +10,7 @@
 #include "game/app/contact_sheet.h"
 #include "game/app/frame_renderer.h"
 #include "game/sim/game.h"
+#include "game/sim/world.h"
 
 namespace arc {
 namespace {
@@ -31,12 +32,11 @@ void make_dir(const std::string& dir) {
 
 int run_headless(const AppOptions& o) {
   const bool demo = o.demo;
-  std::string level = o.level;
-  if (demo && level == AppOptions{}.level) level = "levels/attract.json";
+  const std::string& level = o.level;
   std::string out = o.out_dir;
   if (demo && out.empty()) out = "out/demo";
   int64_t ticks = o.ticks > 0 ? o.ticks : (demo ? 3600 : 600);
-  int64_t every = o.every > 0 ? o.every : (demo ? 120 : 30);
+  int64_t every = o.every > 0 ? o.every : (demo ? 60 : 30);
   const bool render = !o.no_render && !out.empty();
 
   Game game = Game::load_level(level, o.game);
@@ -51,7 +51,11 @@ int run_headless(const AppOptions& o) {
 
   std::vector<Image> frames;
   std::vector<std::string> written;
+  // The demo ends two seconds after the battle is decided, so the sheet shows the fight.
+  int64_t demo_end = -1;
   for (int64_t t = 1; t <= ticks; ++t) {
+    if (demo && demo_end < 0 && game.world().outcome != Outcome::Undecided) demo_end = t + 120;
+    if (t == demo_end) ticks = t;
     game.step(InputFrame{});
     if (renderer && t % every == 0) {
       Image img = renderer->render(game);
