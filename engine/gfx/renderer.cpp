@@ -874,4 +874,6 @@ void Renderer::draw_fill_reference(int count) {
   m.draw_hud(layer, m.scene_w, m.scene_h);
 }
 
+void Renderer::finish() { glFinish(); }
+
 }  // namespace arc

@@ -93,6 +93,8 @@ class Renderer {
   // For the benchmark's raw fill-rate reference: draws `count` full-screen quads with the
   // particle blend state into the scene buffer of the last frame's size.
   void draw_fill_reference(int count);
+  // Blocks until the GPU has finished all submitted work (glFinish), for timing.
+  void finish();
 
  private:
   struct Impl;
