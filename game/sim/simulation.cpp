@@ -765,7 +765,8 @@ void init_world(World& w, LevelDef level, std::shared_ptr<const EffectLibrary> e
       SpawnParams sp;
       sp.owner = ship_owner(s.id);
       sp.scale = s.cls->shield_radius / 10.0;
-      sp.intensity = 0.0;
+      // Spawned at full intensity: the burst's particle count is scaled by the intensity of the
+      // first particle step, after which update_shields_and_energy() dims it to what it shows.
       if (s.cls->shield > 0) s.shield_fx = spawn_fx(w, kFxShieldSphere, sp);
       for (const glm::dvec3& e : s.cls->exhausts) {
         SpawnParams ep;
@@ -777,8 +778,6 @@ void init_world(World& w, LevelDef level, std::shared_ptr<const EffectLibrary> e
         s.exhaust_fx.push_back(spawn_fx(w, kFxEngineExhaust, ep));
       }
     }
-    for (Ship& s : w.ships)
-      for (ClusterHandle ch : s.shield_fx.clusters) w.particles->set_intensity(ch, 0.0);
   } catch (const InputError& e) {
     throw InputError(w.level.path + ": " + e.what());
   }
@@ -818,8 +817,9 @@ void step_world(World& w, const InputFrame& input, const std::vector<Command>& c
       throw InputError(w.level.path + ": " + e.what());
     }
   }
-  update_exhausts(w);
   w.particles->step(static_cast<uint64_t>(w.tick), particle_camera(w));
+  // After the step, so a new exhaust's one-off nozzle burst is emitted at full intensity.
+  update_exhausts(w);
   resolve_beams(w);
   hit_projectiles(w);
   resolve_deaths(w);
