@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <string>
 #include <vector>
+#include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>
 
 #include "particles/curves.h"
@@ -28,7 +29,8 @@ struct EmitterDef {
   EmitterShape shape = EmitterShape::Point;
   glm::dvec3 offset{0.0};          // emitter centre in the effect frame
   double radius = 0.0;             // sphere, sphere_surface, cone base disc
-  double angle = 0.0;              // cone half-angle around −Z (radians)
+  double angle = 0.0;              // cone half-angle around the axis (radians)
+  glm::dquat axis_rotation{1, 0, 0, 0};  // turns −Z onto the emitter's axis (cone, "forward")
   glm::dvec3 half_extents{0.0};    // box
   double length = 0.0;             // line along −Z from the centre
   std::vector<glm::dvec3> triangles;  // mesh: 3 vertices per triangle

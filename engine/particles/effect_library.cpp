@@ -14,6 +14,15 @@ namespace {
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 constexpr double kBig = 1e6;
 
+// The shortest rotation taking −Z onto the unit vector `to`.
+glm::dquat rotation_from_forward(const glm::dvec3& to) {
+  const glm::dvec3 from(0, 0, -1);
+  const double d = from.x * to.x + from.y * to.y + from.z * to.z;
+  if (d < -1.0 + 1e-12) return glm::dquat(0, 1, 0, 0);  // half turn about X
+  const glm::dvec3 c(from.y * to.z - from.z * to.y, from.z * to.x - from.x * to.z, from.x * to.y - from.y * to.x);
+  return glm::normalize(glm::dquat(1.0 + d, c.x, c.y, c.z));
+}
+
 // A distribution: a number (constant) or [min, max] with min ≤ max.
 Range read_range(JsonObject& o, const std::string& key, Range fallback, double lo, double hi, double unit = 1.0) {
   auto v = o.get(key);
@@ -32,6 +41,13 @@ Range read_range(JsonObject& o, const std::string& key, Range fallback, double l
 
 // [[t, value], ...] with t in [0, 1] increasing, or a single number.
 std::vector<CurveKey> read_keys(const JsonValue& v, double lo, double hi, int component) {
+  const std::string curve = v.name();
+  auto checked = [&](const JsonValue& x, double value) {
+    if (value < lo || value > hi)
+      x.fail("'" + curve + "' values must be in [" + std::to_string(lo).substr(0, std::to_string(lo).find('.')) + ", " +
+             std::to_string(hi).substr(0, std::to_string(hi).find('.')) + "], got " + x.raw().dump());
+    return value;
+  };
   if (v.is_number() && component < 0) return {{0.0f, float(v.number(lo, hi))}};
   if (!v.is_array() || v.raw().empty())
     v.fail("'" + v.name() + "' must be a number or a non-empty array of [t, value] keyframes");
@@ -42,7 +58,14 @@ std::vector<CurveKey> read_keys(const JsonValue& v, double lo, double hi, int co
     std::vector<JsonValue> tv = k.array();
     float t = float(tv[0].number(0.0, 1.0));
     if (!keys.empty() && t < keys.back().t) tv[0].fail("keyframe times must not decrease");
-    const double value = component < 0 ? tv[1].number(lo, hi) : tv[1].vec3(lo, hi)[component];
+    double value;
+    if (component < 0) {
+      value = checked(tv[1], tv[1].number(-1e300, 1e300));
+    } else {
+      const glm::dvec3 rgb = tv[1].vec3(-1e300, 1e300);
+      for (int c = 0; c < 3; ++c) checked(tv[1].array()[size_t(c)], rgb[c]);
+      value = rgb[component];
+    }
     keys.push_back({t, float(value)});
   }
   return keys;
@@ -75,6 +98,12 @@ void read_emitter(JsonObject o, ClusterDef& c) {
             : shape == "line" ? EmitterShape::Line
                               : EmitterShape::Mesh;
   e.offset = o.vec3("offset", glm::dvec3(0.0), -kBig, kBig);
+  if (auto axis = o.get("axis")) {
+    const glm::dvec3 a = axis->vec3(-1.0, 1.0);
+    const double l = std::sqrt(a.x * a.x + a.y * a.y + a.z * a.z);
+    if (l < 1e-6) axis->fail("'axis' must be a non-zero direction [x, y, z]");
+    e.axis_rotation = rotation_from_forward(a / l);
+  }
   const bool needs_radius = e.shape == EmitterShape::Sphere || e.shape == EmitterShape::SphereSurface;
   e.radius = needs_radius ? o.require_number("radius", 0.0, kBig) : o.number("radius", 0.0, 0.0, kBig);
   if (e.shape == EmitterShape::Cone) e.angle = o.require_number("angle_deg", 0.0, 180.0) * kDeg;

@@ -44,7 +44,7 @@ EmitSample sample_emitter(const EmitterDef& e, const Rng& rng, uint64_t base) {
       break;
     case EmitterShape::Cone: {
       const double r = e.radius * std::sqrt(u(2)), a = kTwoPi * u(3);
-      s.position = e.offset + glm::dvec3(r * std::cos(a), r * std::sin(a), 0.0);
+      s.position = e.offset + e.axis_rotation * glm::dvec3(r * std::cos(a), r * std::sin(a), 0.0);
       outward = cone_direction(e.angle, u(4), u(5));
       break;
     }
@@ -76,6 +76,8 @@ EmitSample sample_emitter(const EmitterDef& e, const Rng& rng, uint64_t base) {
     case EmitDirection::Random: s.direction = uniform_direction(u(6), u(7)); break;
     case EmitDirection::Forward: s.direction = {0.0, 0.0, -1.0}; break;
   }
+  // Cone and forward directions are sampled around −Z, then turned onto the emitter's axis.
+  if (e.shape == EmitterShape::Cone || e.direction == EmitDirection::Forward) s.direction = e.axis_rotation * s.direction;
   return s;
 }
 

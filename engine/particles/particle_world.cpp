@@ -311,8 +311,10 @@ struct ParticleWorld::Impl {
       return;
     }
     if (d.animation == AnimationType::Lightning) {
-      c.bound_center = c.lightning.origin;
-      c.bound_radius = d.lightning.max_length * c.scale + margin;
+      glm::dvec3 lo = c.lightning.points.front(), hi = lo;
+      for (const glm::dvec3& q : c.lightning.points) lo = glm::min(lo, q), hi = glm::max(hi, q);
+      c.bound_center = (lo + hi) * 0.5;
+      c.bound_radius = length(hi - lo) * 0.5 + margin;
       return;
     }
     const ParticlePool& p = c.pool;
