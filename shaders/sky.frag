@@ -19,10 +19,10 @@ float noise3(vec3 p) {
 void main() {
   vec3 d = normalize(u_cam_basis * vec3(v_ndc * u_tan_half, -1.0));
   float n = 0.55 * noise3(d * 3.0) + 0.3 * noise3(d * 7.0) + 0.15 * noise3(d * 15.0);
-  float a = pow(max(dot(d, u_lobe_a), 0.0), 3.0);
-  float b = pow(max(dot(d, u_lobe_b), 0.0), 4.0);
-  vec3 c = vec3(0.004, 0.005, 0.010);
-  c += a * n * vec3(0.07, 0.025, 0.09);
-  c += b * n * vec3(0.015, 0.05, 0.08);
+  float a = pow(max(dot(d, u_lobe_a) * 0.5 + 0.5, 0.0), 4.0);
+  float b = pow(max(dot(d, u_lobe_b) * 0.5 + 0.5, 0.0), 5.0);
+  vec3 c = vec3(0.006, 0.007, 0.014);
+  c += a * n * n * vec3(0.16, 0.05, 0.20);
+  c += b * n * n * vec3(0.03, 0.11, 0.17);
   o_color = vec4(c, 1.0);
 }

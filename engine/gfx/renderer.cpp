@@ -512,12 +512,12 @@ void Renderer::Impl::build_stars(uint64_t seed) {
   for (int i = 0; i < n; ++i) {
     glm::dvec3 d = r.unit_vector(uint64_t(i));
     double u = r.uniform(uint64_t(n) * 4 + i);
-    double bright = 0.08 + 0.9 * std::pow(u, 6.0);
+    double bright = 0.2 + 0.8 * std::pow(u, 5.0);
     double t = r.uniform(uint64_t(n) * 5 + i);
     glm::dvec3 tint = t < 0.2 ? glm::dvec3(1.0, 0.75, 0.6) : t < 0.55 ? glm::dvec3(1.0, 0.95, 0.88)
                                                           : t < 0.85 ? glm::dvec3(0.9, 0.95, 1.0)
                                                                      : glm::dvec3(0.7, 0.82, 1.0);
-    float size = float(1.5 + 3.0 * std::pow(u, 4.0));
+    float size = float(2.0 + 3.0 * std::pow(u, 4.0));
     glm::vec3 c = glm::vec3(tint * bright * 1.6);
     data.insert(data.end(), {float(d.x), float(d.y), float(d.z), size, c.r, c.g, c.b});
   }

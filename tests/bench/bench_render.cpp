@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <string>
 #include <memory>
 
 #include <glm/gtc/quaternion.hpp>
@@ -148,6 +150,10 @@ ARCFIRE_SCENE(render_particle_gallery) {
   for (auto& p : alpha_only.particles) p.burn = 0.0f;
 
   RenderSettings base;
+  if (const char* dir = std::getenv("ARCFIRE_GFX_DUMP")) {
+    r.render(view, kWidth, kHeight);
+    save_image(std::string(dir) + "/bench_gallery.png", r.read_pixels());
+  }
   const int frames = 6, rounds = 3;
   const char* names[] = {"off", "linear", "contrast", "average_density", "density_extent"};
   double best[5] = {1e30, 1e30, 1e30, 1e30, 1e30};

@@ -346,6 +346,32 @@ TEST(Renderer, AppliesQualitySettings) {
   EXPECT_EQ(r->render_settings().soft_override, -1);
 }
 
+TEST(Renderer, StarfieldIsSeededAndVaried) {
+  REQUIRE_CONTEXT();
+  auto r = make_renderer();
+  RenderView v = base_view();
+  v.camera.orientation = glm::angleAxis(0.4, glm::normalize(glm::dvec3(0.3, 1, 0.1)));
+  r->render(v, 480, 270);
+  Image a = r->read_pixels();
+  r->render(v, 480, 270);
+  Image again = r->read_pixels();
+  v.starfield_seed = 8;
+  r->render(v, 480, 270);
+  Image other = r->read_pixels();
+  test::dump_if_asked("starfield", a);
+  EXPECT_EQ(compare_images(a, again).max_diff, 0);
+  EXPECT_FALSE(compare_images(a, other).passed);
+  int faint = 0, bright = 0;
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x) {
+      float l = channel(a, x, y, 0) + channel(a, x, y, 1) + channel(a, x, y, 2);
+      faint += l > 0.15f && l < 0.8f;
+      bright += l >= 0.8f;
+    }
+  EXPECT_GT(faint, 20);
+  EXPECT_GT(bright, 3);
+}
+
 TEST(RadixSort, BackToFrontAndStable) {
   std::vector<uint32_t> keys = {5, 0x80000000u, 5, 7, 0, 0xFFFFFFFFu, 300, 70000};
   std::vector<uint32_t> order;
