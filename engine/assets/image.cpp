@@ -69,9 +69,11 @@ Image load_image(const std::string& path) {
 
 Image decode_image_memory(const uint8_t* data, size_t size, const std::string& name) {
   OIIO::Filesystem::IOMemReader reader(const_cast<uint8_t*>(data), size);
-  // The format is found from the name's extension or, failing that, by probing each reader.
-  auto in = OIIO::ImageInput::open(name, &raw_alpha_config(), &reader);
-  if (!in) throw InputError(name + ": not a readable embedded image: " + OIIO::geterror());
+  // The reader is chosen by the name's extension; the bytes come from the proxy, never a file.
+  auto in = OIIO::ImageInput::create(name, false, &raw_alpha_config(), &reader);
+  OIIO::ImageSpec spec;
+  if (!in || !in->set_ioproxy(&reader) || !in->open(name, spec, raw_alpha_config()))
+    throw InputError(name + ": not a readable embedded image: " + (in ? in->geterror() : OIIO::geterror()));
   Image img = read_rgba8(*in, name);
   in->close();
   return img;

@@ -125,16 +125,18 @@ struct Flare {
     }
   }
 
-  void grow(const Rng& rng, uint64_t key, glm::dvec2 from, double angle, double length, double width, int depth) {
-    const int steps = 6;
+  // Lightning zig-zags around a straight heading instead of drifting, which keeps rays jagged.
+  void grow(const Rng& rng, uint64_t key, glm::dvec2 from, double heading, double length, double width, int depth) {
+    const int steps = 7;
     glm::dvec2 at = from;
     for (int s = 0; s < steps; ++s) {
-      angle += rng.range(key * 16u + uint64_t(s) + 1000u, -0.55, 0.55);
-      const glm::dvec2 next = at + glm::dvec2(std::cos(angle), std::sin(angle)) * (length / steps);
+      const double kink = heading + rng.range(key * 16u + uint64_t(s) + 1000u, -0.8, 0.8);
+      const glm::dvec2 next = at + glm::dvec2(std::cos(kink), std::sin(kink)) * (length / steps);
       segments.push_back({at, next});
-      widths.push_back(width * (1.0 - 0.75 * double(s) / steps));
-      if (depth == 0 && s == 2 && rng.uniform(key * 16u + 5000u) < 0.7)
-        grow(rng, key * 16u + 9u, next, angle + rng.range(key + 7000u, -0.9, 0.9), length * 0.4, width * 0.5, 1);
+      widths.push_back(width * (1.0 - 0.7 * double(s) / steps));
+      if (depth == 0 && (s == 2 || s == 4) && rng.uniform(key * 16u + uint64_t(s) + 5000u) < 0.6)
+        grow(rng, key * 16u + uint64_t(s) + 9u, next, heading + rng.range(key * 16u + uint64_t(s) + 7000u, -1.0, 1.0),
+             length * 0.35, width * 0.55, 1);
       at = next;
     }
   }

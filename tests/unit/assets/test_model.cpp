@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 #include "assets/model.h"
+#include "core/error.h"
 #include "test_util.h"
 
 namespace arc {
@@ -199,6 +200,40 @@ TEST(HandMadeGltf, MirroringTransformKeepsFrontFacesOutward) {
     const glm::vec3 a = p.positions[p.indices[t]], b = p.positions[p.indices[t + 1]], c = p.positions[p.indices[t + 2]];
     const glm::vec3 winding = glm::normalize(glm::cross(b - a, c - a));
     expect_vec3(winding, p.normals[p.indices[t]]);
+  }
+}
+
+// Textures go through the same OpenImageIO decoder as every other image.
+TEST(HandMadeGltf, ReadsBaseColourAndEmissiveTextures) {
+  const auto dir = test::scratch_dir();
+  test::write_bytes(dir / "quad.bin", quad_buffer());
+  Image tex;
+  tex.width = 2;
+  tex.height = 1;
+  tex.rgba = {255, 0, 0, 255, 10, 20, 30, 40};
+  save_image((dir / "tex.png").string(), tex);
+  std::string text = kHandMadeGltf;
+  const std::string from = R"("emissiveFactor": [1, 0.5, 0]}],)";
+  text.replace(text.find(from), from.size(),
+               R"("emissiveFactor": [1, 0.5, 0], "emissiveTexture": {"index": 1}}],
+                  "textures": [{"source": 0}, {"source": 0}], "images": [{"uri": "tex.png"}],)");
+  const std::string base = R"("baseColorFactor": [0.5, 0.25, 1, 1])";
+  text.replace(text.find(base), base.size(), base + R"(, "baseColorTexture": {"index": 0})");
+  test::write_bytes(dir / "textured.gltf", text);
+  const ModelData m = load_model((dir / "textured.gltf").string());
+  ASSERT_EQ(m.images.size(), 1u);
+  EXPECT_EQ(m.images[0].width, 2);
+  EXPECT_EQ(m.images[0].height, 1);
+  EXPECT_EQ(m.images[0].rgba, tex.rgba);
+  EXPECT_EQ(m.materials[0].base_color_image, 0);
+  EXPECT_EQ(m.materials[0].emissive_image, 0);
+
+  test::write_bytes(dir / "tex.png", "\x89PNG\r\n\x1a\n truncated");
+  try {
+    load_model((dir / "textured.gltf").string());
+    FAIL() << "a broken texture loaded";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind((dir / "textured.gltf").string() + ": ", 0), 0u) << e.what();
   }
 }
 
