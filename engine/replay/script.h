@@ -104,6 +104,7 @@ struct Expectation {
   Kind kind = Kind::Alive;
   std::string ship;   // Alive .. Distance
   std::string other;  // Distance: the second ship
+  int ship_col = 0, other_col = 0;  // where the names are written, for "no such ship" errors
   std::string team;   // Winner: a team name, or "none" while undecided
   Range range;        // Hull, Shield, Distance, Particles
   std::array<Range, 3> box{};  // Position: x, y, z

@@ -169,6 +169,12 @@ void parse_header_line(LineParser& lp, Header& h, std::vector<std::string>& seen
   lp.done(key.text);
 }
 
+void take_ship(LineParser& lp, std::string& name, int& col, const std::string& what) {
+  const Token& t = lp.take(what);
+  name = t.text;
+  col = t.col;
+}
+
 Expectation parse_expect(LineParser& lp, uint64_t tick) {
   Expectation e;
   e.tick = tick;
@@ -176,21 +182,21 @@ Expectation parse_expect(LineParser& lp, uint64_t tick) {
   const std::string& w = what.text;
   if (w == "alive" || w == "destroyed") {
     e.kind = w == "alive" ? Expectation::Kind::Alive : Expectation::Kind::Destroyed;
-    e.ship = lp.take("ship name").text;
+    take_ship(lp, e.ship, e.ship_col, "ship name");
   } else if (w == "hull" || w == "shield") {
     e.kind = w == "hull" ? Expectation::Kind::Hull : Expectation::Kind::Shield;
-    e.ship = lp.take("ship name").text;
+    take_ship(lp, e.ship, e.ship_col, "ship name");
     e.range = range(lp, w);
   } else if (w == "position") {
     e.kind = Expectation::Kind::Position;
-    e.ship = lp.take("ship name").text;
+    take_ship(lp, e.ship, e.ship_col, "ship name");
     e.box[0] = range(lp, "x");
     e.box[1] = range(lp, "y");
     e.box[2] = range(lp, "z");
   } else if (w == "distance") {
     e.kind = Expectation::Kind::Distance;
-    e.ship = lp.take("first ship name").text;
-    e.other = lp.take("second ship name").text;
+    take_ship(lp, e.ship, e.ship_col, "first ship name");
+    take_ship(lp, e.other, e.other_col, "second ship name");
     e.range = range(lp, "distance");
   } else if (w == "particles") {
     e.kind = Expectation::Kind::Particles;

@@ -122,7 +122,10 @@ bool Script::same_content(const Script& o) const {
     s.end_src = {};
     for (auto& e : s.inputs) e.src = {};
     for (auto& e : s.commands) e.src = {};
-    for (auto& e : s.expectations) e.src = {};
+    for (auto& e : s.expectations) {
+      e.src = {};
+      e.ship_col = e.other_col = 0;
+    }
     for (auto& e : s.hashes) e.src = {};
     for (auto& e : s.snapshots) e.src = {};
     return s;

@@ -88,16 +88,14 @@ const Ship* find_ship(const World& w, const std::string& name) {
 void check_names(const replay::Script& s, const World& w) {
   std::vector<std::string> names;
   for (const Ship& sh : w.ships) names.push_back("'" + sh.name + "'");
-  auto require = [&](const Expectation& e, const std::string& name) {
+  auto require = [&](const Expectation& e, const std::string& name, int col) {
     if (name.empty() || find_ship(w, name)) return;
-    size_t col = e.src.text.find(name);
-    throw InputError(s.path + ":" + std::to_string(e.src.line) + ":" +
-                     std::to_string(col == std::string::npos ? 1 : col + 1) + ": no ship named '" + name +
+    throw InputError(s.path + ":" + std::to_string(e.src.line) + ":" + std::to_string(col) + ": no ship named '" + name +
                      "' in level " + w.level.name + "; ships: " + join_allowed(names));
   };
   for (const Expectation& e : s.expectations) {
-    require(e, e.ship);
-    require(e, e.other);
+    require(e, e.ship, e.ship_col);
+    require(e, e.other, e.other_col);
   }
   if (s.header.tick_rate && std::lround(1.0 / w.dt) != *s.header.tick_rate)
     throw InputError(s.path + ": header tick_rate " + std::to_string(*s.header.tick_rate) +
@@ -184,10 +182,28 @@ class ProgressBar {
   int shown_ = -1;
 };
 
+// Feeds a script's held input and commands to a Game, one step at a time.
+struct ScriptFeeder {
+  explicit ScriptFeeder(const replay::Script& s) : script(&s) {}
+  const replay::Script* script;
+  size_t next_input = 0, next_command = 0;
+  replay::InputState held;
+
+  void step(Game& game, uint64_t t) {
+    for (; next_input < script->inputs.size() && script->inputs[next_input].tick == t; ++next_input)
+      replay::apply_input(held, script->inputs[next_input]);
+    std::vector<Command> commands;
+    for (; next_command < script->commands.size() && script->commands[next_command].tick == t; ++next_command)
+      commands.push_back(static_cast<Command>(script->commands[next_command].command));
+    game.step(to_input_frame(held), commands);
+  }
+};
+
 struct Player {
   const ReplayRunOptions& opt;
   replay::Script script;
   std::string level_path;
+  GameOptions game_options;
   Game game;
   std::unique_ptr<FrameRenderer> renderer;
   std::string golden_dir, out_dir;
@@ -195,7 +211,7 @@ struct Player {
   replay::HashLog log;
   std::vector<uint64_t> hash_values;  // per script hash line, for --update-golden
   ReplayOutcome result;
-  bool diverged = false;
+  bool divergence_reported = false;
   uint64_t last_matching_hash_tick = 0;
 
   void fail(uint64_t tick, const replay::SourceLine& src, const std::string& why) {
@@ -208,23 +224,49 @@ struct Player {
       std::printf("ok   %s:%d: tick %llu: %s\n", script.path.c_str(), src.line, static_cast<unsigned long long>(tick),
                   trimmed(src.text).c_str());
   }
+  std::string log_path() const { return (fs::path(golden_dir) / "hashes.txt").string(); }
 
-  void check_log(uint64_t t, uint64_t h, std::optional<uint64_t> full) {
-    if (!golden_log || diverged || t >= golden_log->hashes.size()) return;
+  // Hashing every tick costs more than simulating, so a normal run compares with the golden
+  // log only every full_hash_every ticks; after a mismatch a second run from tick 0 hashes
+  // every tick up to it to find the first one that diverged, and dumps the state there.
+  void report_divergence(uint64_t mismatch_tick) {
+    if (divergence_reported) return;
+    divergence_reported = true;
+    if (!golden_log) {
+      std::printf("  no golden hash log (%s): the first diverging tick is after tick %llu; state at tick %llu:\n%s",
+                  log_path().c_str(), static_cast<unsigned long long>(last_matching_hash_tick),
+                  static_cast<unsigned long long>(mismatch_tick), game.state_dump().c_str());
+      return;
+    }
+    Game again = Game::load_level(level_path, game_options);
+    ScriptFeeder feed(script);
+    for (uint64_t t = 0; t <= mismatch_tick && t < golden_log->hashes.size(); ++t) {
+      const uint64_t h = again.hash();
+      if (h != golden_log->hashes[t]) {
+        std::printf("  first diverging tick %llu: state hash %s, golden log %s says %s; state at tick %llu:\n%s",
+                    static_cast<unsigned long long>(t), replay::hex64(h).c_str(), log_path().c_str(),
+                    replay::hex64(golden_log->hashes[t]).c_str(), static_cast<unsigned long long>(t),
+                    again.state_dump().c_str());
+        return;
+      }
+      feed.step(again, t);
+    }
+    std::printf("  every tick up to %llu matches the golden log's cheap hash; the full state (particles) diverged "
+                "first; state at tick %llu:\n%s",
+                static_cast<unsigned long long>(mismatch_tick), static_cast<unsigned long long>(mismatch_tick),
+                game.state_dump().c_str());
+  }
+
+  void check_log(uint64_t t, uint64_t cheap, uint64_t full) {
+    if (!golden_log || divergence_reported || t >= golden_log->hashes.size()) return;
     std::optional<uint64_t> want_full;
     for (const auto& [ft, fv] : golden_log->full)
       if (ft == t) want_full = fv;
-    bool cheap_bad = golden_log->hashes[t] != h;
-    bool full_bad = want_full && full && *want_full != *full;
-    if (!cheap_bad && !full_bad) return;
-    diverged = true;
+    if (golden_log->hashes[t] == cheap && (!want_full || *want_full == full)) return;
     ++result.failures;
-    std::printf("FAIL %s: first diverging tick %llu: %s hash %s, expected %s (golden log %s)\n", script.path.c_str(),
-                static_cast<unsigned long long>(t), cheap_bad ? "state" : "full state",
-                replay::hex64(cheap_bad ? h : *full).c_str(),
-                replay::hex64(cheap_bad ? golden_log->hashes[t] : *want_full).c_str(),
-                (fs::path(golden_dir) / "hashes.txt").c_str());
-    std::printf("state at tick %llu:\n%s", static_cast<unsigned long long>(t), game.state_dump().c_str());
+    std::printf("FAIL %s: tick %llu: state differs from the golden hash log %s\n", script.path.c_str(),
+                static_cast<unsigned long long>(t), log_path().c_str());
+    report_divergence(t);
   }
 
   void check_hash(size_t i, uint64_t t, uint64_t cheap, uint64_t full) {
@@ -243,10 +285,7 @@ struct Player {
       return;
     }
     fail(t, c.src, "hash is " + replay::hex64(actual));
-    if (!golden_log)
-      std::printf("  no golden hash log (%s): the first diverging tick is after tick %llu; state at tick %llu:\n%s",
-                  (fs::path(golden_dir) / "hashes.txt").c_str(), static_cast<unsigned long long>(last_matching_hash_tick),
-                  static_cast<unsigned long long>(t), game.state_dump().c_str());
+    report_divergence(t);
   }
 
   void check_snapshot(const replay::SnapshotCheck& s, uint64_t t) {
@@ -281,19 +320,24 @@ struct Player {
 
   void run() {
     const uint64_t last = script.last_tick();
-    size_t ii = 0, ci = 0, ei = 0, hi = 0, si = 0;
-    replay::InputState held;
+    const uint64_t every = uint64_t(std::max(opt.full_hash_every, 1));
+    size_t ei = 0, hi = 0, si = 0;
+    ScriptFeeder feed(script);
     ProgressBar bar(last, !opt.quiet);
     for (uint64_t t = 0;; ++t) {
-      const uint64_t cheap = game.hash();
-      log.hashes.push_back(cheap);
-      std::optional<uint64_t> full;
-      const bool full_due = opt.full_hash_every > 0 && t % uint64_t(opt.full_hash_every) == 0;
-      const bool full_checked = hi < script.hashes.size() && script.hashes[hi].tick == t;
-      if (full_due || full_checked) full = game.full_hash();
-      if (full_due) log.full.emplace_back(t, *full);
-      check_log(t, cheap, full_due ? full : std::nullopt);
-      for (; hi < script.hashes.size() && script.hashes[hi].tick == t; ++hi) check_hash(hi, t, cheap, *full);
+      const bool hash_line = hi < script.hashes.size() && script.hashes[hi].tick == t;
+      const bool checkpoint = t % every == 0 || t == last;
+      if (opt.update_golden || hash_line || (golden_log && checkpoint)) {
+        const uint64_t cheap = game.hash();
+        const uint64_t full = hash_line || checkpoint ? game.full_hash() : 0;
+        if (opt.update_golden) {
+          log.hashes.push_back(cheap);
+          if (t % every == 0) log.full.emplace_back(t, full);
+        } else if (checkpoint) {
+          check_log(t, cheap, full);
+        }
+        for (; hi < script.hashes.size() && script.hashes[hi].tick == t; ++hi) check_hash(hi, t, cheap, full);
+      }
       for (; ei < script.expectations.size() && script.expectations[ei].tick == t; ++ei) {
         const Expectation& e = script.expectations[ei];
         ++result.checks;
@@ -302,11 +346,7 @@ struct Player {
       }
       for (; si < script.snapshots.size() && script.snapshots[si].tick == t; ++si) check_snapshot(script.snapshots[si], t);
       if (t >= last) break;
-      for (; ii < script.inputs.size() && script.inputs[ii].tick == t; ++ii) replay::apply_input(held, script.inputs[ii]);
-      std::vector<Command> commands;
-      for (; ci < script.commands.size() && script.commands[ci].tick == t; ++ci)
-        commands.push_back(static_cast<Command>(script.commands[ci].command));
-      game.step(to_input_frame(held), commands);
+      feed.step(game, t);
       if (renderer && opt.render_every > 0 && (t + 1) % uint64_t(opt.render_every) == 0) {
         renderer->render(game);
         ++result.frames_rendered;
@@ -319,11 +359,11 @@ struct Player {
 
   void update_golden(const std::string& original_text) {
     make_dir(golden_dir, "golden folder");
-    write_file_atomic((fs::path(golden_dir) / "hashes.txt").string(), replay::write_hash_log(log));
+    write_file_atomic(log_path(), replay::write_hash_log(log));
     std::string filled = replay::fill_hash_values(original_text, script, hash_values);
     if (filled != original_text) write_file_atomic(script.path, filled);
     std::printf("updated %zu hash lines in %s and the hash log %s\n", script.hashes.size(), script.path.c_str(),
-                (fs::path(golden_dir) / "hashes.txt").c_str());
+                log_path().c_str());
   }
 };
 
@@ -334,7 +374,8 @@ ReplayOutcome play_replay(const ReplayRunOptions& opt) {
   replay::Script script = replay::parse_script(text, opt.script_path);
   const std::string level_path = resolve_level(script, opt.game.root_dir == "." ? ARCFIRE_SOURCE_DIR : opt.game.root_dir);
   GameOptions game_options = script_game_options(script, opt.game);
-  Player p{opt, script, level_path, Game::load_level(level_path, game_options), nullptr, "", "", std::nullopt, {}, {}, {}};
+  Player p{opt,    script, level_path, game_options, Game::load_level(level_path, game_options), nullptr, "", "",
+           std::nullopt, {}, {}, {}};
   check_names(p.script, p.game.world());
   const std::string stem = fs::path(opt.script_path).stem().string();
   p.golden_dir = !opt.golden_dir.empty() ? opt.golden_dir
@@ -384,8 +425,8 @@ int run_serialization_test(const SerializationTestOptions& opt) {
   Game original = Game::load_level(level, game_options);
   std::optional<Game> restored;
   uint64_t restored_at = 0;
-  size_t ii = 0, ci = 0;
-  replay::InputState held;
+  const replay::Script no_script;
+  ScriptFeeder feed_original(script ? *script : no_script), feed_restored = feed_original;
   auto diverged = [&](uint64_t t, const char* which, uint64_t a, uint64_t b) {
     std::printf("FAIL serialization test: first diverging tick %llu (restored from a save at tick %llu): %s %s, "
                 "restored %s\n",
@@ -399,6 +440,7 @@ int run_serialization_test(const SerializationTestOptions& opt) {
   for (uint64_t t = 0;; ++t) {
     if (t > 0 && t % uint64_t(opt.every) == 0) {
       restored = Game::restore(original.save(), level, game_options);
+      feed_restored = feed_original;
       restored_at = t;
       ++saves;
     }
@@ -409,15 +451,8 @@ int run_serialization_test(const SerializationTestOptions& opt) {
           return diverged(t, "full hash", original.full_hash(), restored->full_hash());
     }
     if (t >= last) break;
-    std::vector<Command> commands;
-    if (script) {
-      for (; ii < script->inputs.size() && script->inputs[ii].tick == t; ++ii) replay::apply_input(held, script->inputs[ii]);
-      for (; ci < script->commands.size() && script->commands[ci].tick == t; ++ci)
-        commands.push_back(static_cast<Command>(script->commands[ci].command));
-    }
-    const InputFrame frame = to_input_frame(held);
-    original.step(frame, commands);
-    if (restored) restored->step(frame, commands);
+    feed_original.step(original, t);
+    if (restored) feed_restored.step(*restored, t);
   }
   std::printf("serialization test: %d save/restore cycles, every %lld ticks, hashes equal on every tick\n", saves,
               static_cast<long long>(opt.every));

@@ -142,7 +142,7 @@ TEST(ReplayApp, ExpectationFailuresNameTickAndLine) {
 TEST(ReplayApp, UnknownShipIsBadInputAtItsColumn) {
   fs::path dir = temp_dir("names");
   fs::path file = dir / "n.replay";
-  write_file_atomic(file.string(), "arcfire-replay 1\nlevel " + kRange + "\n5 expect distance Player Dron 0..1\n");
+  write_file_atomic(file.string(), "arcfire-replay 1\nlevel " + kRange + "\n5 expect distance Player  \"Dron\" 0..1\n");
   try {
     play_replay(quiet(file));
     FAIL() << "no error";
