@@ -24,12 +24,14 @@ xvfb-run -a -s "-screen 0 1280x720x24" bash -c '
   if [ -z "$win" ]; then echo "record_live: no Arcfire window appeared"; kill $pid; cat "$log"; exit 1; fi
   xdotool windowactivate --sync "$win" 2>/dev/null || xdotool windowfocus --sync "$win"
   sleep 1
-  xdotool keydown W;   sleep 1.5; xdotool keyup W
-  xdotool key T;       sleep 0.3
-  xdotool keydown UP;  sleep 0.6; xdotool keyup UP
-  xdotool keydown LEFT_SHIFT; sleep 0.8; xdotool keyup LEFT_SHIFT
-  xdotool key Tab;     sleep 0.3
-  xdotool keydown Q;   sleep 0.5; xdotool keyup Q
+  # X keysyms for the default bindings (assets/settings/bindings.json): W throttle up, T next
+  # target, Up pitch, Shift_L afterburner, Tab switch weapon, Q roll.
+  xdotool keydown w;       sleep 1.5; xdotool keyup w
+  xdotool key t;           sleep 0.3
+  xdotool keydown Up;      sleep 0.6; xdotool keyup Up
+  xdotool keydown Shift_L; sleep 0.8; xdotool keyup Shift_L
+  xdotool key Tab;         sleep 0.3
+  xdotool keydown q;       sleep 0.5; xdotool keyup q
   sleep 1.5
   kill -TERM $pid; wait $pid
   exit 0
