@@ -189,10 +189,11 @@ void labels(const World& w, const Projector& pr, int width, int height, HudLayer
   };
   for (const Prop& p : w.props) put(p.position + glm::dvec3(0, p.radius + 6.0 * p.scale, 0), p.label);
   for (const EffectSpawnDef& e : w.level.effects) put(e.position + glm::dvec3(0, 12.0 * e.scale, 0), e.label);
-  // With a fixed camera nobody is "me", so ships get their names (the gallery).
+  // With a fixed camera nobody is "me", so ships get their names (the gallery), below them so
+  // they do not collide with labels of effects placed on them.
   if (w.camera_mode != CameraMode::Fixed) return;
   for (const Ship& s : w.ships)
-    if (s.alive) put(s.position + glm::dvec3(0, s.cls->shield_radius + 4.0, 0), s.name);
+    if (s.alive) put(s.position - glm::dvec3(0, s.cls->shield_radius + 6.0, 0), s.name);
 }
 
 }  // namespace
