@@ -203,7 +203,8 @@ TEST(HandMadeGltf, MirroringTransformKeepsFrontFacesOutward) {
   }
 }
 
-// Textures go through the same OpenImageIO decoder as every other image.
+// Textures go through the same OpenImageIO decoder as every other image; emissive strength
+// (KHR_materials_emissive_strength) scales the emissive factor beyond glTF's [0, 1].
 TEST(HandMadeGltf, ReadsBaseColourAndEmissiveTextures) {
   const auto dir = test::scratch_dir();
   test::write_bytes(dir / "quad.bin", quad_buffer());
@@ -215,7 +216,8 @@ TEST(HandMadeGltf, ReadsBaseColourAndEmissiveTextures) {
   std::string text = kHandMadeGltf;
   const std::string from = R"("emissiveFactor": [1, 0.5, 0]}],)";
   text.replace(text.find(from), from.size(),
-               R"("emissiveFactor": [1, 0.5, 0], "emissiveTexture": {"index": 1}}],
+               R"("emissiveFactor": [1, 0.5, 0], "emissiveTexture": {"index": 1},
+                      "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": 4}}}],
                   "textures": [{"source": 0}, {"source": 0}], "images": [{"uri": "tex.png"}],)");
   const std::string base = R"("baseColorFactor": [0.5, 0.25, 1, 1])";
   text.replace(text.find(base), base.size(), base + R"(, "baseColorTexture": {"index": 0})");
@@ -227,6 +229,7 @@ TEST(HandMadeGltf, ReadsBaseColourAndEmissiveTextures) {
   EXPECT_EQ(m.images[0].rgba, tex.rgba);
   EXPECT_EQ(m.materials[0].base_color_image, 0);
   EXPECT_EQ(m.materials[0].emissive_image, 0);
+  EXPECT_FLOAT_EQ(m.materials[0].emissive.g, 2.0f);  // 0.5 × emissiveStrength 4
 
   test::write_bytes(dir / "tex.png", "\x89PNG\r\n\x1a\n truncated");
   try {
