@@ -483,7 +483,8 @@ void update_exhausts(World& w) {
   for (Ship& s : w.ships) {
     if (!s.alive || s.exhaust_fx.empty()) continue;
     double t = std::max(0.0, axis_value(s.controls.throttle));
-    double q = std::round((0.2 + 0.8 * t) * (s.afterburner_on ? 1.6 : 1.0) * 16.0) / 16.0;
+    // Idle engines keep a faint glow; the afterburner is the only way to full brightness.
+    double q = std::round((s.afterburner_on ? 1.0 : 0.15 + 0.55 * t) * 16.0) / 16.0;
     if (q == s.shown_exhaust_intensity) continue;
     for (const EffectHandle& e : s.exhaust_fx)
       for (ClusterHandle ch : e.clusters) w.particles->set_intensity(ch, q);
