@@ -5,6 +5,16 @@
 // transforms baked into the vertices. load_image() reads any format OpenImageIO knows into
 // RGBA8; load_sprite() also premultiplies colour by alpha (Ilmonen eq. 10: tcola = tcol·talpha).
 // Every failure throws arc::InputError("path: what is wrong").
+//
+// Details of load_model: the default scene (or every root node when the file has no scenes) is
+// walked with TRS or matrix node transforms; primitives must be triangles, indexed by
+// u8/u16/u32 or not indexed at all; a primitive without normals is split into flat-shaded
+// triangles; KHR_materials_emissive_strength scales the emissive factor. Every accessor and
+// bufferView range is checked against its buffer before a byte is read, and a .glb container is
+// checked before tinygltf sees it. Textures are decoded through OpenImageIO like load_image().
+//
+//   arc::ModelData ship = arc::load_model("assets/models/viper.glb");
+//   arc::Image smoke = arc::load_sprite("assets/textures/sprite_smoke.png");
 #pragma once
 #include <cstdint>
 #include <string>
