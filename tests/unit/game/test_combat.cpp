@@ -82,6 +82,26 @@ TEST(Beam, FiringAtATargetDrainsShieldThenHullAndCostsEnergy) {
   EXPECT_TRUE(w.ships[0].beam_channels.empty());
 }
 
+TEST(Beam, LiveChannelStallsOnTheTargetsShieldSphere) {
+  Game g = facing_pair("beam_stall.json", -150);
+  const World& w = g.world();
+  g.step(fire());
+  g.step(fire());
+  const Ship& s = w.ships[0];
+  const Ship& t = w.ships[1];
+  ASSERT_EQ(s.beam_channels.size(), s.cls->beam.mounts.size());
+  int stalled = 0;
+  for (size_t m = 0; m < s.beam_channels.size(); ++m) {
+    const double d = s.beam_hit_distance[m];
+    if (d < 0) continue;
+    ++stalled;
+    glm::dvec3 p = w.particles->lightning_point_at(s.beam_channels[m], d);
+    EXPECT_NEAR(glm::length(p - t.position), t.cls->shield_radius, 1e-6);
+    EXPECT_LT(d, w.particles->lightning_length(s.beam_channels[m]));
+  }
+  EXPECT_GE(stalled, 1);
+}
+
 TEST(Damage, FlowsShieldThenHullThenExplosion) {
   Game g = facing_pair("damage_flow.json", -400);
   World& w = g.world_mut();

@@ -3,7 +3,9 @@
 
 #include "core/error.h"
 #include "core/rng.h"
+#include "game/sim/simulation.h"
 #include "game/sim/world.h"
+#include <glm/geometric.hpp>
 #include "test_helpers.h"
 
 namespace arc {
@@ -100,6 +102,19 @@ TEST(Serialization, CopyRunsBesideTheOriginal) {
     ASSERT_EQ(a.hash(), b.hash()) << "tick " << a.tick();
   }
   EXPECT_EQ(a.full_hash(), b.full_hash());
+}
+
+TEST(PlayerInput, DrivesThePlayerShipOnly) {
+  Game g = Game::load_level(repo("levels/duel.json"), options());
+  const World& w = g.world();
+  InputFrame f;
+  f.throttle = 127;
+  f.yaw = 64;
+  for (int i = 0; i < 60; ++i) g.step(f);
+  EXPECT_EQ(w.ships[w.player].controls, f);
+  EXPECT_GT(glm::length(w.ships[w.player].velocity), 10.0);
+  EXPECT_GT(forward_of(w.ships[w.player].orientation).x, 0.1);
+  EXPECT_NE(w.ships[1].controls, f);  // the enemy flies itself
 }
 
 TEST(Pause, PausedGameDoesNotAdvanceUntilResumed) {
