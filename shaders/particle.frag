@@ -2,50 +2,40 @@
 // Controlled-additive blending (Ilmonen 2006 §4): with premultiplied sprite tcola and colour
 // fgc = rgb·alpha the output is (fgc·tcola, alpha·talpha·(1 − burn)) under
 // glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA). Soft edges scale both (§3, Lorach, Krazanowski).
+// The renderer compiles this twice, with SOFT 0 and SOFT 1, and uses the soft variant (depth
+// texture read, linearisation) only in frames where a visible particle has soft edges.
 in vec3 v_uv;
 in vec4 v_color;
 in float v_burn;
 in float v_depth;
-in float v_extent;
-flat in uint v_soft;
+flat in vec4 v_soft;
+flat in float v_contrast;
 uniform sampler2DArray u_sprites;
 uniform sampler2D u_scene_depth;  // this frame's opaque depth, copied
-uniform bool u_soft_enabled;
 uniform vec2 u_linearize;         // view depth = x / (depth + y) for the depth mode in use
 uniform float u_contrast_power;
 uniform float u_near;
-uniform float u_near_fade;
+uniform float u_inv_near_fade;    // 1 / fade distance; huge when the fade is off
 out vec4 o_color;
 
 const float kEps = 1e-6;
 
-float contrast(float x, float p) {
-  return x < 0.5 ? 0.5 * pow(2.0 * x, p) : 1.0 - 0.5 * pow(2.0 * (1.0 - x), p);
-}
-
 void main() {
   vec4 tex = texture(u_sprites, v_uv);
-  float k = 1.0;
-  if (u_soft_enabled && v_soft != 0u) {
-    float d = texelFetch(u_scene_depth, ivec2(gl_FragCoord.xy), 0).r;
-    float denom = d + u_linearize.y;
-    float zb = abs(denom) > 1e-30 ? u_linearize.x / denom : 1e30;
-    float diff = zb - v_depth;
-    if (v_soft == 1u) {
-      k = clamp(diff / v_extent, 0.0, 1.0);
-    } else if (v_soft == 2u) {
-      k = contrast(clamp(diff / v_extent, 0.0, 1.0), u_contrast_power);
-    } else if (v_soft == 3u) {
-      // Average density: the fraction of the volume [z − E/2, z + E/2] in front of the scene;
-      // the quad already sits at z − E/2.
-      k = clamp(diff / v_extent, 0.0, 1.0);
-    } else {
-      // Density extent: texture alpha is the volume's extent around the mirror plane.
-      // The quad sits at z − E, so the mirror plane is one extent behind it.
-      float range = (diff - v_extent) / v_extent / max(tex.a, kEps);
-      k = clamp(range, -1.0, 1.0) * 0.5 + 0.5;
-    }
-  }
-  if (u_near_fade > 0.0) k *= clamp((v_depth - u_near) / u_near_fade, 0.0, 1.0);
+  float k = clamp((v_depth - u_near) * u_inv_near_fade, 0.0, 1.0);
+#if SOFT
+  float d = texelFetch(u_scene_depth, ivec2(gl_FragCoord.xy), 0).r;
+  float denom = d + u_linearize.y;
+  float zb = abs(denom) > 1e-30 ? u_linearize.x / denom : 1e30;
+  // Linear ramp (Ilmonen), average density (quad already at z − E/2), density extent (quad at
+  // z − E, range scaled by 1/texture alpha and mapped from [−1, 1]).
+  float x = (zb - v_depth - v_soft.y) * v_soft.x + v_soft.z;
+  x = mix(x, x * 0.5 / max(tex.a, kEps) + 0.5, v_soft.w);
+  x = clamp(x, 0.0, 1.0);
+  // Lorach's contrast curve: 0.5·(2x)^p below 0.5, mirrored above.
+  float c = 0.5 * pow(max(2.0 * min(x, 1.0 - x), 1e-8), u_contrast_power);
+  x = mix(x, x < 0.5 ? c : 1.0 - c, v_contrast);
+  k *= x;
+#endif
   o_color = vec4(v_color.rgb * tex.rgb, v_color.a * tex.a * (1.0 - v_burn)) * k;
 }

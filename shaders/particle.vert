@@ -17,8 +17,11 @@ out vec3 v_uv;
 out vec4 v_color;
 out float v_burn;
 out float v_depth;          // linear view depth of this fragment
-out float v_extent;
-flat out uint v_soft;
+// Soft-edge factor k = clamp(((zb − z) − offset) · inv_extent + bias), then optionally divided
+// by the texture alpha (density extent) and bent by the contrast curve: one formula, no
+// per-method branches, because a software rasteriser pays for every branch on every pixel.
+flat out vec4 v_soft;        // inv_extent, offset, bias, use texture alpha (0/1)
+flat out float v_contrast;   // 0/1
 
 const float kEps = 1e-6;
 
@@ -61,6 +64,10 @@ void main() {
   v_color = i_color;
   v_burn = i_burn_extent.x;
   v_depth = -p.z;
-  v_extent = extent;
-  v_soft = i_soft_board.x;
+  uint m = i_soft_board.x;
+  float inv_e = 1.0 / extent;
+  v_soft = m == 0u ? vec4(0.0, 0.0, 1.0, 0.0)
+         : m == 4u ? vec4(inv_e, extent, 0.0, 1.0)
+                   : vec4(inv_e, 0.0, 0.0, 0.0);
+  v_contrast = m == 2u ? 1.0 : 0.0;
 }

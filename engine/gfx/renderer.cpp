@@ -48,7 +48,9 @@ GLuint compile(GLenum type, const std::string& src, const std::string& name, std
 }
 
 // Builds vert+frag from the shader folder; returns 0 and appends to err on failure.
-GLuint build_program(const std::string& dir, const std::string& vs, const std::string& fs, std::string& err) {
+// `defines` goes right after the #version line of the fragment shader.
+GLuint build_program(const std::string& dir, const std::string& vs, const std::string& fs, const std::string& defines,
+                     std::string& err) {
   std::string vsrc, fsrc;
   try {
     vsrc = read_text(dir + "/" + vs);
@@ -56,6 +58,10 @@ GLuint build_program(const std::string& dir, const std::string& vs, const std::s
   } catch (const std::exception& e) {
     err += std::string(e.what()) + "\n";
     return 0;
+  }
+  if (!defines.empty()) {
+    size_t eol = fsrc.find('\n');
+    fsrc.insert(eol == std::string::npos ? fsrc.size() : eol + 1, defines);
   }
   GLuint v = compile(GL_VERTEX_SHADER, vsrc, dir + "/" + vs, err);
   GLuint f = compile(GL_FRAGMENT_SHADER, fsrc, dir + "/" + fs, err);
@@ -153,7 +159,7 @@ struct Renderer::Impl {
   bool clip_control = false;
   bool timer_query = false;
 
-  Program sky, stars, mesh, particle, hud;
+  Program sky, stars, mesh, particle_hard, particle_soft, hud;
 
   std::vector<GpuModel> models;
   GLuint sprite_tex = 0;
@@ -206,14 +212,16 @@ void Renderer::Impl::load_programs(bool throw_on_error) {
     Program* p;
     const char* vs;
     const char* fs;
+    const char* defines;
   };
-  const Spec specs[] = {{&sky, "sky.vert", "sky.frag"},
-                        {&stars, "stars.vert", "stars.frag"},
-                        {&mesh, "mesh.vert", "mesh.frag"},
-                        {&particle, "particle.vert", "particle.frag"},
-                        {&hud, "hud.vert", "hud.frag"}};
+  const Spec specs[] = {{&sky, "sky.vert", "sky.frag", ""},
+                        {&stars, "stars.vert", "stars.frag", ""},
+                        {&mesh, "mesh.vert", "mesh.frag", ""},
+                        {&particle_hard, "particle.vert", "particle.frag", "#define SOFT 0\n"},
+                        {&particle_soft, "particle.vert", "particle.frag", "#define SOFT 1\n"},
+                        {&hud, "hud.vert", "hud.frag", ""}};
   std::vector<GLuint> built;
-  for (auto& s : specs) built.push_back(build_program(desc.shader_dir, s.vs, s.fs, err));
+  for (auto& s : specs) built.push_back(build_program(desc.shader_dir, s.vs, s.fs, s.defines, err));
   bool all = std::all_of(built.begin(), built.end(), [](GLuint id) { return id != 0; });
   if (!all) {
     for (GLuint id : built)
@@ -302,7 +310,7 @@ Renderer::~Renderer() {
     }
     if (!model.textures.empty()) glDeleteTextures(GLsizei(model.textures.size()), model.textures.data());
   }
-  for (Program* p : {&m.sky, &m.stars, &m.mesh, &m.particle, &m.hud}) glDeleteProgram(p->id);
+  for (Program* p : {&m.sky, &m.stars, &m.mesh, &m.particle_hard, &m.particle_soft, &m.hud}) glDeleteProgram(p->id);
   GLuint tex[] = {m.sprite_tex, m.font_tex, m.scene_color, m.copy_depth, m.target_color};
   glDeleteTextures(5, tex);
   glDeleteRenderbuffers(1, &m.scene_depth);
@@ -690,16 +698,16 @@ void Renderer::Impl::draw_particles(const RenderView& v, const glm::mat4& view, 
   glEnable(GL_BLEND);
   glBlendEquation(GL_FUNC_ADD);
   glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  const Program& particle = any_soft ? particle_soft : particle_hard;
   glUseProgram(particle.id);
   glUniformMatrix4fv(particle.loc("u_view"), 1, GL_FALSE, glm::value_ptr(view));
   glUniformMatrix4fv(particle.loc("u_proj"), 1, GL_FALSE, glm::value_ptr(proj));
   glUniform1f(particle.loc("u_tan_half_y"), float(std::tan(v.camera.fov_y_radians * 0.5)));
   glUniform1f(particle.loc("u_size_clamp"), rs.size_clamp);
   glUniform1f(particle.loc("u_near"), float(v.camera.near_plane));
-  glUniform1f(particle.loc("u_near_fade"), rs.near_fade);
+  glUniform1f(particle.loc("u_inv_near_fade"), rs.near_fade > 0.0f ? 1.0f / rs.near_fade : 1e30f);
   glUniform1f(particle.loc("u_contrast_power"), rs.contrast_power);
   glUniform2f(particle.loc("u_linearize"), linearize.x, linearize.y);
-  glUniform1i(particle.loc("u_soft_enabled"), any_soft);
   glUniform1i(particle.loc("u_sprites"), 0);
   glUniform1i(particle.loc("u_scene_depth"), 1);
   glActiveTexture(GL_TEXTURE0);

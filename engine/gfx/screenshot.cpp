@@ -1,0 +1,35 @@
+#include "gfx/screenshot.h"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <cstring>
+#include <vector>
+
+namespace arc {
+
+Image read_window_pixels(int width, int height) {
+  Image img;
+  img.width = std::max(0, width);
+  img.height = std::max(0, height);
+  img.rgba.resize(size_t(img.width) * img.height * 4);
+  if (img.rgba.empty()) return img;
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  glReadBuffer(GL_BACK);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, img.width, img.height, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
+  // GL rows run bottom to top; images top to bottom. The window has no meaningful alpha.
+  size_t row = size_t(img.width) * 4;
+  std::vector<uint8_t> tmp(row);
+  for (int y = 0; y < img.height / 2; ++y) {
+    uint8_t* a = &img.rgba[size_t(y) * row];
+    uint8_t* b = &img.rgba[size_t(img.height - 1 - y) * row];
+    std::memcpy(tmp.data(), a, row);
+    std::memcpy(a, b, row);
+    std::memcpy(b, tmp.data(), row);
+  }
+  for (size_t i = 3; i < img.rgba.size(); i += 4) img.rgba[i] = 255;
+  return img;
+}
+
+}  // namespace arc
