@@ -18,6 +18,7 @@
 #include "game/sim/game.h"
 #include "game/sim/world.h"
 #include "gfx/renderer.h"
+#include "gfx/screenshot.h"
 #include "platform/platform.h"
 
 namespace arc {
@@ -104,6 +105,7 @@ int run_window(const AppOptions& o) {
   RenderView view;
   InputState devices, prev;
   std::vector<Command> pending;
+  bool want_screenshot = false;
   while (!window->should_close()) {
     window->poll(devices);
     input.sample(devices);
@@ -111,12 +113,7 @@ int run_window(const AppOptions& o) {
     std::vector<Command> menu_commands;
     for (AppAction a : input.take_actions()) {
       switch (a) {
-        case AppAction::Screenshot: {
-          std::string path = screenshot_path();
-          save_image(path, renderer.read_pixels());
-          std::printf("arcfire: screenshot %s\n", path.c_str());
-          break;
-        }
+        case AppAction::Screenshot: want_screenshot = true; break;
         case AppAction::ToggleFps: camera.show_fps = !camera.show_fps; break;
         case AppAction::ToggleCamera: menu_commands.push_back(Command::CameraToggle); break;
         case AppAction::TogglePause:
@@ -177,6 +174,13 @@ int run_window(const AppOptions& o) {
     if (w > 0 && h > 0) {
       build_render_view(session.game->world(), clock.alpha(), camera, w, h, view);
       renderer.render(view, w, h);
+      if (want_screenshot) {
+        // Read the frame just drawn, before the swap leaves the back buffer undefined.
+        std::string path = screenshot_path();
+        save_image(path, read_window_pixels(w, h));
+        std::printf("arcfire: screenshot %s\n", path.c_str());
+        want_screenshot = false;
+      }
     }
     window->swap();
   }
