@@ -262,6 +262,49 @@ TEST(Renderer, SortingPutsTheNearParticleOnTop) {
   EXPECT_EQ(r->last_stats().sorted, 0);
 }
 
+TEST(Renderer, ClusterSortingOrdersWholeClusters) {
+  REQUIRE_CONTEXT();
+  auto r = make_renderer();
+  RenderView v = base_view();
+  // Cluster 1 = {red at 5, blue at 9}, mean 7; cluster 0 = {green at 8}. Per cluster: green,
+  // then cluster 1 in its own order (red, blue), so blue ends on top. Per particle: blue,
+  // green, red, so red ends on top.
+  auto red = particle({0, 0, -5}, 1.0f, glm::vec3(1, 0, 0), 1.0f, 0.0f);
+  auto blue = particle({0, 0, -9}, 3.0f, glm::vec3(0, 0, 1), 1.0f, 0.0f);
+  auto green = particle({0, 0, -8}, 2.0f, glm::vec3(0, 1, 0), 1.0f, 0.0f);
+  red.cluster = blue.cluster = 1;
+  green.cluster = 0;
+  v.particles = {red, blue, green};
+  RenderSettings s = test::plain_settings();
+  s.sorting = RenderSettings::Sorting::Cluster;
+  r->set_render_settings(s);
+  r->render(v, 32, 32);
+  Image by_cluster = r->read_pixels();
+  EXPECT_GT(channel(by_cluster, 16, 16, 2), 0.9f);
+  EXPECT_EQ(r->last_stats().sorted, 3);
+  s.sorting = RenderSettings::Sorting::Full;
+  r->set_render_settings(s);
+  r->render(v, 32, 32);
+  Image full = r->read_pixels();
+  EXPECT_GT(channel(full, 16, 16, 0), 0.9f);
+}
+
+TEST(Renderer, AxisLockedBillboardStretchesAlongItsAxis) {
+  REQUIRE_CONTEXT();
+  auto r = make_renderer();
+  RenderView v = base_view();
+  auto beam = particle({0, 0, -10}, 0.2f, glm::vec3(0.3f, 0.6f, 1.0f), 1.0f, 1.0f);
+  beam.billboard = uint8_t(Billboard::AxisLocked);
+  beam.axis[0] = 8.0f;  // a horizontal segment 8 units long
+  v.particles = {beam};
+  r->render(v, 128, 64);
+  Image img = r->read_pixels();
+  test::dump_if_asked("axis_locked", img);
+  EXPECT_GT(channel(img, 64 + 20, 32, 2), 0.9f) << "lit far along the axis";
+  EXPECT_GT(channel(img, 64 - 20, 32, 2), 0.9f);
+  EXPECT_LT(channel(img, 64, 32 + 12, 2), 0.2f) << "thin across it";
+}
+
 TEST(Renderer, PureAdditiveParticlesAreNotSorted) {
   REQUIRE_CONTEXT();
   auto r = make_renderer();
