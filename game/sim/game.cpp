@@ -221,6 +221,8 @@ uint64_t Game::full_hash() const {
     h.add_i64(s.death_tick);
     h.add_f64(s.shown_shield_intensity);
     h.add_f64(s.shown_exhaust_intensity);
+    h.add_i64(s.shield_density);
+    h.add_i64(s.shield_spawn_tick);
     hash_clusters(h, s.shield_fx);
     for (const EffectHandle& e : s.exhaust_fx) hash_clusters(h, e);
     for (ClusterHandle c : s.beam_channels) h.add_u64((uint64_t(c.index) << 32) | c.generation);

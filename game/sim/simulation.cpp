@@ -456,6 +456,20 @@ void resolve_deaths(World& w) {
   });
 }
 
+// The shield cluster's particle count is fixed by its burst, so density follows strength by
+// respawning the sphere whenever strength crosses a quarter (a few times per fight at most).
+void spawn_shield(World& w, Ship& s, int quarters) {
+  if (!s.shield_fx.clusters.empty()) w.particles->destroy(s.shield_fx);
+  SpawnParams sp;
+  sp.owner = ship_owner(s.id);
+  sp.scale = s.cls->shield_radius / 10.0;
+  sp.intensity = quarters / 4.0;
+  s.shield_fx = spawn_fx(w, kFxShieldSphere, sp);
+  s.shield_density = quarters;
+  s.shield_spawn_tick = w.tick;
+  s.shown_shield_intensity = -1;
+}
+
 void update_shields_and_energy(World& w) {
   for (Ship& s : w.ships) {
     if (!s.alive) continue;
@@ -465,6 +479,10 @@ void update_shields_and_energy(World& w) {
     const bool recharging = regen_allowed && s.shield < c.shield;
     if (recharging) s.shield = std::min(c.shield, s.shield + c.shield_regen * w.dt);
     if (s.shield_fx.clusters.empty()) continue;
+    const int quarters = static_cast<int>(std::ceil(4.0 * s.shield / c.shield));
+    if (quarters > 0 && quarters != s.shield_density) spawn_shield(w, s, quarters);
+    // A new sphere keeps its spawn intensity until its burst has been emitted.
+    if (s.shield_spawn_tick == w.tick) continue;
     // Brightest at a hit and fading in about half a second; dim while recharging; density and
     // brightness follow strength.
     double since_hit = double(w.tick - s.shield_flash_tick) * w.dt;
@@ -763,12 +781,9 @@ void init_world(World& w, LevelDef level, std::shared_ptr<const EffectLibrary> e
   publish_owner_transforms(w);
   try {
     for (Ship& s : w.ships) {
-      SpawnParams sp;
-      sp.owner = ship_owner(s.id);
-      sp.scale = s.cls->shield_radius / 10.0;
       // Spawned at full intensity: the burst's particle count is scaled by the intensity of the
       // first particle step, after which update_shields_and_energy() dims it to what it shows.
-      if (s.cls->shield > 0) s.shield_fx = spawn_fx(w, kFxShieldSphere, sp);
+      if (s.cls->shield > 0) spawn_shield(w, s, 4);
       for (const glm::dvec3& e : s.cls->exhausts) {
         SpawnParams ep;
         ep.owner = ship_owner(s.id);

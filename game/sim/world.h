@@ -76,6 +76,8 @@ struct Ship {
   EffectHandle shield_fx;
   std::vector<EffectHandle> exhaust_fx;
   double shown_shield_intensity = -1;
+  int shield_density = 4;          // quarters of full strength the shield cluster was spawned with
+  int64_t shield_spawn_tick = 0;   // its burst is emitted at the next particle step
   double shown_exhaust_intensity = -1;
   AiState ai_state;
 };

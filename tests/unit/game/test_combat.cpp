@@ -154,6 +154,22 @@ TEST(Damage, SplashDamageReachesNeighboursOnlyWhenTheLevelEnablesIt) {
   }
 }
 
+TEST(Shield, SphereDensityFollowsStrength) {
+  Game g = facing_pair("density.json", -400);
+  World& w = g.world_mut();
+  g.step(InputFrame{});
+  const std::vector<ClusterHandle> full = w.ships[1].shield_fx.clusters;
+  EXPECT_EQ(w.ships[1].shield_density, 4);
+  const uint32_t particles_full = w.particles->stats().live_particles;
+  apply_damage(w, w.ships[1], w.ships[1].cls->shield * 0.6, w.ships[1].position, 0);
+  g.step(InputFrame{});
+  g.step(InputFrame{});
+  EXPECT_EQ(w.ships[1].shield_density, 2);
+  for (ClusterHandle c : full) EXPECT_FALSE(w.particles->alive(c));
+  for (ClusterHandle c : w.ships[1].shield_fx.clusters) EXPECT_TRUE(w.particles->alive(c));
+  EXPECT_LT(w.particles->stats().live_particles, particles_full);
+}
+
 TEST(Shield, RegeneratesOnlyAfterTheDelay) {
   Game g = facing_pair("regen.json", -400);
   World& w = g.world_mut();
