@@ -483,12 +483,13 @@ void update_shields_and_energy(World& w) {
     if (quarters > 0 && quarters != s.shield_density) spawn_shield(w, s, quarters);
     // A new sphere keeps its spawn intensity until its burst has been emitted.
     if (s.shield_spawn_tick == w.tick) continue;
-    // Brightest at a hit and fading in about half a second; dim while recharging; density and
+    // Brightest at a hit and fading in about half a second; a faint glow while recharging (it must
+    // not hide the view from the chase camera); density and
     // brightness follow strength.
     double since_hit = double(w.tick - s.shield_flash_tick) * w.dt;
     double flash = std::max(0.0, 1.0 - since_hit / kFlashSeconds);
     double strength = c.shield > 0 ? s.shield / c.shield : 0.0;
-    double visible = std::max(flash, recharging ? 0.3 : 0.0) * (0.25 + 0.75 * strength);
+    double visible = std::max(flash, recharging ? 0.12 : 0.0) * (0.25 + 0.75 * strength);
     double q = std::round(visible * 64.0) / 64.0;
     if (q != s.shown_shield_intensity) {
       for (ClusterHandle ch : s.shield_fx.clusters) w.particles->set_intensity(ch, q);
