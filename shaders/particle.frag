@@ -5,8 +5,7 @@
 // The renderer compiles this twice, with SOFT 0 and SOFT 1, and uses the soft variant (depth
 // texture read, linearisation) only in frames where a visible particle has soft edges.
 in vec3 v_uv;
-in vec4 v_color;
-in float v_burn;
+in vec4 v_color;  // (rgb·alpha, alpha·(1 − burn))
 in float v_depth;
 flat in vec4 v_soft;
 flat in float v_contrast;
@@ -37,5 +36,5 @@ void main() {
   x = mix(x, x < 0.5 ? c : 1.0 - c, v_contrast);
   k *= x;
 #endif
-  o_color = vec4(v_color.rgb * tex.rgb, v_color.a * tex.a * (1.0 - v_burn)) * k;
+  o_color = v_color * tex * k;
 }

@@ -14,8 +14,7 @@ uniform float u_tan_half_y; // tan(fov_y / 2)
 uniform float u_size_clamp; // largest on-screen size as a fraction of screen height
 uniform float u_near;
 out vec3 v_uv;
-out vec4 v_color;
-out float v_burn;
+out vec4 v_color;           // (rgb·alpha, alpha·(1 − burn)): burn folded in per vertex
 out float v_depth;          // linear view depth of this fragment
 // Soft-edge factor k = clamp(((zb − z) − offset) · inv_extent + bias), then optionally divided
 // by the texture alpha (density extent) and bent by the contrast curve: one formula, no
@@ -61,8 +60,7 @@ void main() {
   gl_Position = u_proj * vec4(p, 1.0);
   v_uv = vec3(corner * 0.5 + 0.5, float(i_sprite));
   v_uv.y = 1.0 - v_uv.y;
-  v_color = i_color;
-  v_burn = i_burn_extent.x;
+  v_color = vec4(i_color.rgb, i_color.a * (1.0 - i_burn_extent.x));
   v_depth = -p.z;
   uint m = i_soft_board.x;
   float inv_e = 1.0 / extent;
