@@ -59,22 +59,15 @@ glm::dquat sphere_rotation(const glm::dvec3& rate, double h, uint64_t n) {
   return glm::angleAxis(angle * double(n), v / s);
 }
 
-void animate_linear(ParticlePool& pool, uint32_t now, const MotionTable& table, const glm::vec3& acc) {
-  const size_t n = pool.count();
-  const uint32_t* __restrict birth = pool.birth.data();
-  const float* __restrict x0 = pool.p0x.data();
-  const float* __restrict y0 = pool.p0y.data();
-  const float* __restrict z0 = pool.p0z.data();
-  const float* __restrict vx = pool.vx.data();
-  const float* __restrict vy = pool.vy.data();
-  const float* __restrict vz = pool.vz.data();
-  const float* __restrict G = table.g.data();
-  const float* __restrict F = table.f.data();
-  float* __restrict px = pool.px.data();
-  float* __restrict py = pool.py.data();
-  float* __restrict pz = pool.pz.data();
-  const uint32_t last = table.last();
-  const float ax = acc.x, ay = acc.y, az = acc.z;
+namespace {
+
+// The kernels take their arrays as restrict-qualified parameters: GCC honours restrict there
+// (not on local pointers), which is what lets it vectorise without run-time alias checks.
+void linear_kernel(size_t n, uint32_t now, uint32_t last, const uint32_t* __restrict birth, const float* __restrict x0,
+                   const float* __restrict y0, const float* __restrict z0, const float* __restrict vx,
+                   const float* __restrict vy, const float* __restrict vz, const float* __restrict G,
+                   const float* __restrict F, float ax, float ay, float az, float* __restrict px, float* __restrict py,
+                   float* __restrict pz) {
   for (size_t i = 0; i < n; ++i) {
     const uint32_t age = std::min(now - birth[i], last);
     const float g = G[age], f = F[age];
@@ -84,24 +77,32 @@ void animate_linear(ParticlePool& pool, uint32_t now, const MotionTable& table, 
   }
 }
 
-void animate_sphere(ParticlePool& pool, float radius, const glm::mat3& m) {
-  const size_t n = pool.count();
-  const float* __restrict dx = pool.p0x.data();
-  const float* __restrict dy = pool.p0y.data();
-  const float* __restrict dz = pool.p0z.data();
-  float* __restrict px = pool.px.data();
-  float* __restrict py = pool.py.data();
-  float* __restrict pz = pool.pz.data();
-  // Radius folded into the matrix: one multiply less per component.
-  const float m00 = m[0][0] * radius, m01 = m[0][1] * radius, m02 = m[0][2] * radius;
-  const float m10 = m[1][0] * radius, m11 = m[1][1] * radius, m12 = m[1][2] * radius;
-  const float m20 = m[2][0] * radius, m21 = m[2][1] * radius, m22 = m[2][2] * radius;
+void sphere_kernel(size_t n, const float* __restrict dx, const float* __restrict dy, const float* __restrict dz,
+                   const float* __restrict m, float* __restrict px, float* __restrict py, float* __restrict pz) {
+  const float m00 = m[0], m01 = m[1], m02 = m[2], m10 = m[3], m11 = m[4], m12 = m[5], m20 = m[6], m21 = m[7], m22 = m[8];
   for (size_t i = 0; i < n; ++i) {
     const float x = dx[i], y = dy[i], z = dz[i];
     px[i] = m00 * x + m10 * y + m20 * z;
     py[i] = m01 * x + m11 * y + m21 * z;
     pz[i] = m02 * x + m12 * y + m22 * z;
   }
+}
+
+}  // namespace
+
+void animate_linear(ParticlePool& pool, uint32_t now, const MotionTable& table, const glm::vec3& acc) {
+  linear_kernel(pool.count(), now, table.last(), pool.birth.data(), pool.p0x.data(), pool.p0y.data(), pool.p0z.data(),
+                pool.vx.data(), pool.vy.data(), pool.vz.data(), table.g.data(), table.f.data(), acc.x, acc.y, acc.z,
+                pool.px.data(), pool.py.data(), pool.pz.data());
+}
+
+void animate_sphere(ParticlePool& pool, float radius, const glm::mat3& m) {
+  // Radius folded into the matrix: one multiply less per component.
+  float mr[9];
+  for (int c = 0; c < 3; ++c)
+    for (int r = 0; r < 3; ++r) mr[c * 3 + r] = m[c][r] * radius;
+  sphere_kernel(pool.count(), pool.p0x.data(), pool.p0y.data(), pool.p0z.data(), mr, pool.px.data(), pool.py.data(),
+                pool.pz.data());
 }
 
 void animate_sphere_stochastic(ParticlePool& pool, float radius, uint64_t seed, uint64_t stream, uint64_t tick) {
@@ -116,19 +117,53 @@ void animate_sphere_stochastic(ParticlePool& pool, float radius, uint64_t seed, 
 
 namespace {
 
-// One curve over all particles, from the per-particle table index and fraction.
-void apply_curve(size_t n, const Curve& c, const int32_t* __restrict idx, const float* __restrict frac, float scale,
-                 float* __restrict out) {
-  if (c.constant) {
-    const float v = c.keys.front().value * scale;
-    for (size_t i = 0; i < n; ++i) out[i] = v;
-    return;
-  }
-  const float* __restrict tab = c.table.data();
+// Particles are processed in blocks whose normalised ages and curve values stay in L1 between
+// the passes; each pass is a plain loop the compiler vectorises (restrict parameters).
+constexpr size_t kBlock = 512;
+
+void life_fraction(size_t n, uint32_t now, float cluster_life_t, const uint32_t* __restrict birth,
+                   const uint32_t* __restrict death, float* __restrict t) {
   for (size_t i = 0; i < n; ++i) {
-    const float a = tab[idx[i]], b = tab[idx[i] + 1];
-    out[i] = (a + (b - a) * frac[i]) * scale;
+    const float age = float(now - birth[i]);
+    const float life = float(death[i] - birth[i]);
+    // Divide unconditionally: a division inside the select would block if-conversion (trapping math).
+    float q = age / life;
+    q = q < 1.0f ? q : 1.0f;
+    t[i] = death[i] == kNeverDies ? cluster_life_t : q;
   }
+}
+
+// The comparisons are written in the exact form of SSE max/min (x > 0 ? x : 0), so they map to
+// maxps/minps without -ffast-math.
+void add_ramp(size_t n, float t0, float k, float d, const float* __restrict t, float* __restrict out) {
+  for (size_t i = 0; i < n; ++i) {
+    float x = (t[i] - t0) * k;
+    x = x > 0.0f ? x : 0.0f;
+    x = x < 1.0f ? x : 1.0f;
+    out[i] += d * x;
+  }
+}
+
+void curve_values(size_t n, const Curve& c, const float* __restrict t, float* __restrict out) {
+  const float start = c.start;
+  for (size_t i = 0; i < n; ++i) out[i] = start;
+  for (const CurveRamp& r : c.ramps) add_ramp(n, r.t0, r.inv_width, r.delta, t, out);
+}
+
+void scale_clamped(size_t n, float s, float* __restrict v) {
+  for (size_t i = 0; i < n; ++i) {
+    const float x = v[i] * s;
+    v[i] = x < 1.0f ? x : 1.0f;
+  }
+}
+
+void multiply(size_t n, const float* __restrict a, float* __restrict v) {
+  for (size_t i = 0; i < n; ++i) v[i] *= a[i];
+}
+
+void spin_rotation(size_t n, uint32_t now, float h, const uint32_t* __restrict birth, const float* __restrict rot0,
+                   const float* __restrict spin, float* __restrict rot) {
+  for (size_t i = 0; i < n; ++i) rot[i] = rot0[i] + spin[i] * (float(now - birth[i]) * h);
 }
 
 }  // namespace
@@ -136,41 +171,21 @@ void apply_curve(size_t n, const Curve& c, const int32_t* __restrict idx, const 
 void animate_attributes(ParticlePool& pool, uint32_t now, double tick_seconds, const CurveSet& curves, float intensity,
                         float cluster_life_t) {
   const size_t n = pool.count();
-  // The scratch index/fraction arrays keep each curve loop simple; thread_local keeps them allocation-free.
-  thread_local std::vector<int32_t> idx;
-  thread_local std::vector<float> frac;
-  if (idx.size() < n) idx.resize(n), frac.resize(n);
-  const uint32_t* __restrict birth = pool.birth.data();
-  const uint32_t* __restrict death = pool.death.data();
-  int32_t* __restrict ix = idx.data();
-  float* __restrict fr = frac.data();
-  const float samples = float(kCurveSamples);
-  for (size_t i = 0; i < n; ++i) {
-    const float age = float(now - birth[i]);
-    const float life = float(death[i] - birth[i]);
-    const float t = death[i] == kNeverDies ? cluster_life_t : std::min(age / life, 1.0f);
-    const float x = t * samples;
-    const int32_t j = std::min(int32_t(x), kCurveSamples - 1);
-    ix[i] = j;
-    fr[i] = x - float(j);
-  }
-  apply_curve(n, *curves.size, ix, fr, 1.0f, pool.size.data());
-  apply_curve(n, *curves.red, ix, fr, 1.0f, pool.r.data());
-  apply_curve(n, *curves.green, ix, fr, 1.0f, pool.g.data());
-  apply_curve(n, *curves.blue, ix, fr, 1.0f, pool.b.data());
-  apply_curve(n, *curves.alpha, ix, fr, intensity, pool.a.data());
-  apply_curve(n, *curves.burn, ix, fr, 1.0f, pool.burn.data());
   const float h = float(tick_seconds);
-  const float* __restrict size0 = pool.size0.data();
-  const float* __restrict rot0 = pool.rot0.data();
-  const float* __restrict spin = pool.spin.data();
-  float* __restrict size = pool.size.data();
-  float* __restrict rot = pool.rotation.data();
-  float* __restrict alpha = pool.a.data();
-  for (size_t i = 0; i < n; ++i) {
-    size[i] = size0[i] * size[i];
-    rot[i] = rot0[i] + spin[i] * (float(now - birth[i]) * h);
-    alpha[i] = std::min(alpha[i], 1.0f);
+  float t[kBlock];
+  for (size_t base = 0; base < n; base += kBlock) {
+    const size_t m = std::min(kBlock, n - base);
+    life_fraction(m, now, cluster_life_t, pool.birth.data() + base, pool.death.data() + base, t);
+    curve_values(m, *curves.size, t, pool.size.data() + base);
+    multiply(m, pool.size0.data() + base, pool.size.data() + base);
+    curve_values(m, *curves.red, t, pool.r.data() + base);
+    curve_values(m, *curves.green, t, pool.g.data() + base);
+    curve_values(m, *curves.blue, t, pool.b.data() + base);
+    curve_values(m, *curves.alpha, t, pool.a.data() + base);
+    scale_clamped(m, intensity, pool.a.data() + base);
+    curve_values(m, *curves.burn, t, pool.burn.data() + base);
+    spin_rotation(m, now, h, pool.birth.data() + base, pool.rot0.data() + base, pool.spin.data() + base,
+                  pool.rotation.data() + base);
   }
 }
 

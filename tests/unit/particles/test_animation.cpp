@@ -165,7 +165,10 @@ TEST(Curves, ExactAndTableAgree) {
   EXPECT_FLOAT_EQ(c.exact(0.9f), 0.0f);
   EXPECT_NEAR(c.exact(0.225f), 0.625f, 1e-6);
   for (int i = 0; i <= kCurveSamples; ++i) EXPECT_FLOAT_EQ(c.table[size_t(i)], c.exact(float(i) / kCurveSamples));
+  // The ramp-sum form used by the update kernel is the same piecewise-linear curve.
+  for (int i = 0; i <= 1000; ++i) EXPECT_NEAR(c.ramp_value(i / 1000.0f), c.exact(i / 1000.0f), 1e-6) << i;
   EXPECT_TRUE(Curve::flat(0.3f).constant);
+  EXPECT_TRUE(Curve::flat(0.3f).ramps.empty());
 }
 
 TEST(Attributes, BurnCurveTurnsFireIntoSmokeAndAlphaScalesWithIntensity) {
