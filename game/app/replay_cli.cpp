@@ -370,6 +370,8 @@ struct Player {
 }  // namespace
 
 ReplayOutcome play_replay(const ReplayRunOptions& opt) {
+  using clock = std::chrono::steady_clock;
+  const clock::time_point start = clock::now();
   const std::string text = read_text_file(opt.script_path);
   replay::Script script = replay::parse_script(text, opt.script_path);
   const std::string level_path = resolve_level(script, opt.game.root_dir == "." ? ARCFIRE_SOURCE_DIR : opt.game.root_dir);
@@ -391,7 +393,10 @@ ReplayOutcome play_replay(const ReplayRunOptions& opt) {
     desc.height = p.script.header.snapshot_height;
     p.renderer = std::make_unique<FrameRenderer>(desc, opt.settings, p.game);
   }
+  const clock::time_point ready = clock::now();
   p.run();
+  p.result.setup_seconds = std::chrono::duration<double>(ready - start).count();
+  p.result.run_seconds = std::chrono::duration<double>(clock::now() - ready).count();
   if (opt.update_golden) p.update_golden(text);
   if (!opt.quiet || p.result.failures > 0)
     std::printf("%s: %d checks, %d failed%s\n", opt.script_path.c_str(), p.result.checks, p.result.failures,

@@ -45,6 +45,8 @@ struct ReplayOutcome {
   int checks = 0;
   int failures = 0;
   int frames_rendered = 0;
+  double setup_seconds = 0;  // wall clock spent before the first tick (level, GL context, assets)
+  double run_seconds = 0;    // wall clock of the ticks themselves
 };
 
 // Runs the script as fast as it can. InputError for a bad script, level or golden folder.
