@@ -105,7 +105,7 @@ void BM_Triad(benchmark::State& state) {
   }
   state.SetBytesProcessed(int64_t(state.iterations()) * int64_t(kTriadElements * kTriadBytesPerElement));
 }
-BENCHMARK(BM_Triad)->Unit(benchmark::kMillisecond)->MinTime(0.5);
+BENCHMARK(BM_Triad)->Unit(benchmark::kMillisecond)->MinTime(0.3);
 
 void BM_LinearClusterUpdate(benchmark::State& state) {
   LinearScene scene(size_t(state.range(0)));
@@ -116,7 +116,7 @@ void BM_LinearClusterUpdate(benchmark::State& state) {
   state.SetItemsProcessed(int64_t(state.iterations()) * state.range(0));
   state.SetBytesProcessed(int64_t(double(state.iterations()) * double(state.range(0)) * kLinearBytesPerUpdate));
 }
-BENCHMARK(BM_LinearClusterUpdate)->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMicrosecond)->MinTime(0.3);
+BENCHMARK(BM_LinearClusterUpdate)->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMicrosecond)->MinTime(0.2);
 
 // The two halves of a linear cluster's update, to see which one limits it.
 void BM_LinearMotionOnly(benchmark::State& state) {
@@ -128,7 +128,7 @@ void BM_LinearMotionOnly(benchmark::State& state) {
   state.SetItemsProcessed(int64_t(state.iterations()) * state.range(0));
   state.SetBytesProcessed(int64_t(double(state.iterations()) * double(state.range(0)) * 40.0));
 }
-BENCHMARK(BM_LinearMotionOnly)->Arg(1000000)->Unit(benchmark::kMicrosecond)->MinTime(0.3);
+BENCHMARK(BM_LinearMotionOnly)->Arg(1000000)->Unit(benchmark::kMicrosecond)->MinTime(0.2);
 
 void BM_AttributesOnly(benchmark::State& state) {
   LinearScene scene(size_t(state.range(0)));
@@ -140,7 +140,7 @@ void BM_AttributesOnly(benchmark::State& state) {
   state.SetItemsProcessed(int64_t(state.iterations()) * state.range(0));
   state.SetBytesProcessed(int64_t(double(state.iterations()) * double(state.range(0)) * 48.0));
 }
-BENCHMARK(BM_AttributesOnly)->Arg(1000000)->Unit(benchmark::kMicrosecond)->MinTime(0.3);
+BENCHMARK(BM_AttributesOnly)->Arg(1000000)->Unit(benchmark::kMicrosecond)->MinTime(0.2);
 
 void BM_SphereClusterUpdate(benchmark::State& state) {
   SphereScene scene(size_t(state.range(0)));
@@ -151,7 +151,7 @@ void BM_SphereClusterUpdate(benchmark::State& state) {
   state.SetItemsProcessed(int64_t(state.iterations()) * state.range(0));
   state.SetBytesProcessed(int64_t(double(state.iterations()) * double(state.range(0)) * kSphereBytesPerUpdate));
 }
-BENCHMARK(BM_SphereClusterUpdate)->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMicrosecond)->MinTime(0.3);
+BENCHMARK(BM_SphereClusterUpdate)->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMicrosecond)->MinTime(0.2);
 
 // Best of several timed repetitions: the machine is shared, and the least disturbed run is the
 // closest to what the hardware does.
