@@ -2,8 +2,10 @@
 // Controlled-additive blending (Ilmonen 2006 §4): with premultiplied sprite tcola and colour
 // fgc = rgb·alpha the output is (fgc·tcola, alpha·talpha·(1 − burn)) under
 // glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA). Soft edges scale both (§3, Lorach, Krazanowski).
-// The renderer compiles this twice, with SOFT 0 and SOFT 1, and uses the soft variant (depth
-// texture read, linearisation) only in frames where a visible particle has soft edges.
+// The renderer compiles three variants (SOFT, CONTRAST defined 0 or 1) and uses the soft one
+// (depth texture read, linearisation) only in frames where a visible particle has soft edges,
+// and the contrast one only when one uses the contrast curve: a software rasteriser runs every
+// instruction of a shader on every pixel, branches included.
 in vec3 v_uv;
 in vec4 v_color;  // (rgb·alpha, alpha·(1 − burn))
 in float v_depth;
@@ -31,9 +33,11 @@ void main() {
   float x = (zb - v_depth - v_soft.y) * v_soft.x + v_soft.z;
   x = mix(x, x * 0.5 / max(tex.a, kEps) + 0.5, v_soft.w);
   x = clamp(x, 0.0, 1.0);
+#if CONTRAST
   // Lorach's contrast curve: 0.5·(2x)^p below 0.5, mirrored above.
   float c = 0.5 * pow(max(2.0 * min(x, 1.0 - x), 1e-8), u_contrast_power);
   x = mix(x, x < 0.5 ? c : 1.0 - c, v_contrast);
+#endif
   k *= x;
 #endif
   o_color = v_color * tex * k;

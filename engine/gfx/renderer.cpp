@@ -159,7 +159,7 @@ struct Renderer::Impl {
   bool clip_control = false;
   bool timer_query = false;
 
-  Program sky, stars, mesh, particle_hard, particle_soft, hud;
+  Program sky, stars, mesh, particle_hard, particle_soft, particle_contrast, hud;
 
   std::vector<GpuModel> models;
   GLuint sprite_tex = 0;
@@ -217,8 +217,9 @@ void Renderer::Impl::load_programs(bool throw_on_error) {
   const Spec specs[] = {{&sky, "sky.vert", "sky.frag", ""},
                         {&stars, "stars.vert", "stars.frag", ""},
                         {&mesh, "mesh.vert", "mesh.frag", ""},
-                        {&particle_hard, "particle.vert", "particle.frag", "#define SOFT 0\n"},
-                        {&particle_soft, "particle.vert", "particle.frag", "#define SOFT 1\n"},
+                        {&particle_hard, "particle.vert", "particle.frag", "#define SOFT 0\n#define CONTRAST 0\n"},
+                        {&particle_soft, "particle.vert", "particle.frag", "#define SOFT 1\n#define CONTRAST 0\n"},
+                        {&particle_contrast, "particle.vert", "particle.frag", "#define SOFT 1\n#define CONTRAST 1\n"},
                         {&hud, "hud.vert", "hud.frag", ""}};
   std::vector<GLuint> built;
   for (auto& s : specs) built.push_back(build_program(desc.shader_dir, s.vs, s.fs, s.defines, err));
@@ -310,7 +311,7 @@ Renderer::~Renderer() {
     }
     if (!model.textures.empty()) glDeleteTextures(GLsizei(model.textures.size()), model.textures.data());
   }
-  for (Program* p : {&m.sky, &m.stars, &m.mesh, &m.particle_hard, &m.particle_soft, &m.hud}) glDeleteProgram(p->id);
+  for (Program* p : {&m.sky, &m.stars, &m.mesh, &m.particle_hard, &m.particle_soft, &m.particle_contrast, &m.hud}) glDeleteProgram(p->id);
   GLuint tex[] = {m.sprite_tex, m.font_tex, m.scene_color, m.copy_depth, m.target_color};
   glDeleteTextures(5, tex);
   glDeleteRenderbuffers(1, &m.scene_depth);
@@ -626,7 +627,7 @@ void Renderer::Impl::draw_particles(const RenderView& v, const glm::mat4& view, 
   glm::vec3 fwd = -glm::vec3(glm::transpose(view)[2]);  // camera −Z in world space
   upload.clear();
   keys.clear();
-  bool any_soft = false, any_ordered = false;
+  bool any_soft = false, any_contrast = false, any_ordered = false;
   for (const ParticleInstance& p : in) {
     bool dark = p.color[0] <= 0 && p.color[1] <= 0 && p.color[2] <= 0 && p.color[3] <= 0;
     float depth = p.pos[0] * fwd.x + p.pos[1] * fwd.y + p.pos[2] * fwd.z;
@@ -635,6 +636,7 @@ void Renderer::Impl::draw_particles(const RenderView& v, const glm::mat4& view, 
     ParticleInstance q = p;
     if (rs.soft_override >= 0) q.soft_edge = uint8_t(rs.soft_override);
     any_soft = any_soft || q.soft_edge != 0;
+    any_contrast = any_contrast || q.soft_edge == uint8_t(SoftEdge::Contrast);
     any_ordered = any_ordered || q.color[3] * (1.0f - q.burn) > 0.0f;
     upload.push_back(q);
     keys.push_back(sortable_bits(depth));
@@ -698,7 +700,7 @@ void Renderer::Impl::draw_particles(const RenderView& v, const glm::mat4& view, 
   glEnable(GL_BLEND);
   glBlendEquation(GL_FUNC_ADD);
   glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  const Program& particle = any_soft ? particle_soft : particle_hard;
+  const Program& particle = any_contrast ? particle_contrast : any_soft ? particle_soft : particle_hard;
   glUseProgram(particle.id);
   glUniformMatrix4fv(particle.loc("u_view"), 1, GL_FALSE, glm::value_ptr(view));
   glUniformMatrix4fv(particle.loc("u_proj"), 1, GL_FALSE, glm::value_ptr(proj));

@@ -119,15 +119,21 @@ TEST(Renderer, SoftEdgesRemoveTheHardCut) {
   test::dump_if_asked("cut_hard", hard_img);
   float hard_step = largest_step_along_row(hard_img, hard.height / 2);
   EXPECT_GT(hard_step, 0.5f) << "without soft edges the cut must be a hard edge";
+  std::vector<Image> images;
   for (SoftEdge m : {SoftEdge::Linear, SoftEdge::Contrast, SoftEdge::AverageDensity, SoftEdge::DensityExtent}) {
     CutScene soft = cut_scene(*r, m);
     r->render(soft.view, soft.width, soft.height);
     Image img = r->read_pixels();
+    images.push_back(img);
     test::dump_if_asked("cut_soft_" + std::to_string(int(m)), img);
     float step = largest_step_along_row(img, soft.height / 2);
     EXPECT_LT(step, 0.2f) << "soft method " << int(m);
     EXPECT_TRUE(r->last_stats().depth_copied);
   }
+  // Each method shapes the fade differently: no two images may be the same.
+  for (size_t a = 0; a < images.size(); ++a)
+    for (size_t b = a + 1; b < images.size(); ++b)
+      EXPECT_GE(compare_images(images[a], images[b]).max_diff, 8) << "methods " << a + 1 << " and " << b + 1;
 }
 
 // Meshes and particles near the origin, then everything (camera included) moved by 1e9.
