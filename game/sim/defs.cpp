@@ -10,7 +10,7 @@ namespace arc {
 namespace {
 
 constexpr double kHuge = 1.0e6;
-constexpr double kSpace = 1.0e9;  // positions: world space is big but bounded
+constexpr double kSpace = 1.0e12;  // positions: world space is big but bounded (doubles stay exact to 0.1 mm)
 
 std::vector<glm::dvec3> points(JsonObject& o, const std::string& key, double limit) {
   std::vector<glm::dvec3> out;
