@@ -67,10 +67,15 @@ struct Header {
   std::optional<std::string> difficulty;  // "easy" | "normal" | "hard"; absent: the level's
   std::string build;                // informational: the build that wrote the file
   int snapshot_width = 640, snapshot_height = 360;
+  // Settings that change the simulation (--quality / --set); absent: the replay's own.
+  std::optional<uint32_t> particle_budget;    // particles.budget, 1000..4000000
+  std::optional<int> lightning_interval;      // particles.lightning_interval, 0..60
+  std::optional<int> substeps;                // sim.substeps, 1..16
   bool same_content(const Header& o) const {
     return version == o.version && level == o.level && seed == o.seed && tick_rate == o.tick_rate &&
            difficulty == o.difficulty && build == o.build && snapshot_width == o.snapshot_width &&
-           snapshot_height == o.snapshot_height;
+           snapshot_height == o.snapshot_height && particle_budget == o.particle_budget &&
+           lightning_interval == o.lightning_interval && substeps == o.substeps;
   }
 };
 

@@ -162,9 +162,16 @@ void parse_header_line(LineParser& lp, Header& h, std::vector<std::string>& seen
   } else if (key.text == "snapshot_size") {
     h.snapshot_width = static_cast<int>(integer_in(lp, lp.take("snapshot width"), "snapshot width", 16, 4096));
     h.snapshot_height = static_cast<int>(integer_in(lp, lp.take("snapshot height"), "snapshot height", 16, 4096));
+  } else if (key.text == "particle_budget") {
+    h.particle_budget = static_cast<uint32_t>(integer_in(lp, lp.take("particle budget"), "particle_budget", 1000, 4000000));
+  } else if (key.text == "lightning_interval") {
+    h.lightning_interval = static_cast<int>(integer_in(lp, lp.take("lightning interval"), "lightning_interval", 0, 60));
+  } else if (key.text == "substeps") {
+    h.substeps = static_cast<int>(integer_in(lp, lp.take("sub-step count"), "substeps", 1, 16));
   } else {
     lp.fail(key, "unknown header key '" + key.text +
-                     "'; allowed: level, seed, tick_rate, difficulty, build, snapshot_size, or a tick-stamped line");
+                     "'; allowed: level, seed, tick_rate, difficulty, build, snapshot_size, particle_budget, "
+                     "lightning_interval, substeps, or a tick-stamped line");
   }
   lp.done(key.text);
 }

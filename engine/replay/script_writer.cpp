@@ -145,6 +145,9 @@ std::string header_text(const Header& h) {
   if (!h.build.empty()) s += "build " + quoted(h.build) + "\n";
   if (h.snapshot_width != Header{}.snapshot_width || h.snapshot_height != Header{}.snapshot_height)
     s += "snapshot_size " + std::to_string(h.snapshot_width) + " " + std::to_string(h.snapshot_height) + "\n";
+  if (h.particle_budget) s += "particle_budget " + std::to_string(*h.particle_budget) + "\n";
+  if (h.lightning_interval) s += "lightning_interval " + std::to_string(*h.lightning_interval) + "\n";
+  if (h.substeps) s += "substeps " + std::to_string(*h.substeps) + "\n";
   return s;
 }
 

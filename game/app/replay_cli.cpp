@@ -66,6 +66,9 @@ std::string resolve_level(const replay::Script& s, const std::string& root) {
 }
 
 GameOptions script_game_options(const replay::Script& s, GameOptions o) {
+  if (s.header.particle_budget) o.particle_budget = *s.header.particle_budget;
+  if (s.header.lightning_interval) o.lightning_interval = *s.header.lightning_interval;
+  if (s.header.substeps) o.substeps = *s.header.substeps;
   if (s.header.seed) {
     o.seed_override = true;
     o.seed = *s.header.seed;
@@ -479,6 +482,11 @@ SessionRecorder::SessionRecorder(const std::string& path, const std::string& lev
   h.tick_rate = static_cast<int>(tick_rate_);
   h.difficulty = difficulty_name(w.difficulty);
   h.build = build_id;
+  // The settings that change the simulation travel with the recording, so a session played
+  // with --quality low replays exactly under any other quality.
+  h.particle_budget = w.options.particle_budget;
+  h.lightning_interval = w.options.lightning_interval;
+  h.substeps = w.options.substeps;
   // The header lands complete or not at all; lines are then appended to the renamed file.
   write_file_atomic(path, replay::header_text(h) + "# recorded live session\n");
   file_ = std::fopen(path.c_str(), "ab");

@@ -60,13 +60,19 @@ ReplayRunOptions quiet(const fs::path& script) {
 TEST(ReplayApp, RecordedSessionReplaysToTheSameHashes) {
   fs::path dir = temp_dir("record");
   fs::path file = dir / "live.replay";
-  Game game = Game::load_level(kRange, GameOptions{});
+  // Simulation settings differ from the replay's defaults: the header must carry them.
+  GameOptions live;
+  live.particle_budget = 3000;
+  live.substeps = 2;
+  Game game = Game::load_level(kRange, live);
   {
     SessionRecorder rec(file.string(), kRange, game);
     play_live(game, rec, 330);
     rec.finish(game);
   }
   replay::Script s = replay::load_script(file.string());
+  EXPECT_EQ(s.header.particle_budget, 3000u);
+  EXPECT_EQ(s.header.substeps, 2);
   EXPECT_EQ(s.end_tick, 330u);
   EXPECT_GE(s.hashes.size(), 5u);  // one per second, and the final one
   EXPECT_EQ(s.commands.size(), 4u);

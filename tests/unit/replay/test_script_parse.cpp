@@ -16,6 +16,9 @@ tick_rate 60
 difficulty hard
 build "0.1.0 release"
 snapshot_size 320 180
+particle_budget 50000
+lightning_interval 4
+substeps 2
 
 0 axis throttle 1          # full ahead
 0 press fire_primary
@@ -60,6 +63,9 @@ TEST(ReplayParse, EveryLineKind) {
   EXPECT_EQ(s.header.build, "0.1.0 release");
   EXPECT_EQ(s.header.snapshot_width, 320);
   EXPECT_EQ(s.header.snapshot_height, 180);
+  EXPECT_EQ(s.header.particle_budget, 50000u);
+  EXPECT_EQ(s.header.lightning_interval, 4);
+  EXPECT_EQ(s.header.substeps, 2);
   ASSERT_EQ(s.inputs.size(), 4u);
   EXPECT_EQ(s.inputs[0].kind, InputEvent::Kind::Axis);
   EXPECT_EQ(s.inputs[0].axis, Axis::Throttle);
@@ -69,7 +75,7 @@ TEST(ReplayParse, EveryLineKind) {
   EXPECT_EQ(s.inputs[2].tick, 30u);  // +30 after tick 0
   EXPECT_EQ(s.inputs[2].kind, InputEvent::Kind::Release);
   EXPECT_EQ(s.inputs[3].value, -64);  // -0.5 * 127 = -63.5 rounds away from zero
-  EXPECT_EQ(s.inputs[3].src.line, 13);
+  EXPECT_EQ(s.inputs[3].src.line, 16);
   ASSERT_EQ(s.commands.size(), 3u);
   EXPECT_EQ(s.commands[0].command, ScriptCommand::TargetNearest);
   EXPECT_EQ(s.commands[1].command, ScriptCommand::Pause);
@@ -133,6 +139,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"dup_header", kHead + "level b\n", "s.replay:3:1: header key 'level' appears twice"},
         BadCase{"bad_seed", kHead + "seed -4\n", "s.replay:3:6: seed must be an integer in [0, 4294967295]"},
         BadCase{"bad_rate", kHead + "tick_rate 5\n", "s.replay:3:11: tick_rate must be an integer in [10, 480]"},
+        BadCase{"bad_budget", kHead + "particle_budget 10\n", "s.replay:3:17: particle_budget must be an integer in [1000, 4000000]"},
+        BadCase{"bad_substeps", kHead + "substeps 0\n", "s.replay:3:10: substeps must be an integer in [1, 16]"},
         BadCase{"bad_difficulty", kHead + "difficulty insane\n", "s.replay:3:12: difficulty must be easy, normal or hard"},
         BadCase{"header_after_body", kHead + "0 end\nseed 3\n", "s.replay:4:1: expected a tick number"},
         BadCase{"bad_tick", kHead + "1x press fire_primary\n", "s.replay:3:1: tick must be an integer"},

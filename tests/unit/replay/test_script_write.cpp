@@ -36,6 +36,8 @@ tick_rate 120
 difficulty easy
 build abc123
 snapshot_size 320 200
+particle_budget 4000
+substeps 3
 0 press fire_primary
 0 axis yaw 0.25
 +10 axis strafe_y -1
