@@ -430,10 +430,13 @@ ClusterHandle ParticleWorld::spawn_lightning(const std::string& effect, uint32_t
     if (def.clusters[i].animation != AnimationType::Lightning) continue;
     SpawnParams p;
     p.owner = owner;
+    // The origin goes into the cluster's frame (double); the channel itself is built around
+    // zero, so its float particle positions stay precise however far from the world origin.
+    p.position = local_origin;
     ClusterHandle hnd = impl_->create(def, i, p);
     Cluster& c = *impl_->find(hnd);
     const double l = length(local_direction);
-    c.lightning.origin = local_origin;
+    c.lightning.origin = glm::dvec3(0.0);
     c.lightning.direction = l > 1e-12 ? local_direction / l : glm::dvec3(0, 0, -1);
     impl_->rebuild_lightning(c, c.spawn_tick);
     return hnd;

@@ -129,5 +129,10 @@ TEST(SceneLargeCoordinates, GalleryFarFromOriginLooksTheSame) {
   SKIP_WITHOUT_EGL(near_img = render_level(kRoot + "/levels/gallery.json", 150, arc::Settings::defaults()));
   far_img = render_level(far_level, 150, arc::Settings::defaults());
   arc::ImageDiff diff = arc::compare_images(near_img, far_img);
-  EXPECT_TRUE(diff.passed) << diff.summary();
+  if (!diff.passed) {
+    std::string prefix = std::filesystem::current_path().string() + "/build/test-output/gallery_far";
+    std::filesystem::create_directories(std::filesystem::path(prefix).parent_path());
+    arc::write_failure_images(prefix, far_img, near_img);
+  }
+  EXPECT_TRUE(diff.passed) << diff.summary() << " (far image and diff in build/test-output/gallery_far_*)";
 }
