@@ -35,6 +35,9 @@ class GlfwWindow final : public Window {
     }
     glfwMakeContextCurrent(window_);
     glfwSwapInterval(d.vsync ? 1 : 0);
+    // Sticky keys: a tap shorter than one frame still reads as pressed on the next poll.
+    glfwSetInputMode(window_, GLFW_STICKY_KEYS, GLFW_TRUE);
+    glfwSetInputMode(window_, GLFW_STICKY_MOUSE_BUTTONS, GLFW_TRUE);
     glfwSetWindowUserPointer(window_, this);
     glfwSetKeyCallback(window_, [](GLFWwindow* w, int key, int, int action, int mods) {
       auto* self = static_cast<GlfwWindow*>(glfwGetWindowUserPointer(w));

@@ -161,10 +161,11 @@ bool LiveInput::pressed(const InputState& s, int code) const { return down(s, co
 void LiveInput::sample(const InputState& s) {
   prev_ = cur_;
   cur_ = s;
-  if (b_.mouse_enabled) {
+  if (b_.mouse_enabled && !first_sample_) {
     mouse_yaw_ += -s.mouse_dx * b_.mouse_sensitivity;
     mouse_pitch_ += (b_.mouse_invert_y ? 1.0 : -1.0) * s.mouse_dy * b_.mouse_sensitivity;
   }
+  first_sample_ = false;
   auto pad_pressed = [&](int button) {
     return button >= 0 && s.gamepad_present && s.gamepad_buttons[size_t(button)] &&
            !(prev_.gamepad_present && prev_.gamepad_buttons[size_t(button)]);

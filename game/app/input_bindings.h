@@ -45,6 +45,8 @@ class LiveInput {
   // The InputFrame for the next tick (live input goes through the same quantisation as
   // recordings), and the commands that fired since the last call.
   InputFrame take_frame();
+  // Drops mouse motion gathered so far (the cursor jumps when capture is switched).
+  void discard_mouse_motion() { mouse_pitch_ = mouse_yaw_ = 0.0; first_sample_ = true; }
   std::vector<Command> take_commands();
   std::vector<AppAction> take_actions();
 
@@ -55,6 +57,7 @@ class LiveInput {
   InputState prev_{};
   InputState cur_{};
   double mouse_pitch_ = 0, mouse_yaw_ = 0;
+  bool first_sample_ = true;  // the cursor jumps when it is first captured: ignore that motion
   std::vector<Command> commands_;
   std::vector<AppAction> actions_;
 };

@@ -98,6 +98,7 @@ int run_window(const AppOptions& o) {
   CameraSettings camera;
   camera.show_fps = o.show_fps;
   window->set_mouse_captured(true);
+  bool mouse_captured = true;
 
   double last = window->time_seconds();
   double fps_time = last, fps = 0;
@@ -122,7 +123,11 @@ int run_window(const AppOptions& o) {
           break;
       }
     }
-    window->set_mouse_captured(!paused);
+    if (paused == mouse_captured) {
+      window->set_mouse_captured(!paused);
+      mouse_captured = !paused;
+      input.discard_mouse_motion();
+    }
     if (paused) {
       // Menu navigation reads the raw keys, edge-triggered by the InputState history.
       auto hit = [&](int key) { return devices.keys[size_t(key)] && !prev.keys[size_t(key)]; };

@@ -56,6 +56,9 @@ TEST(LiveInput, KeysBecomeFullAxesAndButtons) {
 TEST(LiveInput, MouseMotionIsConsumedOncePerTickAndQuantised) {
   arc::LiveInput in(arc::load_bindings(kDefaultBindings));
   arc::InputState s;
+  s.mouse_dx = 500;  // the first sample's motion is the capture jump: ignored
+  in.sample(s);
+  EXPECT_EQ(in.take_frame().yaw, 0);
   s.mouse_dx = 100;  // 100 px · 0.004 = 0.4 of full yaw rate, to the left
   in.sample(s);
   arc::InputFrame f = in.take_frame();
