@@ -73,12 +73,16 @@ std::string fmt(const char* f, double v) {
 }
 
 void hud_outcome_and_menu(const World& w, const CameraSettings& cs, int width, int height, HudLayer& h) {
-  if (w.outcome != Outcome::Undecided) {
+  if (w.outcome != Outcome::Undecided && !w.paused) {
     std::string msg = w.outcome == Outcome::Victory  ? "VICTORY"
                       : w.outcome == Outcome::Defeat ? "DEFEAT"
                                                      : "TEAM " + w.winner + " WINS";
     const glm::vec4 c = w.outcome == Outcome::Defeat ? kHudRed : kHudGreen;
     text(h, width * 0.5 - msg.size() * 12.0, height * 0.3, 3.0, c, msg);
+    if (w.player >= 0) {
+      const std::string hint = "Esc: menu (restart, difficulty, quit)";
+      text(h, width * 0.5 - hint.size() * 4.8, height * 0.3 + 48, 1.2, kHudWhite, hint);
+    }
   }
   if (!w.paused) return;
   quad(h, 0, 0, width, height, {0.0f, 0.0f, 0.05f, 0.55f});
