@@ -11,6 +11,7 @@
 
 #include "core/clock.h"
 #include "core/error.h"
+#include "game/app/file_watcher.h"
 #include "game/app/input_bindings.h"
 #include "game/app/replay_cli.h"
 #include "game/app/scene_resources.h"
@@ -88,10 +89,14 @@ int run_window(const AppOptions& o) {
   std::unique_ptr<Window> window = open_window(wd);
   RendererDesc rd;
   rd.shader_dir = game_options.root_dir + "/shaders";
-  Renderer renderer(rd);
-  renderer.apply_settings(o.settings);
+  auto make_renderer = [&]() {
+    auto r = std::make_unique<Renderer>(rd);
+    r->apply_settings(o.settings);
+    return r;
+  };
+  std::unique_ptr<Renderer> renderer = make_renderer();
 
-  Session session = start_session(o, game_options, renderer, true);
+  Session session = start_session(o, game_options, *renderer, true);
   LiveInput input(bindings);
   FixedStepClock clock(int(std::lround(1.0 / session.game->tick_seconds())));
   PauseMenu menu;
@@ -99,6 +104,16 @@ int run_window(const AppOptions& o) {
   camera.show_fps = o.show_fps;
   window->set_mouse_captured(true);
   bool mouse_captured = true;
+
+  // Hot reload: tweakers edit levels, ships, effects and shaders while the game runs.
+  FileWatcher watcher;
+  watcher.watch(o.level, "data");
+  watcher.watch(game_options.root_dir + "/assets/ships", "data");
+  watcher.watch(game_options.root_dir + "/assets/effects", "data");
+  watcher.watch(game_options.root_dir + "/shaders", "shaders");
+  watcher.poll();
+  std::string reload_error;  // shown on screen until a reload succeeds
+  double next_watch = 0;
 
   double last = window->time_seconds();
   double fps_time = last, fps = 0;
@@ -138,7 +153,7 @@ int run_window(const AppOptions& o) {
           case PauseMenu::Resume: menu_commands.push_back(Command::Resume); break;
           case PauseMenu::Restart:
             if (session.recorder) session.recorder->finish(*session.game);
-            session = start_session(o, game_options, renderer, false);
+            session = start_session(o, game_options, *renderer, false);
             break;
           case PauseMenu::DifficultyItem:
             game_options.difficulty = Difficulty((int(game_options.difficulty) + 1) % 3);
@@ -150,6 +165,31 @@ int run_window(const AppOptions& o) {
     }
     prev = devices;
 
+    if (window->time_seconds() >= next_watch) {
+      next_watch = window->time_seconds() + 0.5;
+      for (const std::string& group : watcher.poll()) {
+        if (group == "shaders") {
+          reload_error = renderer->reload();
+          std::printf("arcfire: shaders reloaded%s\n", reload_error.empty() ? "" : " with errors (kept the old ones)");
+        } else {
+          try {
+            Session fresh = start_session(o, game_options, *renderer, false);
+            if (fresh.game->world().model_paths != session.game->world().model_paths) {
+              // Model indices are positions in the level's model list: reload them all.
+              renderer = make_renderer();
+              load_scene_resources(*renderer, fresh.game->world(), game_options.root_dir);
+            }
+            if (session.recorder) session.recorder->finish(*session.game);
+            session = std::move(fresh);
+            reload_error.clear();
+            std::printf("arcfire: data changed, level restarted\n");
+          } catch (const InputError& e) {
+            reload_error = e.what();  // keep playing the last good version
+          }
+        }
+        std::fflush(stdout);
+      }
+    }
     // Menu commands wait for the next tick rather than being lost on a frame that runs none.
     pending.insert(pending.end(), menu_commands.begin(), menu_commands.end());
     double now = window->time_seconds();
@@ -178,7 +218,11 @@ int run_window(const AppOptions& o) {
     int w = window->framebuffer_width(), h = window->framebuffer_height();
     if (w > 0 && h > 0) {
       build_render_view(session.game->world(), clock.alpha(), camera, w, h, view);
-      renderer.render(view, w, h);
+      if (!reload_error.empty()) {
+        view.hud.quads.push_back({0.0f, float(h) - 34.0f, float(w), 34.0f, {0.35f, 0.02f, 0.02f, 0.85f}});
+        view.hud.texts.push_back({12.0f, float(h) - 26.0f, 1.2f, {1.0f, 0.85f, 0.8f, 1.0f}, "reload failed: " + reload_error});
+      }
+      renderer->render(view, w, h);
       if (want_screenshot) {
         // Read the frame just drawn, before the swap leaves the back buffer undefined.
         std::string path = screenshot_path();
