@@ -13,15 +13,20 @@ uniform mat4 u_proj;
 uniform float u_tan_half_y; // tan(fov_y / 2)
 uniform float u_size_clamp; // largest on-screen size as a fraction of screen height
 uniform float u_near;
-out vec3 v_uv;
-out vec4 v_color;           // (rgb·alpha, alpha·(1 − burn)): burn folded in per vertex
-out float v_depth;          // linear view depth of this fragment
-// Soft-edge factor k = clamp(((zb − z) − offset) · inv_extent + bias), then optionally divided
-// by the texture alpha (density extent) and bent by the contrast curve: one formula, no
-// per-method branches, because a software rasteriser pays for every branch on every pixel.
-flat out vec4 v_soft;        // inv_extent, offset, bias, use texture alpha (0/1)
-flat out float v_contrast;   // 0/1
-
+uniform vec3 u_linearize;   // view depth = x / (y·depth + z), denominator ≥ 0 in every depth mode
+uniform vec2 u_sprite_texels; // sprite array layer size in texels
+uniform float u_viewport_h;   // scene height in pixels
+out vec2 v_uv;
+out float v_depth;          // linear view depth of this fragment (varies along axis-locked quads)
+// Everything constant over one particle is flat, so a software rasteriser interpolates only the
+// three values that really vary across the quad (uv, depth).
+flat out vec4 v_color;      // (rgb·alpha, alpha·(1 − burn)): burn folded in per instance
+// Soft-edge factor k = clamp(x/(y·d + z)·inv_extent·… − (depth·inv_extent + offset·inv_extent − bias)),
+// then optionally divided by the texture alpha (density extent) and bent by the contrast curve:
+// one formula, no per-method branches, because a software rasteriser pays for every branch on
+// every pixel. The per-instance products are taken here, once per vertex.
+flat out vec4 v_soft;        // linearize.x·inv_extent, inv_extent, offset·inv_extent − bias, use texture alpha (0/1)
+flat out vec3 v_aux;         // contrast (0/1), sprite layer, texture LOD
 const float kEps = 1e-6;
 
 void main() {
@@ -58,14 +63,21 @@ void main() {
   float pd = -p.z;
   if (push > 0.0 && pd > u_near) p *= max(pd - push, u_near * 1.001) / pd;
   gl_Position = u_proj * vec4(p, 1.0);
-  v_uv = vec3(corner * 0.5 + 0.5, float(i_sprite));
-  v_uv.y = 1.0 - v_uv.y;
+  v_uv = vec2(corner.x * 0.5 + 0.5, 0.5 - corner.y * 0.5);
   v_color = vec4(i_color.rgb, i_color.a * (1.0 - i_burn_extent.x));
   v_depth = -p.z;
   uint m = i_soft_board.x;
   float inv_e = 1.0 / extent;
-  v_soft = m == 0u ? vec4(0.0, 0.0, 1.0, 0.0)
-         : m == 4u ? vec4(inv_e, extent, 0.0, 1.0)
-                   : vec4(inv_e, 0.0, 0.0, 0.0);
-  v_contrast = m == 2u ? 1.0 : 0.0;
+  // (zb − z − offset)·inv_e + bias with zb = lx / den: off (0) gives the constant 1.
+  v_soft = m == 0u ? vec4(0.0, 0.0, -1.0, 0.0)
+         : m == 4u ? vec4(u_linearize.x * inv_e, inv_e, 1.0, 1.0)
+                   : vec4(u_linearize.x * inv_e, inv_e, 0.0, 0.0);
+  // The mip level the rasteriser would derive from the uv derivatives: the quad lies parallel
+  // to the image plane (pushing it along the view ray keeps its screen footprint), so texels per
+  // pixel are constant over it; one explicit LOD per particle spares the per-pixel derivatives.
+  float px_per_unit = 0.5 * u_viewport_h / (dist * u_tan_half_y);
+  vec2 tex_per_px = u_sprite_texels / (2.0 * vec2(size, half_long) * px_per_unit);
+  vec2 sx = vec2(right.x, up.x) * tex_per_px, sy = vec2(right.y, up.y) * tex_per_px;
+  float rho = max(length(sx), length(sy));
+  v_aux = vec3(m == 2u ? 1.0 : 0.0, float(i_sprite), log2(max(rho, 1e-30)));
 }

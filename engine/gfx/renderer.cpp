@@ -159,11 +159,12 @@ struct Renderer::Impl {
   bool clip_control = false;
   bool timer_query = false;
 
-  Program sky, stars, mesh, particle_hard, particle_soft, particle_contrast, hud;
+  Program sky, stars, mesh, particle_hard, particle_soft, particle_contrast, particle_square, hud;
 
   std::vector<GpuModel> models;
   GLuint sprite_tex = 0;
   int sprite_layers = 0;
+  int sprite_w = 1, sprite_h = 1;
   GLuint white_tex = 0;
 
   // Scene buffer at render scale, depth copy for soft edges, offscreen RGBA8 target.
@@ -219,7 +220,10 @@ void Renderer::Impl::load_programs(bool throw_on_error) {
                         {&mesh, "mesh.vert", "mesh.frag", ""},
                         {&particle_hard, "particle.vert", "particle.frag", "#define SOFT 0\n#define CONTRAST 0\n"},
                         {&particle_soft, "particle.vert", "particle.frag", "#define SOFT 1\n#define CONTRAST 0\n"},
-                        {&particle_contrast, "particle.vert", "particle.frag", "#define SOFT 1\n#define CONTRAST 1\n"},
+                        {&particle_contrast, "particle.vert", "particle.frag",
+                         "#define SOFT 1\n#define CONTRAST 1\n#define CONTRAST_SQUARE 0\n"},
+                        {&particle_square, "particle.vert", "particle.frag",
+                         "#define SOFT 1\n#define CONTRAST 1\n#define CONTRAST_SQUARE 1\n"},
                         {&hud, "hud.vert", "hud.frag", ""}};
   std::vector<GLuint> built;
   for (auto& s : specs) built.push_back(build_program(desc.shader_dir, s.vs, s.fs, s.defines, err));
@@ -311,7 +315,7 @@ Renderer::~Renderer() {
     }
     if (!model.textures.empty()) glDeleteTextures(GLsizei(model.textures.size()), model.textures.data());
   }
-  for (Program* p : {&m.sky, &m.stars, &m.mesh, &m.particle_hard, &m.particle_soft, &m.particle_contrast, &m.hud}) glDeleteProgram(p->id);
+  for (Program* p : {&m.sky, &m.stars, &m.mesh, &m.particle_hard, &m.particle_soft, &m.particle_contrast, &m.particle_square, &m.hud}) glDeleteProgram(p->id);
   GLuint tex[] = {m.sprite_tex, m.font_tex, m.scene_color, m.copy_depth, m.target_color};
   glDeleteTextures(5, tex);
   glDeleteRenderbuffers(1, &m.scene_depth);
@@ -412,6 +416,8 @@ void Renderer::set_sprites(const std::vector<Image>& sprites) {
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   m.upload_texture_params(GL_TEXTURE_2D_ARRAY, true);
   m.sprite_layers = int(sprites.size());
+  m.sprite_w = w;
+  m.sprite_h = h;
 }
 
 void Renderer::apply_settings(const Settings& s) {
@@ -700,7 +706,13 @@ void Renderer::Impl::draw_particles(const RenderView& v, const glm::mat4& view, 
   glEnable(GL_BLEND);
   glBlendEquation(GL_FUNC_ADD);
   glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  const Program& particle = any_contrast ? particle_contrast : any_soft ? particle_soft : particle_hard;
+  // Contrast power 2 (the default) squares instead of calling pow(); power 1 is the identity
+  // curve, the plain soft program.
+  const Program& particle = !any_soft                        ? particle_hard
+                            : !any_contrast                  ? particle_soft
+                            : rs.contrast_power == 2.0f      ? particle_square
+                            : rs.contrast_power == 1.0f      ? particle_soft
+                                                             : particle_contrast;
   glUseProgram(particle.id);
   glUniformMatrix4fv(particle.loc("u_view"), 1, GL_FALSE, glm::value_ptr(view));
   glUniformMatrix4fv(particle.loc("u_proj"), 1, GL_FALSE, glm::value_ptr(proj));
@@ -709,7 +721,12 @@ void Renderer::Impl::draw_particles(const RenderView& v, const glm::mat4& view, 
   glUniform1f(particle.loc("u_near"), float(v.camera.near_plane));
   glUniform1f(particle.loc("u_inv_near_fade"), rs.near_fade > 0.0f ? 1.0f / rs.near_fade : 1e30f);
   glUniform1f(particle.loc("u_contrast_power"), rs.contrast_power);
-  glUniform2f(particle.loc("u_linearize"), linearize.x, linearize.y);
+  // view depth = x / (y·depth + z) with the denominator's sign made positive in every mode
+  // (standard depth has depth + B ≤ 0), so the shader guards it with one max().
+  float lsign = linearize.x >= 0.0f ? 1.0f : -1.0f;
+  glUniform3f(particle.loc("u_linearize"), lsign * linearize.x, lsign, lsign * linearize.y);
+  glUniform2f(particle.loc("u_sprite_texels"), float(sprite_w), float(sprite_h));
+  glUniform1f(particle.loc("u_viewport_h"), float(scene_h));
   glUniform1i(particle.loc("u_sprites"), 0);
   glUniform1i(particle.loc("u_scene_depth"), 1);
   glActiveTexture(GL_TEXTURE0);

@@ -226,6 +226,59 @@ TEST(Renderer, ReversedAndStandardDepthAgree) {
   EXPECT_TRUE(d.passed) << d.summary();
 }
 
+// All four depth modes linearise the copied depth the same way (the shader folds the sign of
+// the denominator into its uniform), so soft particles cut by geometry look alike in each.
+TEST(Renderer, SoftEdgesAgreeInEveryDepthMode) {
+  REQUIRE_CONTEXT();
+  auto r = make_renderer();
+  r->set_sprites({test::soft_sprite(64)});
+  Image ref;
+  for (int mode = 0; mode < 4; ++mode) {
+    RenderSettings s = test::plain_settings();
+    s.reversed_z = mode < 2;
+    s.infinite_far = mode % 2 == 0;
+    s.soft_override = int(SoftEdge::Linear);
+    r->set_render_settings(s);
+    CutScene cut = cut_scene(*r, SoftEdge::Linear);
+    cut.view.camera.far_plane = 200.0;
+    r->render(cut.view, cut.width, cut.height);
+    Image img = r->read_pixels();
+    if (mode == 0) {
+      ref = img;
+      continue;
+    }
+    ImageDiff d = compare_images(ref, img);
+    EXPECT_TRUE(d.passed) << "depth mode " << mode << ": " << d.summary();
+    EXPECT_LT(largest_step_along_row(img, cut.height / 2), 0.2f) << "depth mode " << mode;
+  }
+}
+
+// The contrast curve at power 2 runs a squaring shader and at power 1 the plain linear one;
+// both must match the general pow() curve next to them.
+TEST(Renderer, ContrastShortcutsMatchTheGeneralCurve) {
+  REQUIRE_CONTEXT();
+  auto r = make_renderer();
+  r->set_sprites({test::soft_sprite(64)});
+  auto render_power = [&](float power, SoftEdge method) {
+    RenderSettings s = test::plain_settings();
+    s.contrast_power = power;
+    r->set_render_settings(s);
+    CutScene cut = cut_scene(*r, method);
+    r->render(cut.view, cut.width, cut.height);
+    return r->read_pixels();
+  };
+  Image square = render_power(2.0f, SoftEdge::Contrast), general = render_power(2.0001f, SoftEdge::Contrast);
+  ImageDiff d = compare_images(general, square);
+  EXPECT_TRUE(d.passed) << d.summary();
+  EXPECT_LE(d.max_diff, 2);
+  Image identity = render_power(1.0f, SoftEdge::Contrast), linear = render_power(1.0f, SoftEdge::Linear);
+  EXPECT_EQ(compare_images(linear, identity).max_diff, 0);
+  Image near_identity = render_power(1.0001f, SoftEdge::Contrast);
+  EXPECT_LE(compare_images(near_identity, identity).max_diff, 2);
+  // And the curve does something at power 2.
+  EXPECT_GE(compare_images(linear, square).max_diff, 8);
+}
+
 TEST(Renderer, DepthCopyOnlyWhenASoftParticleIsVisible) {
   REQUIRE_CONTEXT();
   auto r = make_renderer();
