@@ -32,20 +32,26 @@ SceneRegistrar::SceneRegistrar(const char* name, std::function<void()> fn) {
 }  // namespace arc::bench
 
 // arcfire-bench [--scenes-only] [--scene NAME] [google benchmark flags]
+// No arguments: every micro-benchmark, then every headline scene, then the metric lines.
 int main(int argc, char** argv) {
   bool scenes_only = false;
+  bool filtered = false;  // --benchmark_filter: only those micro-benchmarks, no scenes
   std::string only_scene;
   std::vector<char*> rest{argv[0]};
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--scenes-only") == 0) scenes_only = true;
     else if (std::strcmp(argv[i], "--scene") == 0 && i + 1 < argc) only_scene = argv[++i];
-    else rest.push_back(argv[i]);
+    else {
+      if (std::strncmp(argv[i], "--benchmark_filter", 18) == 0) filtered = true;
+      rest.push_back(argv[i]);
+    }
   }
   int n = int(rest.size());
   benchmark::Initialize(&n, rest.data());
   if (benchmark::ReportUnrecognizedArguments(n, rest.data())) return 2;
   if (!scenes_only && only_scene.empty()) benchmark::RunSpecifiedBenchmarks();
   for (auto& [name, fn] : arc::bench::scenes()) {
+    if (filtered && only_scene.empty()) break;
     if (!only_scene.empty() && name != only_scene) continue;
     std::printf("scene %s\n", name.c_str());
     std::fflush(stdout);
