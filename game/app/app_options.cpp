@@ -7,6 +7,8 @@
 #include <iostream>
 
 #include "core/error.h"
+#include "core/json.h"
+#include "game/app/input_bindings.h"
 
 namespace arc {
 namespace {
@@ -69,7 +71,8 @@ std::optional<int> parse_command_line(int argc, char** argv, AppOptions& o) {
   app.add_flag("--list-settings", list_settings, "list every setting with its value and allowed range");
   app.add_option("--difficulty", difficulty, "AI difficulty: easy, normal or hard (default: the level's)");
   app.add_option("--seed", seed, "override the level's random seed")->check(CLI::Range(int64_t(0), int64_t(4294967295)));
-  app.add_option("--bindings", o.bindings_path, "key and gamepad bindings file");
+  app.add_option("--bindings", o.bindings_path,
+                 "key and gamepad bindings file; a missing file is created with the defaults to edit");
   app.add_flag("--fullscreen", o.fullscreen, "start in fullscreen (F11 or Alt+Enter toggles)");
   bool no_vsync = false;
   app.add_flag("--no-vsync", no_vsync, "do not wait for vertical sync");
@@ -92,7 +95,14 @@ std::optional<int> parse_command_line(int argc, char** argv, AppOptions& o) {
   o.game.root_dir = ARCFIRE_SOURCE_DIR;
   try {
     o.level = resolve_data_path(o.level, "--level");
+    if (app.get_option("--bindings")->count() > 0 && !std::filesystem::exists(o.bindings_path)) {
+      // A new bindings file starts as a copy of the defaults, written atomically.
+      write_file_atomic(o.bindings_path,
+                        read_text_file(std::string(ARCFIRE_SOURCE_DIR) + "/assets/settings/bindings.json"));
+      std::printf("arcfire: wrote default bindings to %s; edit it to remap keys\n", o.bindings_path.c_str());
+    }
     o.bindings_path = resolve_data_path(o.bindings_path, "--bindings");
+    load_bindings(o.bindings_path);  // a bad bindings file is bad input in every mode
     if (!parse_size(size, o.width, o.height))
       throw InputError("--size: expected WIDTHxHEIGHT with each in 16..8192, got '" + size + "'");
     if (!quality.empty())
