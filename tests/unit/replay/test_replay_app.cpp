@@ -141,7 +141,7 @@ TEST(ReplayApp, ExpectationFailuresNameTickAndLine) {
   std::string out = testing::internal::GetCapturedStdout();
   EXPECT_EQ(r.exit_code, kExitCheckFailed);
   EXPECT_EQ(r.failures, 2);
-  EXPECT_NE(out.find(":3: tick 30: 30 expect hull Drone 0..10: hull of Drone is 120"), std::string::npos) << out;
+  EXPECT_NE(out.find(":3: tick 30: 30 expect hull Drone 0..10: hull of Drone is 220"), std::string::npos) << out;
   EXPECT_NE(out.find(":5: tick 30: 30 expect winner red: winner is none"), std::string::npos) << out;
 }
 
