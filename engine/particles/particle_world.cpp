@@ -11,6 +11,7 @@
 #include "particles/cluster.h"
 #include "particles/effect_library.h"
 #include "particles/emitter.h"
+#include "particles/world_state.h"
 
 namespace arc {
 namespace {
@@ -36,21 +37,8 @@ uint32_t life_ticks(double seconds, double h) {
 
 }  // namespace
 
-struct ParticleWorld::Impl {
-  ParticleConfig config;
-  const EffectLibrary* effects = nullptr;
-  std::vector<Cluster> slots;
-  std::vector<uint32_t> free_slots;
-  std::map<uint32_t, OwnerTransform> owners;
-  std::map<std::pair<double, double>, std::shared_ptr<const MotionTable>> motion_tables;  // by (drag, longest life)
-  uint64_t tick = 0;
-  uint64_t next_serial = 1;
-  uint32_t live_particles = 0;
-  uint64_t refused = 0;
-  uint32_t skipped = 0;
+struct ParticleWorld::Impl : ParticleWorldState {
   mutable ParticlePool scratch;  // a culled cluster drawn anyway is evaluated here, not in place
-
-  double h() const { return config.tick_seconds; }
 
   Cluster* find(ClusterHandle hnd) {
     if (!hnd || hnd.index > slots.size()) return nullptr;
@@ -87,15 +75,6 @@ struct ParticleWorld::Impl {
 
   int lightning_interval(const Cluster& c) const {
     return config.lightning_interval > 0 ? config.lightning_interval : c.def->lightning.sizzle_ticks;
-  }
-
-  std::shared_ptr<const MotionTable> motion_table(const ClusterDef& d) {
-    const auto key = std::make_pair(d.linear.drag, d.particles.lifetime.max);
-    auto it = motion_tables.find(key);
-    if (it != motion_tables.end()) return it->second;
-    auto t = MotionTable::build(d.linear.drag, h(), d.particles.lifetime.max);
-    motion_tables.emplace(key, t);
-    return t;
   }
 
   Cluster& allocate(uint32_t& slot) {
@@ -402,6 +381,8 @@ ParticleWorld::ParticleWorld(const ParticleConfig& config, const EffectLibrary* 
   impl_->effects = effects;
 }
 ParticleWorld::~ParticleWorld() = default;
+ParticleWorldState& ParticleWorldAccess::state(ParticleWorld& w) { return *w.impl_; }
+const ParticleWorldState& ParticleWorldAccess::state(const ParticleWorld& w) { return *w.impl_; }
 ParticleWorld::ParticleWorld(const ParticleWorld& o) : impl_(std::make_unique<Impl>(*o.impl_)) {}
 ParticleWorld& ParticleWorld::operator=(const ParticleWorld& o) {
   if (this != &o) impl_ = std::make_unique<Impl>(*o.impl_);
@@ -631,7 +612,7 @@ void ParticleWorld::hash(StateHasher& h) const {
     h.add_bool(c.culled);
     h.add_vec(c.bound_center);
     h.add_f64(c.bound_radius);
-    c.pool.hash(h);
+    hash_pool(c.pool, h);
   }
 }
 

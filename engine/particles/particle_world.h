@@ -29,6 +29,7 @@
 namespace arc {
 
 class StateHasher;
+class FastHasher;
 class EffectLibrary;
 
 template <typename Tag>
@@ -124,10 +125,26 @@ class ParticleWorld {
   void collect(const ParticleCamera& camera, std::vector<ParticleInstance>& out) const;
 
   ParticleStats stats() const;
-  void hash(StateHasher& h) const;
+  void hash(StateHasher& h) const;  // everything, every particle included
+  // Cheap: counters, owners and a per-cluster summary (serial, definition, spawn tick, owner,
+  // frame, particle count, RNG and lightning-epoch counters, emitter accumulator). Particle
+  // state is a closed-form function of these, so this is what a per-tick replay hash needs.
+  void hash_summary(FastHasher& h) const;  // particles/fast_hash.h
   uint64_t tick() const;
 
+  // Snapshot of the whole dynamic state (particle_serialize.cpp): every cluster slot with its
+  // generation, serial, owner, definition (by effect name and cluster index), pool and
+  // lightning channel, the owners' transforms, the free list and the budget counters.
+  // Versioned little-endian bytes with a checksum.
+  std::vector<uint8_t> save() const;
+  // Replaces the state with a snapshot's; definitions are looked up in this world's effect
+  // library. A truncated, corrupt or foreign snapshot throws InputError("snapshot: ...") and
+  // leaves the world unchanged.
+  void load(const std::vector<uint8_t>& bytes);
+  void load(const uint8_t* data, size_t size);
+
  private:
+  friend struct ParticleWorldAccess;  // particles/world_state.h
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

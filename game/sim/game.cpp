@@ -9,8 +9,10 @@
 #include "core/error.h"
 #include "core/hash.h"
 #include "game/sim/effects.h"
+#include "game/sim/serialize.h"
 #include "game/sim/simulation.h"
 #include "game/sim/world.h"
+#include "particles/fast_hash.h"
 
 namespace arc {
 
@@ -41,7 +43,6 @@ World& World::operator=(const World& o) {
   camera = o.camera;
   prev_camera = o.prev_camera;
   options = o.options;
-  input_log = o.input_log;
   steps = o.steps;
   // Ship classes live in this World's own level copy.
   for (Ship& s : ships) s.cls = &level.classes.at(class_names[s.class_index]);
@@ -85,11 +86,6 @@ void Game::step(const InputFrame& input, const std::vector<Command>& commands) {
   std::vector<Command> cmds;
   for (Command c : commands)
     if (c != Command::None) cmds.push_back(c);
-  if (!w.input_log.empty() && cmds.empty() && w.input_log.back().commands.empty() &&
-      w.input_log.back().input == input && w.input_log.back().count < UINT32_MAX)
-    ++w.input_log.back().count;
-  else
-    w.input_log.push_back(InputRun{input, cmds, 1});
   ++w.steps;
   step_world(w, input, cmds);
 }
@@ -102,12 +98,14 @@ World& Game::world_mut() { return *world_; }
 
 namespace {
 
-void hash_clusters(StateHasher& h, const EffectHandle& e) {
+void hash_clusters(FastHasher& h, const EffectHandle& e) {
   h.add_u64(e.clusters.size());
   for (ClusterHandle c : e.clusters) h.add_u64((uint64_t(c.index) << 32) | c.generation);
 }
 
-void hash_core(const World& w, StateHasher& h) {
+// The cheap per-tick hash (Game::hash()): FastHasher, so it costs a small part of a step.
+uint64_t hash_core(const World& w) {
+  FastHasher h;  // local: kept in registers (particles/fast_hash.h)
   h.add_i64(w.tick);
   h.add_u64(w.seed);
   h.add_i64(w.difficulty);
@@ -158,62 +156,8 @@ void hash_core(const World& w, StateHasher& h) {
     h.add_vec(p.velocity);
     h.add_i64(p.expire_tick);
   }
-  w.particles->hash(h);
-}
-
-const char* outcome_name(Outcome o) {
-  switch (o) {
-    case Outcome::Victory: return "victory";
-    case Outcome::Defeat: return "defeat";
-    case Outcome::TeamWon: return "team_won";
-    default: return "undecided";
-  }
-}
-
-// Little-endian byte writer/reader for save games.
-struct Writer {
-  std::vector<uint8_t> bytes;
-  void u64(uint64_t v) {
-    for (int i = 0; i < 8; ++i) bytes.push_back(uint8_t(v >> (8 * i)));
-  }
-  void raw(const void* p, size_t n) {
-    const uint8_t* b = static_cast<const uint8_t*>(p);
-    bytes.insert(bytes.end(), b, b + n);
-  }
-};
-
-struct Reader {
-  const std::vector<uint8_t>& bytes;
-  size_t at = 0;
-  std::string what;
-  uint64_t u64() {
-    if (at + 8 > bytes.size()) throw InputError(what + ": save data is truncated at byte " + std::to_string(at));
-    uint64_t v = 0;
-    for (int i = 0; i < 8; ++i) v |= uint64_t(bytes[at + i]) << (8 * i);
-    at += 8;
-    return v;
-  }
-  void raw(void* p, size_t n) {
-    if (at + n > bytes.size()) throw InputError(what + ": save data is truncated at byte " + std::to_string(at));
-    std::memcpy(p, bytes.data() + at, n);
-    at += n;
-  }
-};
-
-constexpr uint64_t kSaveMagic = 0x3145564153524341ull;  // "ACRSAVE1"
-
-}  // namespace
-
-uint64_t Game::hash() const {
-  StateHasher h;
-  hash_core(*world_, h);
-  return h.value();
-}
-
-uint64_t Game::full_hash() const {
-  const World& w = *world_;
-  StateHasher h;
-  hash_core(w, h);
+  // Presentation state (previous transforms, flashes, attached effects' handles, explosions,
+  // the camera rig, which decides particle culling).
   for (const Ship& s : w.ships) {
     h.add_vec(s.prev_position);
     h.add_quat(s.prev_orientation);
@@ -241,7 +185,30 @@ uint64_t Game::full_hash() const {
   h.add_quat(w.camera.orientation);
   h.add_vec(w.prev_camera.position);
   h.add_quat(w.prev_camera.orientation);
-  h.add_u64(w.steps);
+  // Per-cluster summaries: particle state is a closed-form function of them (full_hash()
+  // hashes every particle as well).
+  w.particles->hash_summary(h);
+  return h.value();
+}
+
+const char* outcome_name(Outcome o) {
+  switch (o) {
+    case Outcome::Victory: return "victory";
+    case Outcome::Defeat: return "defeat";
+    case Outcome::TeamWon: return "team_won";
+    default: return "undecided";
+  }
+}
+
+}  // namespace
+
+uint64_t Game::hash() const { return hash_core(*world_); }
+
+uint64_t Game::full_hash() const {
+  StateHasher h;
+  h.add_u64(hash());
+  h.add_u64(world_->steps);  // not in hash(): a paused step changes nothing else
+  world_->particles->hash(h);
   return h.value();
 }
 
@@ -307,60 +274,13 @@ std::string Game::summary_json() const {
   return j.dump(2) + "\n";
 }
 
-std::vector<uint8_t> Game::save() const {
-  const World& w = *world_;
-  Writer out;
-  out.u64(kSaveMagic);
-  out.u64(w.seed);
-  out.u64(static_cast<uint64_t>(w.difficulty));
-  out.u64(w.steps);
-  out.u64(w.input_log.size());
-  for (const InputRun& r : w.input_log) {
-    out.raw(&r.input, sizeof r.input);
-    out.u64(r.count);
-    out.u64(r.commands.size());
-    for (Command c : r.commands) out.u64(static_cast<uint64_t>(c));
-  }
-  out.u64(hash());
-  out.u64(full_hash());
-  return out.bytes;
-}
+std::vector<uint8_t> Game::save() const { return save_world(*world_); }
 
 Game Game::restore(const std::vector<uint8_t>& bytes, const std::string& level_path, const GameOptions& options) {
-  Reader in{bytes, 0, level_path};
-  if (in.u64() != kSaveMagic) throw InputError(level_path + ": not an Arcfire save (bad magic)");
-  GameOptions o = options;
-  o.seed_override = true;
-  o.seed = in.u64();
-  uint64_t diff = in.u64();
-  if (diff > 2) throw InputError(level_path + ": save has difficulty " + std::to_string(diff) + ", allowed 0..2");
-  o.difficulty_override = true;
-  o.difficulty = static_cast<Difficulty>(diff);
-  uint64_t steps = in.u64();
-  uint64_t runs = in.u64();
-  if (runs > bytes.size()) throw InputError(level_path + ": save data is corrupt (run count)");
-  Game g = load_level(level_path, o);
-  // The save is the complete input history: replaying it rebuilds every byte of state,
-  // particles included, because the simulation is a pure function of its inputs.
-  for (uint64_t i = 0; i < runs; ++i) {
-    InputFrame f;
-    in.raw(&f, sizeof f);
-    uint64_t count = in.u64();
-    uint64_t ncmd = in.u64();
-    if (ncmd > 64 || count == 0 || count > steps) throw InputError(level_path + ": save data is corrupt (run " + std::to_string(i) + ")");
-    std::vector<Command> cmds;
-    for (uint64_t c = 0; c < ncmd; ++c) {
-      uint64_t v = in.u64();
-      if (v > static_cast<uint64_t>(Command::Resume)) throw InputError(level_path + ": save has an unknown command " + std::to_string(v));
-      cmds.push_back(static_cast<Command>(v));
-    }
-    g.step(f, cmds);
-    for (uint64_t k = 1; k < count; ++k) g.step(f);
-  }
-  uint64_t h = in.u64();
-  uint64_t fh = in.u64();
-  if (g.world_->steps != steps || g.hash() != h || g.full_hash() != fh)
-    throw InputError(level_path + ": save does not match this level or build (state hash differs after replay)");
+  // The level supplies the static definitions (classes, effects, props' models); the snapshot
+  // then overwrites every piece of dynamic state. Nothing is re-simulated.
+  Game g = load_level(level_path, snapshot_options(bytes, options));
+  load_world(*g.world_, bytes);
   return g;
 }
 

@@ -107,14 +107,6 @@ struct Prop {
   double scale = 1, radius = 0;
 };
 
-// Every step() call, run-length coded: save() stores this log and restore() replays it, which
-// rebuilds the particle world exactly without a particle serialization format.
-struct InputRun {
-  InputFrame input;
-  std::vector<Command> commands;
-  uint32_t count = 1;  // identical steps without commands are merged
-};
-
 struct CameraRig {
   glm::dvec3 position{0.0};
   glm::dquat orientation{1, 0, 0, 0};
@@ -146,7 +138,6 @@ class World {
   CameraMode camera_mode = CameraMode::Chase;
   CameraRig camera, prev_camera;
   GameOptions options;
-  std::vector<InputRun> input_log;
   uint64_t steps = 0;  // step() calls, paused ones included
 
   World() = default;

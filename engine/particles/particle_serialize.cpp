@@ -1,0 +1,312 @@
+// particles/particle_serialize.cpp — ParticleWorld snapshots and the cheap per-tick hash.
+//
+// Format (version 1), inside the frame of particles/snapshot_io.h, all little-endian:
+//   config: seed u64, budget u32, cull_distance f64, lightning_interval i32, tick_seconds f64
+//   counters: tick u64, next_serial u64, live_particles u32, refused u64, skipped u32
+//   owners: count u32, then (id u32, position 3×f64, orientation 4×f64, velocity 3×f64)
+//   slots: count u32, then per slot generation u32, alive u8, and for a live cluster:
+//     serial u64, effect name, cluster index u32, cluster name (checked), spawn_tick u64,
+//     owner u32, local position and orientation, world origin, spawn velocity, last emit
+//     position, scale, intensity, priority i32, emit accumulator, emitting, next_uid u32,
+//     flash direction, flash tick u64, flash ticks u32,
+//     lightning: origin, direction, points (count u32 + 3×f64 each), epoch u64, cut f64,
+//     animated_tick u64, culled u8, bound centre, bound radius,
+//     pool: count u32 then every SoA array in ParticlePool order
+//   free list: count u32, then slot indices u32
+// Definitions are named, never pointed to: a snapshot loads into any world whose effect
+// library has the same effects (cluster names are checked).
+#include <algorithm>
+#include <cmath>
+#include <string_view>
+#include <type_traits>
+
+#include "core/hash.h"
+#include "particles/fast_hash.h"
+#include "particles/effect_library.h"
+#include "particles/particle_world.h"
+#include "particles/snapshot_io.h"
+#include "particles/world_state.h"
+
+namespace arc {
+namespace {
+
+constexpr uint64_t kMagic = snapshot::magic("ARCPWRLD");
+constexpr uint32_t kVersion = 1;
+constexpr uint32_t kMaxBudget = 16'000'000;  // the settings allow 4 million
+
+template <typename Pool, typename F>
+void for_each_array(Pool& p, F&& f) {
+  f(p.px), f(p.py), f(p.pz), f(p.size), f(p.rotation), f(p.r), f(p.g), f(p.b), f(p.a), f(p.burn);
+  f(p.p0x), f(p.p0y), f(p.p0z), f(p.vx), f(p.vy), f(p.vz), f(p.reach), f(p.size0), f(p.rot0), f(p.spin);
+  f(p.birth), f(p.death), f(p.uid), f(p.sprite), f(p.flags);
+}
+
+void write_cluster(snapshot::Writer& out, const Cluster& c) {
+  out.u64(c.serial);
+  out.str(c.effect->name);
+  out.u32(c.def_index);
+  out.str(c.def->name);
+  out.u64(c.spawn_tick);
+  out.u32(c.owner);
+  out.vec3(c.local_position);
+  out.quat(c.local_orientation);
+  out.vec3(c.world_origin);
+  out.vec3(c.spawn_velocity);
+  out.vec3(c.last_emit_position);
+  out.f64(c.scale);
+  out.f64(c.intensity);
+  out.i32(c.priority);
+  out.f64(c.emit_accumulator);
+  out.boolean(c.emitting);
+  out.u32(c.next_uid);
+  out.vec3(c.flash_direction);
+  out.u64(c.flash_tick);
+  out.u32(c.flash_ticks);
+  out.vec3(c.lightning.origin);
+  out.vec3(c.lightning.direction);
+  out.u32(uint32_t(c.lightning.points.size()));
+  for (const glm::dvec3& p : c.lightning.points) out.vec3(p);
+  out.u64(c.lightning.epoch);
+  out.f64(c.lightning.cut);
+  out.u64(c.animated_tick);
+  out.boolean(c.culled);
+  out.vec3(c.bound_center);
+  out.f64(c.bound_radius);
+  out.u32(uint32_t(c.pool.count()));
+  for_each_array(c.pool, [&out](const auto& v) { out.array(v); });
+}
+
+void read_cluster(snapshot::Reader& in, ParticleWorldState& w, Cluster& c, size_t slot) {
+  auto where = [slot] { return "cluster slot " + std::to_string(slot) + ": "; };
+  c.serial = in.u64();
+  if (c.serial == 0 || c.serial >= w.next_serial)
+    in.fail(where() + "serial " + std::to_string(c.serial) + " is outside 1.." + std::to_string(w.next_serial - 1));
+  const std::string effect = in.str();
+  if (!w.effects || !w.effects->has(effect)) in.fail(where() + "effect '" + effect + "' is not in this build's effect library");
+  c.effect = &w.effects->get(effect);
+  c.def_index = in.u32();
+  if (c.def_index >= c.effect->clusters.size())
+    in.fail(where() + "effect '" + effect + "' has " + std::to_string(c.effect->clusters.size()) + " clusters, the snapshot names cluster " +
+            std::to_string(c.def_index));
+  c.def = &c.effect->clusters[c.def_index];
+  const std::string def_name = in.str();
+  if (def_name != c.def->name)
+    in.fail(where() + "cluster " + std::to_string(c.def_index) + " of effect '" + effect + "' is '" + c.def->name +
+            "' in this build, '" + def_name + "' in the snapshot");
+  if (c.def->animation == AnimationType::Linear) c.motion = w.motion_table(*c.def);
+  c.spawn_tick = in.u64();
+  c.owner = in.u32();
+  c.local_position = in.vec3();
+  c.local_orientation = in.quat();
+  c.world_origin = in.vec3();
+  c.spawn_velocity = in.vec3();
+  c.last_emit_position = in.vec3();
+  c.scale = in.f64();
+  c.intensity = in.f64();
+  c.priority = in.i32();
+  c.emit_accumulator = in.f64();
+  c.emitting = in.boolean();
+  c.next_uid = in.u32();
+  c.flash_direction = in.vec3();
+  c.flash_tick = in.u64();
+  c.flash_ticks = in.u32();
+  c.lightning.origin = in.vec3();
+  c.lightning.direction = in.vec3();
+  const size_t points = in.count(24, "lightning point count");
+  c.lightning.points.resize(points);
+  for (glm::dvec3& p : c.lightning.points) p = in.vec3();
+  c.lightning.epoch = in.u64();
+  c.lightning.cut = in.f64();
+  c.animated_tick = in.u64();
+  c.culled = in.boolean();
+  c.bound_center = in.vec3();
+  c.bound_radius = in.f64();
+  const size_t n = in.count(95, "particle count");
+  for_each_array(c.pool, [&in, n](auto& v) { in.array(v, n); });
+  const bool lightning = c.def->animation == AnimationType::Lightning;
+  // Values the engine divides by, loops on or counts with: a channel is built by adding
+  // segments of seed_length·scale until max_length·scale, an emitter emits intensity·rate.
+  if (!(c.scale > 0.0) || !std::isfinite(c.scale)) in.fail(where() + "scale " + std::to_string(c.scale) + " is not a positive number");
+  if (!(c.intensity >= 0.0) || !std::isfinite(c.intensity))
+    in.fail(where() + "intensity " + std::to_string(c.intensity) + " is not a number >= 0");
+  if (!(c.emit_accumulator >= 0.0 && c.emit_accumulator < 1.0))
+    in.fail(where() + "emitter accumulator " + std::to_string(c.emit_accumulator) + " is outside [0, 1)");
+  if (std::isnan(c.lightning.cut)) in.fail(where() + "lightning cut is not a number");
+  if (c.spawn_tick > w.tick + 1)
+    in.fail(where() + "spawn tick " + std::to_string(c.spawn_tick) + " is after the world's tick " + std::to_string(w.tick) + " + 1");
+  // The invariants the engine indexes by: a channel has a polyline with a segment per particle.
+  if (lightning && (points < 2 || n > points - 1))
+    in.fail(where() + "lightning channel with " + std::to_string(points) + " points and " + std::to_string(n) + " particles");
+  for (size_t i = 0; i < n; ++i) {
+    if (c.pool.sprite[i] != c.def->sprite)
+      in.fail(where() + "particle " + std::to_string(i) + " has sprite " + std::to_string(c.pool.sprite[i]) + ", its definition " +
+              std::to_string(c.def->sprite));
+    if (c.pool.flags[i] & ~uint8_t(kParticleHidden))
+      in.fail(where() + "particle " + std::to_string(i) + " has unknown flags " + std::to_string(c.pool.flags[i]));
+  }
+}
+
+}  // namespace
+
+void hash_pool(const ParticlePool& pool, StateHasher& h) {
+  FastHasher f;
+  f.add_u64(pool.count());
+  for_each_array(pool, [&f](const auto& v) {
+    for (auto x : v) {
+      if constexpr (std::is_same_v<std::decay_t<decltype(x)>, float>) f.add_f32(x);
+      else f.add_u64(x);
+    }
+  });
+  h.add_u64(f.value());
+}
+
+std::vector<uint8_t> ParticleWorld::save() const {
+  const ParticleWorldState& w = ParticleWorldAccess::state(*this);
+  snapshot::Writer out;
+  out.u64(w.config.seed);
+  out.u32(w.config.budget);
+  out.f64(w.config.cull_distance);
+  out.i32(w.config.lightning_interval);
+  out.f64(w.config.tick_seconds);
+  out.u64(w.tick);
+  out.u64(w.next_serial);
+  out.u32(w.live_particles);
+  out.u64(w.refused);
+  out.u32(w.skipped);
+  out.u32(uint32_t(w.owners.size()));
+  for (const auto& [id, t] : w.owners) {
+    out.u32(id);
+    out.vec3(t.position);
+    out.quat(t.orientation);
+    out.vec3(t.velocity);
+  }
+  out.u32(uint32_t(w.slots.size()));
+  for (const Cluster& c : w.slots) {
+    out.u32(c.generation);
+    out.boolean(c.alive);
+    if (c.alive) write_cluster(out, c);
+  }
+  out.u32(uint32_t(w.free_slots.size()));
+  for (uint32_t s : w.free_slots) out.u32(s);
+  return out.framed(kMagic, kVersion);
+}
+
+void ParticleWorld::load(const std::vector<uint8_t>& bytes) { load(bytes.data(), bytes.size()); }
+
+void ParticleWorld::load(const uint8_t* data, size_t size) {
+  ParticleWorldState& live = ParticleWorldAccess::state(*this);
+  snapshot::Reader in = snapshot::Reader::unframe(data, size, kMagic, kVersion, "particle world");
+  // Built aside and swapped in at the end: a bad snapshot leaves this world as it was.
+  ParticleWorldState w;
+  w.effects = live.effects;
+  w.motion_tables = live.motion_tables;
+  w.config.seed = in.u64();
+  w.config.budget = in.u32();
+  w.config.cull_distance = in.f64();
+  w.config.lightning_interval = in.i32();
+  w.config.tick_seconds = in.f64();
+  if (w.config.budget == 0 || w.config.budget > kMaxBudget)
+    in.fail("particle budget " + std::to_string(w.config.budget) + " is outside 1.." + std::to_string(kMaxBudget));
+  if (!(w.config.tick_seconds > 0.0) || !std::isfinite(w.config.tick_seconds))
+    in.fail("tick length " + std::to_string(w.config.tick_seconds) + " s is not a positive number");
+  if (w.config.tick_seconds != live.config.tick_seconds) w.motion_tables.clear();  // tables depend on the tick length
+  if (w.config.lightning_interval < 0) in.fail("lightning interval " + std::to_string(w.config.lightning_interval) + " is negative");
+  w.tick = in.u64();
+  w.next_serial = in.u64();
+  w.live_particles = in.u32();
+  w.refused = in.u64();
+  w.skipped = in.u32();
+  const size_t owners = in.count(84, "owner count");
+  for (size_t i = 0; i < owners; ++i) {
+    const uint32_t id = in.u32();
+    OwnerTransform t;
+    t.position = in.vec3();
+    t.orientation = in.quat();
+    t.velocity = in.vec3();
+    if (id == 0 || !w.owners.emplace(id, t).second) in.fail("owner id " + std::to_string(id) + " is 0 or repeated");
+  }
+  const size_t slots = in.count(5, "cluster slot count");
+  w.slots.resize(slots);
+  uint64_t particles = 0;
+  size_t dead = 0;
+  for (size_t s = 0; s < slots; ++s) {
+    Cluster& c = w.slots[s];
+    c.generation = in.u32();
+    c.alive = in.boolean();
+    if (!c.alive) {
+      ++dead;
+      continue;
+    }
+    read_cluster(in, w, c, s);
+    particles += c.pool.count();
+  }
+  if (particles != w.live_particles)
+    in.fail("live particle count " + std::to_string(w.live_particles) + " differs from the " + std::to_string(particles) +
+            " particles in the clusters");
+  const size_t free = in.count(4, "free slot count");
+  std::vector<bool> listed(slots, false);
+  for (size_t i = 0; i < free; ++i) {
+    const uint32_t s = in.u32();
+    if (s >= slots || w.slots[s].alive || listed[s])
+      in.fail("free list entry " + std::to_string(s) + " is not a dead slot listed once (" + std::to_string(slots) + " slots)");
+    listed[s] = true;
+    w.free_slots.push_back(s);
+  }
+  if (free != dead)
+    in.fail("free list has " + std::to_string(free) + " entries for " + std::to_string(dead) + " dead slots");
+  in.expect_end();
+  live = std::move(w);
+}
+
+void ParticleWorld::hash_summary(FastHasher& out) const {
+  const ParticleWorldState& w = ParticleWorldAccess::state(*this);
+  FastHasher h;  // local: kept in registers (fast_hash.h)
+  h.add_u64(w.tick);
+  h.add_u64(w.next_serial);
+  h.add_u64(w.live_particles);
+  h.add_u64(w.refused);
+  h.add_u64(w.skipped);
+  h.add_u64(w.owners.size());
+  for (const auto& [id, t] : w.owners) {
+    h.add_u64(id);
+    h.add_vec(t.position);
+    h.add_quat(t.orientation);
+    h.add_vec(t.velocity);
+  }
+  h.add_u64(w.slots.size());
+  h.add_u64(w.free_slots.size());
+  for (uint32_t s : w.free_slots) h.add_u64(s);
+  for (const Cluster& c : w.slots) {
+    h.add_u64((uint64_t(c.generation) << 1) | uint64_t(c.alive));
+    if (!c.alive) continue;
+    // Everything a cluster's particles are a closed-form function of: the RNG stream (serial),
+    // the definition, the age origin, the frame, the emitter's running state and counters.
+    h.add_u64(c.serial);
+    h.add_str(c.effect->name);
+    h.add_u64(c.def_index);
+    h.add_u64(c.spawn_tick);
+    h.add_u64(c.owner);
+    h.add_vec(c.local_position);
+    h.add_quat(c.local_orientation);
+    h.add_vec(c.world_origin);
+    h.add_vec(c.spawn_velocity);
+    h.add_vec(c.last_emit_position);
+    h.add_f64(c.scale);
+    h.add_f64(c.intensity);
+    h.add_i64(c.priority);
+    h.add_u64(c.pool.count());
+    h.add_u64((uint64_t(c.next_uid) << 1) | uint64_t(c.emitting));
+    h.add_f64(c.emit_accumulator);
+    h.add_u64(c.flash_tick);
+    h.add_u64(c.flash_ticks);
+    h.add_vec(c.flash_direction);
+    h.add_u64(c.lightning.epoch);
+    h.add_f64(c.lightning.cut);
+    h.add_vec(c.lightning.direction);
+    h.add_u64(c.lightning.points.size());
+    h.add_u64((c.animated_tick << 1) | uint64_t(c.culled));
+  }
+  out.add_u64(h.value());
+}
+
+}  // namespace arc
