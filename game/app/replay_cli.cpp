@@ -216,6 +216,8 @@ struct Player {
   ReplayOutcome result;
   bool divergence_reported = false;
   uint64_t last_matching_hash_tick = 0;
+  size_t next_full = 0;          // golden_log->full entries before this one are behind us
+  uint64_t last_full_match = 0;  // the last tick whose full hash matched the log
 
   void fail(uint64_t tick, const replay::SourceLine& src, const std::string& why) {
     ++result.failures;
@@ -229,9 +231,10 @@ struct Player {
   }
   std::string log_path() const { return (fs::path(golden_dir) / "hashes.txt").string(); }
 
-  // Hashing every tick costs more than simulating, so a normal run compares with the golden
-  // log only every full_hash_every ticks; after a mismatch a second run from tick 0 hashes
-  // every tick up to it to find the first one that diverged, and dumps the state there.
+  // The cheap hash is compared with the golden log on every tick the log covers, so its first
+  // mismatch is the first diverging tick (check_log reports it on the spot). Other mismatches
+  // (a script's hash line, a full hash) come here: a second run from tick 0 hashes every tick
+  // up to it to find the first one that diverged, and dumps the state there.
   void report_divergence(uint64_t mismatch_tick) {
     if (divergence_reported) return;
     divergence_reported = true;
@@ -260,16 +263,38 @@ struct Player {
                 game.state_dump().c_str());
   }
 
-  void check_log(uint64_t t, uint64_t cheap, uint64_t full) {
+  // Every tick: the cheap hash against the log's entry for the tick; with `full` (checkpoint
+  // ticks), the full hash against the log's full entry when it has one for the tick.
+  void check_log(uint64_t t, uint64_t cheap, std::optional<uint64_t> full) {
     if (!golden_log || divergence_reported || t >= golden_log->hashes.size()) return;
+    const auto& fulls = golden_log->full;
+    while (next_full < fulls.size() && fulls[next_full].first < t) ++next_full;
     std::optional<uint64_t> want_full;
-    for (const auto& [ft, fv] : golden_log->full)
-      if (ft == t) want_full = fv;
-    if (golden_log->hashes[t] == cheap && (!want_full || *want_full == full)) return;
+    if (full && next_full < fulls.size() && fulls[next_full].first == t) want_full = fulls[next_full].second;
+    const bool cheap_ok = golden_log->hashes[t] == cheap;
+    if (cheap_ok && (!want_full || *want_full == *full)) {
+      if (want_full) last_full_match = t;
+      return;
+    }
     ++result.failures;
-    std::printf("FAIL %s: tick %llu: state differs from the golden hash log %s\n", script.path.c_str(),
-                static_cast<unsigned long long>(t), log_path().c_str());
-    report_divergence(t);
+    divergence_reported = true;
+    if (!cheap_ok) {
+      // Every earlier tick matched, so this is the first one that diverged.
+      std::printf("FAIL %s: tick %llu: state differs from the golden hash log %s\n"
+                  "  first diverging tick %llu: state hash %s, golden log says %s; state at tick %llu:\n%s",
+                  script.path.c_str(), static_cast<unsigned long long>(t), log_path().c_str(),
+                  static_cast<unsigned long long>(t), replay::hex64(cheap).c_str(),
+                  replay::hex64(golden_log->hashes[t]).c_str(), static_cast<unsigned long long>(t),
+                  game.state_dump().c_str());
+      return;
+    }
+    std::printf("FAIL %s: tick %llu: full state hash %s, golden log %s says %s\n"
+                "  the cheap hash matched every tick up to %llu; the full state (every particle) diverged after the "
+                "last matching full hash at tick %llu; state at tick %llu:\n%s",
+                script.path.c_str(), static_cast<unsigned long long>(t), replay::hex64(*full).c_str(),
+                log_path().c_str(), replay::hex64(*want_full).c_str(), static_cast<unsigned long long>(t),
+                static_cast<unsigned long long>(last_full_match), static_cast<unsigned long long>(t),
+                game.state_dump().c_str());
   }
 
   void check_hash(size_t i, uint64_t t, uint64_t cheap, uint64_t full) {
@@ -330,14 +355,17 @@ struct Player {
     for (uint64_t t = 0;; ++t) {
       const bool hash_line = hi < script.hashes.size() && script.hashes[hi].tick == t;
       const bool checkpoint = t % every == 0 || t == last;
-      if (opt.update_golden || hash_line || (golden_log && checkpoint)) {
+      // The cheap hash runs every tick (a small part of a step); the full hash, which visits
+      // every particle, only at checkpoints and hash lines.
+      if (opt.update_golden || hash_line || golden_log) {
         const uint64_t cheap = game.hash();
-        const uint64_t full = hash_line || checkpoint ? game.full_hash() : 0;
+        const bool want_full = hash_line || (checkpoint && (opt.update_golden || golden_log));
+        const uint64_t full = want_full ? game.full_hash() : 0;
         if (opt.update_golden) {
           log.hashes.push_back(cheap);
           if (t % every == 0) log.full.emplace_back(t, full);
-        } else if (checkpoint) {
-          check_log(t, cheap, full);
+        } else {
+          check_log(t, cheap, want_full ? std::optional<uint64_t>(full) : std::nullopt);
         }
         for (; hi < script.hashes.size() && script.hashes[hi].tick == t; ++hi) check_hash(hi, t, cheap, full);
       }
