@@ -1,4 +1,5 @@
 // assets/image.cpp — images through OpenImageIO, always handed out as RGBA8.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -77,6 +78,14 @@ Image decode_image_memory(const uint8_t* data, size_t size, const std::string& n
   Image img = read_rgba8(*in, name);
   in->close();
   return img;
+}
+
+void flip_rows(Image& image) {
+  const size_t row = size_t(image.width) * 4;
+  for (int y = 0; y < image.height / 2; ++y)
+    std::swap_ranges(image.rgba.begin() + std::ptrdiff_t(size_t(y) * row),
+                     image.rgba.begin() + std::ptrdiff_t(size_t(y + 1) * row),
+                     image.rgba.begin() + std::ptrdiff_t(size_t(image.height - 1 - y) * row));
 }
 
 void premultiply(Image& image) {

@@ -60,6 +60,8 @@ ModelData load_model(const std::string& path);
 Image load_image(const std::string& path);
 Image load_sprite(const std::string& path);  // RGBA8, premultiplied
 void premultiply(Image& image);
+// Reverses the row order (GL reads images bottom to top; Image rows run top to bottom).
+void flip_rows(Image& image);
 // Writes RGBA8 as PNG (or any format by extension) through OpenImageIO, atomically.
 void save_image(const std::string& path, const Image& image);
 

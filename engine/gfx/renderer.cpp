@@ -853,15 +853,7 @@ Image Renderer::read_pixels() {
   glBindFramebuffer(GL_READ_FRAMEBUFFER, m.target_fbo);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, img.width, img.height, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
-  size_t row = size_t(img.width) * 4;
-  std::vector<uint8_t> tmp(row);
-  for (int y = 0; y < img.height / 2; ++y) {
-    uint8_t* a = &img.rgba[size_t(y) * row];
-    uint8_t* b = &img.rgba[size_t(img.height - 1 - y) * row];
-    std::memcpy(tmp.data(), a, row);
-    std::memcpy(a, b, row);
-    std::memcpy(b, tmp.data(), row);
-  }
+  flip_rows(img);
   return img;
 }
 

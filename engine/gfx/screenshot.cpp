@@ -18,16 +18,7 @@ Image read_window_pixels(int width, int height) {
   glReadBuffer(GL_BACK);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, img.width, img.height, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
-  // GL rows run bottom to top; images top to bottom. The window has no meaningful alpha.
-  size_t row = size_t(img.width) * 4;
-  std::vector<uint8_t> tmp(row);
-  for (int y = 0; y < img.height / 2; ++y) {
-    uint8_t* a = &img.rgba[size_t(y) * row];
-    uint8_t* b = &img.rgba[size_t(img.height - 1 - y) * row];
-    std::memcpy(tmp.data(), a, row);
-    std::memcpy(a, b, row);
-    std::memcpy(b, tmp.data(), row);
-  }
+  flip_rows(img);
   for (size_t i = 3; i < img.rgba.size(); i += 4) img.rgba[i] = 255;
   return img;
 }

@@ -207,3 +207,15 @@ TEST(GeneratedSprite, SparkIsLongAlongY) {
 
 }  // namespace
 }  // namespace arc
+
+TEST(FlipRows, ReversesRowOrderOnly) {
+  arc::Image img;
+  img.width = 2;
+  img.height = 3;
+  for (int i = 0; i < 2 * 3 * 4; ++i) img.rgba.push_back(uint8_t(i));
+  arc::flip_rows(img);
+  EXPECT_EQ(img.rgba[0], 16);  // first row now holds the former last row
+  EXPECT_EQ(img.rgba[8], 8);   // middle row stays
+  EXPECT_EQ(img.rgba[16], 0);
+  EXPECT_EQ(img.rgba[7], 23);
+}
