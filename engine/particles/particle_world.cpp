@@ -440,6 +440,21 @@ void ParticleWorld::destroy_owner(uint32_t owner) {
   impl_->owners.erase(owner);
 }
 
+void ParticleWorld::release_owner(uint32_t owner) {
+  if (owner == 0) return;
+  for (Cluster& c : impl_->slots) {
+    if (!c.alive || c.owner != owner) continue;
+    if (moves_with_frame(c)) {
+      impl_->release(c);  // it would have nothing left to move with
+      continue;
+    }
+    // World-space particles stay where they were emitted: stop emitting and let them fade.
+    c.emitting = false;
+    c.owner = 0;
+  }
+  impl_->owners.erase(owner);
+}
+
 bool ParticleWorld::alive(ClusterHandle cluster) const { return impl_->find(cluster) != nullptr; }
 
 void ParticleWorld::set_owner_transform(uint32_t owner, const OwnerTransform& t) {

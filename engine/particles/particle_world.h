@@ -102,6 +102,9 @@ class ParticleWorld {
   void destroy(ClusterHandle cluster);
   void destroy(const EffectHandle& effect);
   void destroy_owner(uint32_t owner);  // every cluster attached to it, now
+  // The owner is gone but its trail may fade: clusters that move with it are destroyed, the
+  // others stop emitting and are detached, and the owner's transform is forgotten.
+  void release_owner(uint32_t owner);
   bool alive(ClusterHandle cluster) const;
 
   // Owners' transforms for this tick; call before step().

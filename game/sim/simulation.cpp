@@ -332,8 +332,8 @@ void fire_secondary(World& w, Ship& s) {
 
 void end_projectile(World& w, Projectile& p) {
   if (p.kind == SecondaryWeapon::Missile) {
-    // The smoke stays behind and fades; only the emitters stop.
-    for (ClusterHandle c : p.trail.clusters) w.particles->stop_emitting(c);
+    // The smoke stays behind and fades; the flame goes with the missile.
+    w.particles->release_owner(projectile_owner(p.serial));
   } else {
     w.particles->destroy_owner(projectile_owner(p.serial));
   }

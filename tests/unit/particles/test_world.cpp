@@ -317,4 +317,26 @@ TEST(World, UnknownEffectIsInputError) {
 }
 
 }  // namespace
+
+TEST(World, ReleasingAnOwnerLetsItsWorldSpaceTrailFadeAndDropsTheRest) {
+  ParticleWorld w(ParticleConfig{}, &library());
+  w.set_owner_transform(9, {{500, 0, 0}, glm::dquat(1, 0, 0, 0), {}});
+  EffectHandle trail = w.spawn("linear", SpawnParams{.owner = 9});
+  EffectHandle shield = w.spawn("shield", SpawnParams{.owner = 9});
+  for (uint64_t t = 1; t <= 10; ++t) w.step(t, looking_at_origin());
+  const uint32_t before = w.stats().live_particles;
+  w.release_owner(9);
+  EXPECT_FALSE(w.alive(shield.clusters[0]));  // it moved with the owner: gone with it
+  ASSERT_TRUE(w.alive(trail.clusters[0]));    // world-space smoke stays and fades
+  uint32_t last = w.stats().live_particles;
+  EXPECT_LT(last, before);
+  for (uint64_t t = 11; t <= 200; ++t) {
+    w.step(t, looking_at_origin());
+    EXPECT_LE(w.stats().live_particles, last) << "tick " << t << ": no new particles after release";
+    last = w.stats().live_particles;
+  }
+  EXPECT_FALSE(w.alive(trail.clusters[0]));  // empty and not emitting: released
+  EXPECT_EQ(w.stats().live_particles, 0u);
+}
+
 }  // namespace arc
