@@ -26,7 +26,12 @@ void main() {
   vec4 tex = textureLod(u_sprites, vec3(v_uv, v_aux.y), v_aux.z);
   float k = clamp((v_depth - u_near) * u_inv_near_fade, 0.0, 1.0);
 #if SOFT
-  float d = texelFetch(u_scene_depth, ivec2(gl_FragCoord.xy), 0).r;
+  // The depth read is skipped for a whole particle when no opaque surface is within its reach or
+  // its method is off (inv_extent 0, a flat value, so the rasteriser skips it for all pixels at
+  // once); the arithmetic after it then gives exactly 1. Only the read sits in the branch: a
+  // larger branch body made llvmpipe pay for the read on every pixel.
+  float d = 0.0;
+  if (v_soft.y != 0.0) d = texelFetch(u_scene_depth, ivec2(gl_FragCoord.xy), 0).r;
   // (zb − z − offset)/extent + bias, zb the opaque view depth (huge where there is none).
   // Linear ramp (Ilmonen), average density (quad already at z − E/2), density extent (quad at
   // z − E, range scaled by 1/texture alpha and mapped from [−1, 1]).

@@ -59,17 +59,21 @@ void main() {
   // Krazanowski's volumes reach in front of the particle's mirror plane (by extent/2 for average
   // density, by the full extent for density extent); the quad moves there along the view ray,
   // which keeps its screen footprint, so the depth test cuts it only where the volume ends.
-  float push = i_soft_board.x == 3u ? 0.5 * extent : i_soft_board.x == 4u ? extent : 0.0;
+  // Bit 7 of the soft-edge byte: the renderer found no opaque mesh within this particle's reach,
+  // so its soft factor is exactly 1 and the fragment shader skips the depth read.
+  uint m = i_soft_board.x & 127u;
+  bool clear = i_soft_board.x >= 128u;
+  float push = m == 3u ? 0.5 * extent : m == 4u ? extent : 0.0;
   float pd = -p.z;
   if (push > 0.0 && pd > u_near) p *= max(pd - push, u_near * 1.001) / pd;
   gl_Position = u_proj * vec4(p, 1.0);
   v_uv = vec2(corner.x * 0.5 + 0.5, 0.5 - corner.y * 0.5);
   v_color = vec4(i_color.rgb, i_color.a * (1.0 - i_burn_extent.x));
   v_depth = -p.z;
-  uint m = i_soft_board.x;
   float inv_e = 1.0 / extent;
-  // (zb − z − offset)·inv_e + bias with zb = lx / den: off (0) gives the constant 1.
-  v_soft = m == 0u ? vec4(0.0, 0.0, -1.0, 0.0)
+  // (zb − z − offset)·inv_e + bias with zb = lx / den: off (0) gives the constant 1, and
+  // inv_extent 0 tells the fragment shader to skip the soft-edge block.
+  v_soft = m == 0u || clear ? vec4(0.0, 0.0, -1.0, 0.0)
          : m == 4u ? vec4(u_linearize.x * inv_e, inv_e, 1.0, 1.0)
                    : vec4(u_linearize.x * inv_e, inv_e, 0.0, 0.0);
   // The mip level the rasteriser would derive from the uv derivatives: the quad lies parallel

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -103,7 +104,21 @@ struct GpuModel {
   std::vector<GpuPrimitive> prims;
   std::vector<Material> materials;
   std::vector<GLuint> textures;
+  glm::vec3 lo{0.0f}, hi{0.0f};  // model-space box around every vertex drawn
+  bool empty = true;
 };
+
+// An opaque mesh as the particle pass sees it: the nearest view depth of its box and the box's
+// screen rectangle in tangent units (x/depth, y/depth); infinite when the box crosses the near
+// plane.
+struct Occluder {
+  float nearest;
+  float x0, y0, x1, y1;
+};
+
+// Set on the uploaded copy of a particle whose soft edges cannot change a pixel: no opaque
+// mesh comes within its depth extent anywhere on its quad. shaders/particle.vert reads it.
+constexpr uint8_t kSoftClear = 0x80;
 
 uint32_t sortable_bits(float f) {
   uint32_t u;
@@ -184,6 +199,7 @@ struct Renderer::Impl {
   size_t particle_capacity = 0;
   std::vector<ParticleInstance> upload;
   std::vector<uint32_t> keys, order;
+  std::vector<Occluder> occluders;
 
   GLuint hud_vao = 0, hud_vbo = 0;
   HudFont font;
@@ -193,6 +209,8 @@ struct Renderer::Impl {
   std::array<bool, 3> query_pending{};
   int query_index = 0;
   double last_gpu_ms = -1;
+  bool count_fragments = false;
+  GLuint fragment_query = 0;
 
   FrameStats stats;
   glm::mat4 last_view_proj{1.0f};
@@ -203,6 +221,8 @@ struct Renderer::Impl {
   void draw_sky(const RenderView& v, const glm::mat3& cam_basis, const glm::mat4& view_proj, double aspect);
   void draw_meshes(const RenderView& v, const glm::mat4& view_proj);
   void draw_particles(const RenderView& v, const glm::mat4& view, const glm::mat4& proj, glm::vec2 linearize);
+  void gather_occluders(const RenderView& v, const glm::mat3& to_view);
+  bool soft_can_matter(const ParticleInstance& p, const glm::mat3& to_view, float near) const;
   void draw_hud(const HudLayer& hud, int w, int h);
   void upload_texture_params(GLenum target, bool mipmapped);
 };
@@ -326,6 +346,7 @@ Renderer::~Renderer() {
   GLuint bufs[] = {m.star_vbo, m.particle_vbo, m.hud_vbo};
   glDeleteBuffers(3, bufs);
   if (m.timer_query) glDeleteQueries(3, m.queries.data());
+  if (m.fragment_query) glDeleteQueries(1, &m.fragment_query);
 }
 
 std::string Renderer::gl_version() const { return impl_->version; }
@@ -356,6 +377,11 @@ int Renderer::add_model(const ModelData& model) {
     glm::vec2 uv;
   };
   for (const MeshPrimitive& prim : model.primitives) {
+    for (const glm::vec3& pos : prim.positions) {
+      g.lo = g.empty ? pos : glm::min(g.lo, pos);
+      g.hi = g.empty ? pos : glm::max(g.hi, pos);
+      g.empty = false;
+    }
     std::vector<Vertex> verts(prim.positions.size());
     for (size_t i = 0; i < verts.size(); ++i) {
       verts[i].p = prim.positions[i];
@@ -626,11 +652,87 @@ void Renderer::Impl::draw_meshes(const RenderView& v, const glm::mat4& view_proj
   glActiveTexture(GL_TEXTURE0);
 }
 
+void Renderer::Impl::gather_occluders(const RenderView& v, const glm::mat3& to_view) {
+  occluders.clear();
+  const float near = float(v.camera.near_plane);
+  const float inf = std::numeric_limits<float>::infinity();
+  for (const MeshInstance& inst : v.meshes) {
+    if (inst.model < 0 || inst.model >= int(models.size())) continue;
+    const GpuModel& g = models[size_t(inst.model)];
+    if (g.empty) continue;
+    // The same camera-relative transform draw_meshes uses, taken in double before float.
+    glm::dvec3 rel = inst.position - v.camera.position;
+    glm::dmat3 rot = glm::mat3_cast(inst.orientation) * inst.scale;
+    Occluder o{inf, inf, inf, -inf, -inf};
+    float farthest = -inf;
+    bool crosses_near = false;
+    for (int i = 0; i < 8; ++i) {
+      glm::dvec3 corner((i & 1) ? g.hi.x : g.lo.x, (i & 2) ? g.hi.y : g.lo.y, (i & 4) ? g.hi.z : g.lo.z);
+      glm::vec3 c = to_view * glm::vec3(rel + rot * corner);
+      float d = -c.z;
+      o.nearest = std::min(o.nearest, d);
+      farthest = std::max(farthest, d);
+      if (d <= near) {
+        crosses_near = true;
+        continue;
+      }
+      o.x0 = std::min(o.x0, c.x / d);
+      o.x1 = std::max(o.x1, c.x / d);
+      o.y0 = std::min(o.y0, c.y / d);
+      o.y1 = std::max(o.y1, c.y / d);
+    }
+    if (!(farthest > near)) continue;  // wholly in front of the near plane: it draws nothing
+    if (crosses_near) o.x0 = o.y0 = -inf, o.x1 = o.y1 = inf;
+    // Float transforms on the GPU differ from these in the last bits: widen a little.
+    o.nearest -= 1e-4f * std::abs(o.nearest) + 1e-5f;
+    occluders.push_back(o);
+  }
+}
+
+// Whether any opaque surface can lie less than the particle's depth extent behind some pixel
+// of its quad. When none can, every soft-edge method gives exactly 1 there (linear and contrast
+// reach 1 at zb − z ≥ E, average density at E/2, density extent at E·texture alpha), so the
+// particle can skip the depth read and stay bit-identical. The bounds follow
+// shaders/particle.vert: a camera-facing quad is built from view-space axes, so it lies at one
+// view depth, corners within size·√2 of its centre; an axis-locked quad lies in the plane
+// through its centre square to the view ray, corners within √(size² + half_long²), so its view
+// depth varies by at most that times the sine of the ray's angle to the view axis.
+bool Renderer::Impl::soft_can_matter(const ParticleInstance& p, const glm::mat3& to_view, float near) const {
+  glm::vec3 c = to_view * glm::vec3(p.pos[0], p.pos[1], p.pos[2]);
+  float d = -c.z;
+  float size = std::max(p.size, 1e-6f);
+  float extent = p.soft_extent > 0.0f ? p.soft_extent : size;
+  bool locked = p.billboard == uint8_t(Billboard::AxisLocked);
+  float axis_len = std::sqrt(p.axis[0] * p.axis[0] + p.axis[1] * p.axis[1] + p.axis[2] * p.axis[2]);
+  float half_long = locked ? 0.5f * axis_len + size : size;
+  float lateral = std::sqrt(size * size + half_long * half_long) * 1.0001f;
+  float dist = glm::length(c);
+  float sine = dist > 0.0f ? std::sqrt(std::max(0.0f, 1.0f - (c.z / dist) * (c.z / dist))) : 1.0f;
+  float spread = locked ? lateral * std::min(1.0f, sine + 1e-4f) : 0.0f;
+  float reach = d + spread + extent * 1.001f;
+  float z0 = d - spread, z1 = d + spread;
+  bool whole_screen = !(z0 > near);
+  // The quad's footprint in tangent units; pushing it along the view ray (density methods)
+  // keeps the footprint.
+  auto lo = [&](float a) { return a < 0.0f ? a / z0 : a / z1; };
+  auto hi = [&](float b) { return b < 0.0f ? b / z1 : b / z0; };
+  float x0 = whole_screen ? 0.0f : lo(c.x - lateral), x1 = whole_screen ? 0.0f : hi(c.x + lateral);
+  float y0 = whole_screen ? 0.0f : lo(c.y - lateral), y1 = whole_screen ? 0.0f : hi(c.y + lateral);
+  for (const Occluder& o : occluders) {
+    if (!(o.nearest < reach)) continue;
+    if (whole_screen || (o.x0 <= x1 && x0 <= o.x1 && o.y0 <= y1 && y0 <= o.y1)) return true;
+  }
+  return false;
+}
+
 void Renderer::Impl::draw_particles(const RenderView& v, const glm::mat4& view, const glm::mat4& proj, glm::vec2 linearize) {
   auto t0 = std::chrono::steady_clock::now();
   const auto& in = v.particles;
   stats.particles_in = int(in.size());
   glm::vec3 fwd = -glm::vec3(glm::transpose(view)[2]);  // camera −Z in world space
+  const glm::mat3 to_view(view);
+  const float near = float(v.camera.near_plane);
+  gather_occluders(v, to_view);
   upload.clear();
   keys.clear();
   bool any_soft = false, any_contrast = false, any_ordered = false;
@@ -641,8 +743,11 @@ void Renderer::Impl::draw_particles(const RenderView& v, const glm::mat4& view, 
     if (dark || !(depth > -reach)) continue;  // invisible or wholly behind the camera (NaN fails too)
     ParticleInstance q = p;
     if (rs.soft_override >= 0) q.soft_edge = uint8_t(rs.soft_override);
-    any_soft = any_soft || q.soft_edge != 0;
-    any_contrast = any_contrast || q.soft_edge == uint8_t(SoftEdge::Contrast);
+    if (q.soft_edge != 0 && !soft_can_matter(q, to_view, near)) q.soft_edge |= kSoftClear;
+    bool soft = q.soft_edge != 0 && !(q.soft_edge & kSoftClear);
+    stats.soft_shaded += soft;
+    any_soft = any_soft || soft;
+    any_contrast = any_contrast || (soft && q.soft_edge == uint8_t(SoftEdge::Contrast));
     any_ordered = any_ordered || q.color[3] * (1.0f - q.burn) > 0.0f;
     upload.push_back(q);
     keys.push_back(sortable_bits(depth));
@@ -735,7 +840,17 @@ void Renderer::Impl::draw_particles(const RenderView& v, const glm::mat4& view, 
   glBindTexture(GL_TEXTURE_2D, copy_depth);
   glActiveTexture(GL_TEXTURE0);
   glBindVertexArray(particle_vao);
+  if (count_fragments) {
+    if (!fragment_query) glGenQueries(1, &fragment_query);
+    glBeginQuery(GL_SAMPLES_PASSED, fragment_query);
+  }
   glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(upload.size()));
+  if (count_fragments) {
+    glEndQuery(GL_SAMPLES_PASSED);
+    GLuint64 samples = 0;
+    glGetQueryObjectui64v(fragment_query, GL_QUERY_RESULT, &samples);
+    stats.particle_fragments = static_cast<long long>(samples);
+  }
   ++stats.draw_calls;
   ++stats.particle_draw_calls;
   glDepthMask(GL_TRUE);
@@ -894,5 +1009,7 @@ void Renderer::draw_fill_reference(int count) {
 }
 
 void Renderer::finish() { glFinish(); }
+
+void Renderer::count_particle_fragments(bool on) { impl_->count_fragments = on; }
 
 }  // namespace arc

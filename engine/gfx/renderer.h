@@ -45,10 +45,13 @@ struct FrameStats {
   int particles_drawn = 0;   // after dropping invisible ones (zero alpha and zero colour)
   int sorted = 0;            // particles put in back-to-front order
   bool depth_copied = false; // the soft-edge depth copy ran this frame
+  int soft_shaded = 0;       // particles that read the depth copy: soft edges on and an opaque
+                             // mesh within their reach (the others' soft factor is exactly 1)
   int draw_calls = 0;
   int particle_draw_calls = 0;
   double particle_cpu_ms = 0;  // sorting + upload + draw submission
   double particle_gpu_ms = -1; // GL_TIME_ELAPSED of the particle pass of an earlier frame; −1 if unknown
+  long long particle_fragments = -1;  // samples the particle draw blended (count_particle_fragments); −1 if not counted
 };
 
 // Depth mode and settings as the renderer applies them (after falling back where unsupported).
@@ -95,6 +98,9 @@ class Renderer {
   void draw_fill_reference(int count);
   // Blocks until the GPU has finished all submitted work (glFinish), for timing.
   void finish();
+  // For the benchmark: count the fragments the particle draw blends (an occlusion query read
+  // back at the end of the frame, so it stalls; off by default).
+  void count_particle_fragments(bool on);
 
  private:
   struct Impl;

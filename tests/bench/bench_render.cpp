@@ -1,19 +1,30 @@
-// Renderer headline scenes through EGL at 1280×720: soft-edge cost per method, burn blending
-// against plain alpha blending, and the particle pass's blended fill rate against the raw
-// blended fill rate of the same context. Frame times are glFinish-bracketed averages; each
-// comparison is interleaved over several rounds and the best round kept, because the machine
-// is shared and noisy.
+// Renderer headline scenes through EGL at 1280×720, in one run:
+//  - the effect gallery level (levels/gallery.json, every effect, some cutting a ship hull and
+//    the wall) a few seconds in: soft edges off against each method (soft_edge_cost_ratio, the
+//    worst method), burn blending against plain alpha blending (burn_blend_cost_ratio), and
+//    the particle pass's blended pixels per second against the raw blended fill rate of the
+//    same context (particle_fill_efficiency);
+//  - a stress scene where all 4000 particles crowd a wall that fills the screen (the same
+//    figures with the suffix _wall_stress): the worst case for soft edges, every particle near
+//    opaque geometry.
+// Every configuration is timed one glFinish-bracketed frame at a time, interleaved with all the
+// others over many rounds, and keeps its fastest frame, because the machine is shared and noisy.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
 #include <memory>
+#include <vector>
 
 #include <glm/gtc/quaternion.hpp>
 
 #include "bench_registry.h"
 #include "core/rng.h"
+#include "game/app/scene_resources.h"
+#include "game/render/render_view_builder.h"
+#include "game/sim/game.h"
+#include "game/sim/input.h"
 #include "gfx/renderer.h"
 #include "platform/platform.h"
 
@@ -34,33 +45,9 @@ ModelData wall(float w, float h) {
   return m;
 }
 
-// Three premultiplied sprite layers: a soft puff, a hot core with a halo, a spark streak.
-std::vector<Image> sprites() {
-  std::vector<Image> out;
-  const int n = 64;
-  for (int kind = 0; kind < 3; ++kind) {
-    Image img;
-    img.width = img.height = n;
-    img.premultiplied = true;
-    img.rgba.resize(n * n * 4);
-    for (int y = 0; y < n; ++y)
-      for (int x = 0; x < n; ++x) {
-        float dx = (x + 0.5f) / n * 2 - 1, dy = (y + 0.5f) / n * 2 - 1;
-        float r2 = dx * dx + dy * dy;
-        float a = kind == 0 ? std::pow(std::max(0.0f, 1 - r2), 2.0f)
-                  : kind == 1 ? std::min(1.0f, std::exp(-r2 * 12) + 0.4f * std::max(0.0f, 1 - r2))
-                              : std::max(0.0f, 1 - std::abs(dx) * 3) * std::max(0.0f, 1 - dy * dy);
-        uint8_t v = uint8_t(std::lround(std::clamp(a, 0.0f, 1.0f) * 255));
-        for (int c = 0; c < 4; ++c) img.rgba[(y * n + x) * 4 + c] = v;
-      }
-    out.push_back(img);
-  }
-  return out;
-}
-
-// A gallery-like wall of effects: smoke (alpha), fire (half burn), sparks and beams (additive),
-// every soft method, some particles cutting the wall and a ship-sized box.
-RenderView gallery(int wall_model) {
+// A wall of effects: smoke (alpha), fire (half burn), sparks and beams (additive), every soft
+// method, all within a few units of a wall that fills the screen, some behind it.
+RenderView wall_stress(int wall_model) {
   RenderView v;
   v.camera.position = {0, 2, 18};
   v.camera.fov_y_radians = 0.9;
@@ -100,35 +87,125 @@ RenderView gallery(int wall_model) {
   return v;
 }
 
-double frame_ms(Renderer& r, const RenderView& v, int frames) {
-  r.render(v, kWidth, kHeight);
+struct Figures {
+  double hard_ms = 0, worst_soft_ms = 0, alpha_ms = 0, empty_ms = 0, effect_ms = 0, big_ms = 0, fill_ms = 0;
+  long long fragments = 0;  // blended by the particle draw, soft edges per effect
+};
+
+Figures measure(Renderer& r, const RenderView& view) {
+  RenderView no_particles = view;
+  no_particles.particles.clear();
+  RenderView alpha_only = view;
+  for (auto& p : alpha_only.particles) p.burn = 0.0f;
+  // The same fill through the particle pipeline (shader, sprite array, blend): full-screen
+  // particles, which separates the shader's cost from the cost of many small quads.
+  const int quads = 40;
+  RenderView big = no_particles;
+  for (int i = 0; i < quads; ++i) {
+    ParticleInstance p{};
+    glm::dvec3 ahead = view.camera.orientation * glm::dvec3(0, 0, -1);
+    p.pos[0] = float(ahead.x);
+    p.pos[1] = float(ahead.y);
+    p.pos[2] = float(ahead.z);
+    p.size = 2.0f;
+    p.color[0] = p.color[1] = p.color[2] = 0.01f;
+    p.color[3] = 0.05f;
+    big.particles.push_back(p);
+  }
+  RenderSettings base;
+  auto with_soft = [&](int m) {
+    RenderSettings s = base;
+    s.soft_override = m;
+    return s;
+  };
+  RenderSettings big_settings = with_soft(0);
+  big_settings.size_clamp = 4.0f;
+  struct Config {
+    const char* name;
+    const RenderView* view;
+    RenderSettings settings;
+    bool fill_reference = false;  // time draw_fill_reference(quads) after an empty frame
+    double best_ms = 1e30;
+  };
+  const char* names[] = {"off", "linear", "contrast", "average_density", "density_extent"};
+  std::vector<Config> configs;
+  for (int m = 0; m < 5; ++m) configs.push_back({names[m], &view, with_soft(m)});
+  const size_t kAlpha = configs.size();
+  configs.push_back({"burn forced 0", &alpha_only, with_soft(0)});
+  const size_t kEmpty = configs.size();
+  configs.push_back({"no particles", &no_particles, base});
+  const size_t kEffect = configs.size();
+  configs.push_back({"per-effect soft", &view, base});
+  const size_t kBig = configs.size();
+  configs.push_back({"full-screen particles", &big, big_settings});
+  const size_t kFill = configs.size();
+  configs.push_back({"fill reference", &no_particles, base, true});
+
+  const char* env_rounds = std::getenv("ARCFIRE_BENCH_ROUNDS");
+  const int rounds = env_rounds ? std::max(1, std::atoi(env_rounds)) : 16;
+  for (Config& c : configs) {  // warm-up: shader variants compiled, buffers sized
+    r.set_render_settings(c.settings);
+    r.render(*c.view, kWidth, kHeight);
+  }
   r.finish();
-  double t0 = bench::now_seconds();
-  for (int i = 0; i < frames; ++i) r.render(v, kWidth, kHeight);
-  r.finish();
-  return (bench::now_seconds() - t0) * 1000.0 / frames;
+  for (int round = 0; round < rounds; ++round)
+    for (Config& c : configs) {
+      r.set_render_settings(c.settings);
+      double t0 = bench::now_seconds();
+      r.render(*c.view, kWidth, kHeight);
+      if (c.fill_reference) {
+        r.finish();
+        t0 = bench::now_seconds();
+        r.draw_fill_reference(quads);
+      }
+      r.finish();
+      c.best_ms = std::min(c.best_ms, (bench::now_seconds() - t0) * 1000.0);
+    }
+
+  Figures f;
+  for (int m = 0; m < 5; ++m) {
+    r.set_render_settings(configs[size_t(m)].settings);
+    r.render(view, kWidth, kHeight);
+    std::printf("  soft %-16s %8.2f ms/frame, %d of %d particles read the depth copy\n", names[m],
+                configs[size_t(m)].best_ms, r.last_stats().soft_shaded, r.last_stats().particles_drawn);
+    if (m > 0) f.worst_soft_ms = std::max(f.worst_soft_ms, configs[size_t(m)].best_ms);
+  }
+  f.hard_ms = configs[0].best_ms;
+  f.alpha_ms = configs[kAlpha].best_ms;
+  f.empty_ms = configs[kEmpty].best_ms;
+  f.effect_ms = configs[kEffect].best_ms;
+  f.big_ms = configs[kBig].best_ms;
+  f.fill_ms = configs[kFill].best_ms;
+  r.set_render_settings(base);
+  r.count_particle_fragments(true);
+  r.render(view, kWidth, kHeight);
+  f.fragments = r.last_stats().particle_fragments;
+  r.count_particle_fragments(false);
+  std::printf("  burn blend %.2f ms, burn forced 0 %.2f ms, no particles %.2f ms, per-effect soft %.2f ms"
+              " (fastest of %d interleaved rounds)\n",
+              f.hard_ms, f.alpha_ms, f.empty_ms, f.effect_ms, rounds);
+  double raw_px_per_s = double(quads) * kWidth * kHeight / (f.fill_ms * 1e-3);
+  double particle_s = std::max(1e-9, (f.effect_ms - f.empty_ms) * 1e-3);
+  double big_px_per_s = double(quads) * kWidth * kHeight / std::max(1e-9, (f.big_ms - f.empty_ms) * 1e-3);
+  std::printf("  particle pass %.2f ms for %lld blended pixels: %.3g px/s; full-screen particles %.3g px/s;"
+              " raw blended fill %.3g px/s\n",
+              particle_s * 1e3, f.fragments, double(f.fragments) / particle_s, big_px_per_s, raw_px_per_s);
+  return f;
 }
 
-// Screen pixels covered by the particle quads (clipped to the screen), to turn time into
-// blended pixels per second.
-double covered_pixels(const RenderView& v) {
-  double ty = std::tan(v.camera.fov_y_radians * 0.5), tx = ty * kWidth / kHeight;
-  double total = 0;
-  for (const ParticleInstance& p : v.particles) {
-    double d = -p.pos[2];  // the camera looks down −Z with identity orientation
-    if (d <= v.camera.near_plane) continue;
-    double cx = p.pos[0] / (d * tx), cy = p.pos[1] / (d * ty);
-    double hx = p.size / (d * tx), hy = p.size / (d * ty);
-    if (p.billboard == uint8_t(Billboard::AxisLocked)) {
-      double len = std::hypot(p.axis[0], p.axis[1]);
-      hy = (0.5 * len + p.size) / (d * ty);
-    }
-    double x0 = std::max(-1.0, cx - hx), x1 = std::min(1.0, cx + hx);
-    double y0 = std::max(-1.0, cy - hy), y1 = std::min(1.0, cy + hy);
-    if (x1 > x0 && y1 > y0) total += (x1 - x0) * 0.5 * kWidth * (y1 - y0) * 0.5 * kHeight;
-  }
-  return total;
+void report(const Figures& f, const std::string& suffix) {
+  const double quads_px = 40.0 * kWidth * kHeight;
+  double raw_px_per_s = quads_px / (f.fill_ms * 1e-3);
+  double particle_s = std::max(1e-9, (f.effect_ms - f.empty_ms) * 1e-3);
+  double big_s = std::max(1e-9, (f.big_ms - f.empty_ms) * 1e-3);
+  bench::report_metric("soft_edge_cost_ratio" + suffix, f.worst_soft_ms / f.hard_ms);
+  bench::report_metric("burn_blend_cost_ratio" + suffix, f.hard_ms / f.alpha_ms);
+  bench::report_metric("particle_fill_efficiency" + suffix, double(f.fragments) / particle_s / raw_px_per_s);
+  bench::report_metric("particle_shader_fill_ratio" + suffix, quads_px / big_s / raw_px_per_s);
+  bench::report_metric("render_gallery_frame_ms" + suffix, f.effect_ms);
 }
+
+}  // namespace
 
 ARCFIRE_SCENE(render_particle_gallery) {
   std::unique_ptr<HeadlessContext> ctx;
@@ -138,94 +215,38 @@ ARCFIRE_SCENE(render_particle_gallery) {
     std::printf("skipped: no EGL context (%s)\n", e.what());
     return;
   }
+  const std::string root = ARCFIRE_SOURCE_DIR;
   RendererDesc desc;
   desc.offscreen = true;
+  desc.shader_dir = root + "/shaders";
   Renderer r(desc);
   std::printf("context: %s\n", ctx->description().c_str());
-  r.set_sprites(sprites());
-  RenderView view = gallery(r.add_model(wall(60, 30)));
-  RenderView no_particles = view;
-  no_particles.particles.clear();
-  RenderView alpha_only = view;
-  for (auto& p : alpha_only.particles) p.burn = 0.0f;
 
-  RenderSettings base;
+  // The gallery level four seconds in: explosions, beams, sparks, trails and shields all alive.
+  GameOptions options;
+  options.root_dir = root;
+  Game game = Game::load_level(root + "/levels/gallery.json", options);
+  for (int t = 0; t < 240; ++t) game.step(InputFrame{});
+  load_scene_resources(r, game.world(), root);
+  CameraSettings camera;
+  camera.show_hud = false;  // the labels are HUD text, drawn after the particle pass
+  RenderView gallery;
+  build_render_view(game.world(), 1.0, camera, kWidth, kHeight, gallery);
   if (const char* dir = std::getenv("ARCFIRE_GFX_DUMP")) {
-    r.render(view, kWidth, kHeight);
+    r.render(gallery, kWidth, kHeight);
     save_image(std::string(dir) + "/bench_gallery.png", r.read_pixels());
   }
-  const int frames = 6, rounds = 3;
-  const char* names[] = {"off", "linear", "contrast", "average_density", "density_extent"};
-  double best[5] = {1e30, 1e30, 1e30, 1e30, 1e30};
-  double burn_best = 1e30, alpha_best = 1e30, empty_best = 1e30, effect_best = 1e30;
-  for (int round = 0; round < rounds; ++round) {
-    for (int m = 0; m < 5; ++m) {
-      RenderSettings s = base;
-      s.soft_override = m;
-      r.set_render_settings(s);
-      best[m] = std::min(best[m], frame_ms(r, view, frames));
-    }
-    RenderSettings hard = base;
-    hard.soft_override = 0;
-    r.set_render_settings(hard);
-    burn_best = std::min(burn_best, frame_ms(r, view, frames));
-    alpha_best = std::min(alpha_best, frame_ms(r, alpha_only, frames));
-    empty_best = std::min(empty_best, frame_ms(r, no_particles, frames));
-    r.set_render_settings(base);
-    effect_best = std::min(effect_best, frame_ms(r, view, frames));
-  }
-  double worst = 0;
-  for (int m = 0; m < 5; ++m) {
-    std::printf("  soft %-16s %8.2f ms/frame\n", names[m], best[m]);
-    if (m > 0) worst = std::max(worst, best[m]);
-  }
-  std::printf("  burn blend %.2f ms, burn forced 0 %.2f ms, no particles %.2f ms, per-effect soft %.2f ms\n", burn_best,
-              alpha_best, empty_best, effect_best);
-  bench::report_metric("soft_edge_cost_ratio", worst / best[0]);
-  bench::report_metric("burn_blend_cost_ratio", burn_best / alpha_best);
+  std::printf(" gallery level (levels/gallery.json at tick 240, %zu particles, %zu meshes):\n", gallery.particles.size(),
+              gallery.meshes.size());
+  report(measure(r, gallery), "");
 
-  // Raw blended fill: full-screen quads through the same context and framebuffer.
-  const int quads = 40;
-  double fill_best = 1e30;
-  for (int round = 0; round < rounds; ++round) {
-    r.render(no_particles, kWidth, kHeight);
-    r.finish();
-    double t0 = bench::now_seconds();
-    r.draw_fill_reference(quads);
-    r.finish();
-    fill_best = std::min(fill_best, bench::now_seconds() - t0);
+  RenderView stress = wall_stress(r.add_model(wall(60, 30)));
+  if (const char* dir = std::getenv("ARCFIRE_GFX_DUMP")) {
+    r.render(stress, kWidth, kHeight);
+    save_image(std::string(dir) + "/bench_wall_stress.png", r.read_pixels());
   }
-  double raw_px_per_s = double(quads) * kWidth * kHeight / fill_best;
-  double particle_s = std::max(1e-9, (effect_best - empty_best) * 1e-3);
-  double particle_px_per_s = covered_pixels(view) / particle_s;
-  // The same fill through the particle pipeline (shader, sprite array, blend): full-screen
-  // particles, which separates the shader's cost from the cost of many small quads.
-  RenderView big = no_particles;
-  RenderSettings hard = base;
-  hard.soft_override = 0;
-  hard.size_clamp = 4.0f;
-  r.set_render_settings(hard);
-  for (int i = 0; i < quads; ++i) {
-    ParticleInstance p{};
-    p.pos[2] = -1.0f;
-    p.size = 2.0f;
-    p.color[0] = p.color[1] = p.color[2] = 0.01f;
-    p.color[3] = 0.05f;
-    big.particles.push_back(p);
-  }
-  double big_best = 1e30, big_empty = 1e30;
-  for (int round = 0; round < rounds; ++round) {
-    big_best = std::min(big_best, frame_ms(r, big, frames));
-    big_empty = std::min(big_empty, frame_ms(r, no_particles, frames));
-  }
-  double big_px_per_s = double(quads) * kWidth * kHeight / std::max(1e-9, (big_best - big_empty) * 1e-3);
-  std::printf("  full-screen particles through the particle pipeline: %.3g px/s\n", big_px_per_s);
-  bench::report_metric("particle_shader_fill_ratio", big_px_per_s / raw_px_per_s);
-  std::printf("  particle pass %.2f ms for %.0f covered pixels: %.3g px/s; raw blended fill %.3g px/s\n",
-              particle_s * 1e3, covered_pixels(view), particle_px_per_s, raw_px_per_s);
-  bench::report_metric("particle_fill_efficiency", particle_px_per_s / raw_px_per_s);
-  bench::report_metric("render_gallery_frame_ms", effect_best);
+  std::printf(" wall stress (%zu particles crowding a wall that fills the screen):\n", stress.particles.size());
+  report(measure(r, stress), "_wall_stress");
 }
 
-}  // namespace
 }  // namespace arc

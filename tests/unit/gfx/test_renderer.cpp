@@ -293,12 +293,72 @@ TEST(Renderer, DepthCopyOnlyWhenASoftParticleIsVisible) {
   EXPECT_EQ(r->last_stats().particles_drawn, 1);
   v.particles.push_back(particle({0, 0, -6}, 1.0f, glm::vec3(1), 0.5f, 0.0f, SoftEdge::Linear));
   r->render(v, 32, 32);
-  EXPECT_TRUE(r->last_stats().depth_copied);
+  EXPECT_FALSE(r->last_stats().depth_copied) << "no opaque surface anywhere: soft edges change nothing";
+  v.meshes.push_back({r->add_model(test::wall_model(40, 40, {0.5f, 0.5f, 0.5f, 1}, glm::vec3(0))), {0, 0, -6.5}});
+  r->render(v, 32, 32);
+  EXPECT_TRUE(r->last_stats().depth_copied) << "the soft particle reaches the wall";
+  EXPECT_EQ(r->last_stats().soft_shaded, 1);
   RenderSettings s = test::plain_settings();
   s.soft_override = int(SoftEdge::Off);
   r->set_render_settings(s);
   r->render(v, 32, 32);
   EXPECT_FALSE(r->last_stats().depth_copied) << "the global override turns soft edges off";
+}
+
+// Particles no opaque surface comes within reach of skip the depth read, and must look exactly
+// as with soft edges off; those that do reach one must still be soft. The reach test is
+// conservative: a tilted axis-locked segment whose far end pierces the wall, a particle beside a
+// wall that covers only half the screen, and one in front of it.
+TEST(Renderer, SoftEdgesSkipParticlesNoSurfaceCanReach) {
+  REQUIRE_CONTEXT();
+  auto r = make_renderer();
+  r->set_sprites({test::soft_sprite(64)});
+  const int wall = r->add_model(test::wall_model(6, 20, {0.3f, 0.4f, 0.5f, 1}, glm::vec3(0)));
+  RenderView v = base_view();
+  v.meshes.push_back({wall, {-3.2, 0, -10}});  // the left half of the view, at depth 10
+  auto render = [&](SoftEdge m) {
+    RenderSettings s = test::plain_settings();
+    s.soft_override = int(m);
+    r->set_render_settings(s);
+    r->render(v, 96, 64);
+    return r->read_pixels();
+  };
+  struct Case {
+    const char* what;
+    ParticleInstance p;
+    bool reaches;
+  };
+  // An axis-locked quad lies square to the view ray through its centre, so off the view axis it
+  // tilts in depth. This one's centre is 1.1 in front of the wall, more than five times its
+  // size, but its far end pierces the wall: only the tilt in the reach test catches it.
+  const glm::vec3 centre(-4.0f, 0.0f, -8.9f), along = glm::normalize(glm::vec3(-centre.z, 0.0f, centre.x));
+  ParticleInstance segment = particle(centre, 0.3f, glm::vec3(0.4f, 0.7f, 1.0f), 0.9f, 0.0f);
+  segment.billboard = uint8_t(Billboard::AxisLocked);
+  segment.axis[0] = 7.0f * along.x;
+  segment.axis[2] = 7.0f * along.z;
+  Case cases[] = {
+      {"in front of the wall", particle({-2.0f, 0.0f, -6.0f}, 0.8f, glm::vec3(1, 0.5f, 0.2f), 0.7f, 0.0f), false},
+      {"beside the wall at its depth", particle({3.0f, 0.0f, -10.0f}, 0.8f, glm::vec3(1, 0.5f, 0.2f), 0.7f, 0.0f), false},
+      {"grazing the wall", particle({-2.0f, 0.0f, -9.8f}, 0.8f, glm::vec3(1, 0.5f, 0.2f), 0.7f, 0.0f), true},
+      {"just in front of the wall", particle({-2.0f, 0.0f, -9.5f}, 0.8f, glm::vec3(1, 0.5f, 0.2f), 0.7f, 0.0f), true},
+      {"axis-locked segment piercing the wall", segment, true},
+  };
+  for (const Case& c : cases) {
+    v.particles = {c.p};
+    Image off = render(SoftEdge::Off);
+    test::dump_if_asked(std::string("reach_off_") + c.what, off);
+    for (SoftEdge m : {SoftEdge::Linear, SoftEdge::Contrast, SoftEdge::AverageDensity, SoftEdge::DensityExtent}) {
+      Image soft = render(m);
+      test::dump_if_asked(std::string("reach_") + std::to_string(int(m)) + "_" + c.what, soft);
+      EXPECT_EQ(r->last_stats().soft_shaded, c.reaches ? 1 : 0) << c.what << ", method " << int(m);
+      EXPECT_EQ(r->last_stats().depth_copied, c.reaches) << c.what << ", method " << int(m);
+      if (!c.reaches) {
+        EXPECT_EQ(compare_images(off, soft).max_diff, 0) << c.what << ", method " << int(m);
+      } else if (m == SoftEdge::Linear) {
+        EXPECT_GT(compare_images(off, soft).max_diff, 4) << c.what << ": soft edges must show";
+      }
+    }
+  }
 }
 
 TEST(Renderer, SortingPutsTheNearParticleOnTop) {
