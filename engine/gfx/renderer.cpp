@@ -733,14 +733,33 @@ void Renderer::Impl::draw_particles(const RenderView& v, const glm::mat4& view, 
   const glm::mat3 to_view(view);
   const float near = float(v.camera.near_plane);
   gather_occluders(v, to_view);
+  // The four side planes of the view frustum in view space, as unit normals pointing out: a
+  // particle whose quad lies wholly outside one of them is not uploaded. Clusters are culled
+  // whole before this (game/render); this drops the particles of a visible cluster that are off
+  // screen, such as the far ends of a long beam, which would cost vertex work and setup.
+  const float tx = 1.0f / proj[0][0], ty = 1.0f / proj[1][1];
+  const glm::vec3 planes[4] = {glm::normalize(glm::vec3(1, 0, tx)), glm::normalize(glm::vec3(-1, 0, tx)),
+                               glm::normalize(glm::vec3(0, 1, ty)), glm::normalize(glm::vec3(0, -1, ty))};
   upload.clear();
   keys.clear();
   bool any_soft = false, any_contrast = false, any_ordered = false;
   for (const ParticleInstance& p : in) {
     bool dark = p.color[0] <= 0 && p.color[1] <= 0 && p.color[2] <= 0 && p.color[3] <= 0;
     float depth = p.pos[0] * fwd.x + p.pos[1] * fwd.y + p.pos[2] * fwd.z;
-    float reach = std::max(p.size, 0.0f) + std::sqrt(p.axis[0] * p.axis[0] + p.axis[1] * p.axis[1] + p.axis[2] * p.axis[2]);
+    float axis_len = std::sqrt(p.axis[0] * p.axis[0] + p.axis[1] * p.axis[1] + p.axis[2] * p.axis[2]);
+    float reach = std::max(p.size, 0.0f) + axis_len;
     if (dark || !(depth > -reach)) continue;  // invisible or wholly behind the camera (NaN fails too)
+    // Corners lie within √(size² + half_long²) of the centre (shaders/particle.vert), whatever
+    // the billboard, and the density methods' push along the view ray keeps the footprint.
+    float size = std::max(p.size, 0.0f);
+    float half_long = p.billboard == uint8_t(Billboard::AxisLocked) ? 0.5f * axis_len + size : size;
+    float corner = std::sqrt(size * size + half_long * half_long) * 1.001f + 1e-6f;
+    glm::vec3 c = to_view * glm::vec3(p.pos[0], p.pos[1], p.pos[2]);
+    if (glm::dot(planes[0], c) > corner || glm::dot(planes[1], c) > corner || glm::dot(planes[2], c) > corner ||
+        glm::dot(planes[3], c) > corner) {
+      ++stats.culled_offscreen;
+      continue;
+    }
     ParticleInstance q = p;
     if (rs.soft_override >= 0) q.soft_edge = uint8_t(rs.soft_override);
     if (q.soft_edge != 0 && !soft_can_matter(q, to_view, near)) q.soft_edge |= kSoftClear;

@@ -42,7 +42,8 @@ struct RendererDesc {
 
 struct FrameStats {
   int particles_in = 0;      // instances handed in by the view
-  int particles_drawn = 0;   // after dropping invisible ones (zero alpha and zero colour)
+  int particles_drawn = 0;   // after dropping invisible ones (zero alpha and zero colour) and culling
+  int culled_offscreen = 0;  // particles whose quad lies wholly outside the view frustum's sides
   int sorted = 0;            // particles put in back-to-front order
   bool depth_copied = false; // the soft-edge depth copy ran this frame
   int soft_shaded = 0;       // particles that read the depth copy: soft edges on and an opaque

@@ -361,6 +361,31 @@ TEST(Renderer, SoftEdgesSkipParticlesNoSurfaceCanReach) {
   }
 }
 
+// Particles wholly outside the frustum's sides are not uploaded; one whose centre is off screen
+// but whose quad (or axis-locked segment) reaches in is kept and shows at the edge.
+TEST(Renderer, CullsOnlyParticlesWhollyOffScreen) {
+  REQUIRE_CONTEXT();
+  auto r = make_renderer();
+  RenderView v = base_view();
+  const float tan_x = std::tan(0.45f) * 1.0f;  // square 32×32 view: horizontal half-angle = vertical
+  const float edge = 10.0f * tan_x;              // the right edge at depth 10
+  v.particles.push_back(particle({edge + 3.0f, 0, -10}, 1.0f, glm::vec3(1), 1.0f, 0.0f));   // off by 2 quad sizes
+  v.particles.push_back(particle({0, -edge - 3.0f, -10}, 1.0f, glm::vec3(1), 1.0f, 0.0f));  // below
+  v.particles.push_back(particle({edge + 0.5f, 0, -10}, 1.0f, glm::vec3(1, 0, 0), 1.0f, 0.0f));  // reaches in
+  ParticleInstance beam = particle({-edge - 2.0f, 5.0f, -10}, 0.3f, glm::vec3(0, 1, 0), 1.0f, 1.0f);
+  beam.billboard = uint8_t(Billboard::AxisLocked);
+  beam.axis[0] = 6.0f;  // centre off the left edge, the segment runs 1 unit into the view
+  v.particles.push_back(beam);
+  r->render(v, 32, 32);
+  EXPECT_EQ(r->last_stats().culled_offscreen, 2);
+  EXPECT_EQ(r->last_stats().particles_drawn, 2);
+  Image img = r->read_pixels();
+  EXPECT_GT(channel(img, 31, 16, 0), 0.3f) << "the red particle reaching in from the right";
+  float green = 0;
+  for (int y = 0; y < 32; ++y) green = std::max(green, channel(img, 0, y, 1));
+  EXPECT_GT(green, 0.3f) << "the beam reaching in from the left";
+}
+
 TEST(Renderer, SortingPutsTheNearParticleOnTop) {
   REQUIRE_CONTEXT();
   auto r = make_renderer();
