@@ -26,10 +26,12 @@ void main() {
   vec4 tex = textureLod(u_sprites, vec3(v_uv, v_aux.y), v_aux.z);
   float k = clamp((v_depth - u_near) * u_inv_near_fade, 0.0, 1.0);
 #if SOFT
-  // The depth read is skipped for a whole particle when no opaque surface is within its reach or
-  // its method is off (inv_extent 0, a flat value, so the rasteriser skips it for all pixels at
-  // once); the arithmetic after it then gives exactly 1. Only the read sits in the branch: a
-  // larger branch body made llvmpipe pay for the read on every pixel.
+  // Only particles an opaque surface can reach read the depth copy: the renderer gives the
+  // others (and method off) inv_extent 0, and the arithmetic below then gives exactly 1. The
+  // condition is flat, so a GPU skips the read per primitive; llvmpipe was measured to pay for
+  // the read on every pixel of the draw whatever the branch, so there the saving is the frames
+  // where no particle needs soft edges at all (the renderer then picks the hard program and
+  // skips the depth copy).
   float d = 0.0;
   if (v_soft.y != 0.0) d = texelFetch(u_scene_depth, ivec2(gl_FragCoord.xy), 0).r;
   // (zb − z − offset)/extent + bias, zb the opaque view depth (huge where there is none).

@@ -108,11 +108,11 @@ struct GpuModel {
   bool empty = true;
 };
 
-// An opaque mesh as the particle pass sees it: the nearest view depth of its box and the box's
+// An opaque mesh as the particle pass sees it: the view depth range of its box and the box's
 // screen rectangle in tangent units (x/depth, y/depth); infinite when the box crosses the near
 // plane.
 struct Occluder {
-  float nearest;
+  float nearest, farthest;
   float x0, y0, x1, y1;
 };
 
@@ -663,15 +663,14 @@ void Renderer::Impl::gather_occluders(const RenderView& v, const glm::mat3& to_v
     // The same camera-relative transform draw_meshes uses, taken in double before float.
     glm::dvec3 rel = inst.position - v.camera.position;
     glm::dmat3 rot = glm::mat3_cast(inst.orientation) * inst.scale;
-    Occluder o{inf, inf, inf, -inf, -inf};
-    float farthest = -inf;
+    Occluder o{inf, -inf, inf, inf, -inf, -inf};
     bool crosses_near = false;
     for (int i = 0; i < 8; ++i) {
       glm::dvec3 corner((i & 1) ? g.hi.x : g.lo.x, (i & 2) ? g.hi.y : g.lo.y, (i & 4) ? g.hi.z : g.lo.z);
       glm::vec3 c = to_view * glm::vec3(rel + rot * corner);
       float d = -c.z;
       o.nearest = std::min(o.nearest, d);
-      farthest = std::max(farthest, d);
+      o.farthest = std::max(o.farthest, d);
       if (d <= near) {
         crosses_near = true;
         continue;
@@ -681,18 +680,22 @@ void Renderer::Impl::gather_occluders(const RenderView& v, const glm::mat3& to_v
       o.y0 = std::min(o.y0, c.y / d);
       o.y1 = std::max(o.y1, c.y / d);
     }
-    if (!(farthest > near)) continue;  // wholly in front of the near plane: it draws nothing
+    if (!(o.farthest > near)) continue;  // wholly in front of the near plane: it draws nothing
     if (crosses_near) o.x0 = o.y0 = -inf, o.x1 = o.y1 = inf;
     // Float transforms on the GPU differ from these in the last bits: widen a little.
     o.nearest -= 1e-4f * std::abs(o.nearest) + 1e-5f;
+    o.farthest += 1e-4f * std::abs(o.farthest) + 1e-5f;
     occluders.push_back(o);
   }
 }
 
-// Whether any opaque surface can lie less than the particle's depth extent behind some pixel
-// of its quad. When none can, every soft-edge method gives exactly 1 there (linear and contrast
-// reach 1 at zb − z ≥ E, average density at E/2, density extent at E·texture alpha), so the
-// particle can skip the depth read and stay bit-identical. The bounds follow
+// Whether an opaque surface can lie, at some pixel of the particle's quad, less than its depth
+// extent E behind the quad, or between the quad and where the density methods push it (E/2 for
+// average density, E for density extent, towards the camera). Behind that range every method
+// gives exactly 1 (linear and contrast reach 1 at zb − z ≥ E, average density at E/2, density
+// extent at E·texture alpha); in front of it the depth test rejects the fragment whatever the
+// factor. When no mesh box reaches into the range, the particle can skip the depth read and
+// stay bit-identical. The bounds follow
 // shaders/particle.vert: a camera-facing quad is built from view-space axes, so it lies at one
 // view depth, corners within size·√2 of its centre; an axis-locked quad lies in the plane
 // through its centre square to the view ray, corners within √(size² + half_long²), so its view
@@ -710,6 +713,11 @@ bool Renderer::Impl::soft_can_matter(const ParticleInstance& p, const glm::mat3&
   float sine = dist > 0.0f ? std::sqrt(std::max(0.0f, 1.0f - (c.z / dist) * (c.z / dist))) : 1.0f;
   float spread = locked ? lateral * std::min(1.0f, sine + 1e-4f) : 0.0f;
   float reach = d + spread + extent * 1.001f;
+  uint8_t method = p.soft_edge & ~kSoftClear;
+  float push = method == uint8_t(SoftEdge::AverageDensity) ? 0.5f * extent
+               : method == uint8_t(SoftEdge::DensityExtent) ? extent
+                                                           : 0.0f;
+  float front = d - spread - push * 1.001f;
   float z0 = d - spread, z1 = d + spread;
   bool whole_screen = !(z0 > near);
   // The quad's footprint in tangent units; pushing it along the view ray (density methods)
@@ -719,7 +727,7 @@ bool Renderer::Impl::soft_can_matter(const ParticleInstance& p, const glm::mat3&
   float x0 = whole_screen ? 0.0f : lo(c.x - lateral), x1 = whole_screen ? 0.0f : hi(c.x + lateral);
   float y0 = whole_screen ? 0.0f : lo(c.y - lateral), y1 = whole_screen ? 0.0f : hi(c.y + lateral);
   for (const Occluder& o : occluders) {
-    if (!(o.nearest < reach)) continue;
+    if (!(o.nearest < reach) || !(o.farthest > front)) continue;
     if (whole_screen || (o.x0 <= x1 && x0 <= o.x1 && o.y0 <= y1 && y0 <= o.y1)) return true;
   }
   return false;

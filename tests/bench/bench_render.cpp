@@ -6,7 +6,9 @@
 //    same context (particle_fill_efficiency);
 //  - a stress scene where all 4000 particles crowd a wall that fills the screen (the same
 //    figures with the suffix _wall_stress): the worst case for soft edges, every particle near
-//    opaque geometry.
+//    opaque geometry;
+//  - the arena battle ten seconds in from the player's chase camera (suffix _battle): what
+//    soft edges cost in ordinary play.
 // Every configuration is timed one glFinish-bracketed frame at a time, interleaved with all the
 // others over many rounds, and keeps its fastest frame, because the machine is shared and noisy.
 #include <algorithm>
@@ -247,6 +249,22 @@ ARCFIRE_SCENE(render_particle_gallery) {
   }
   std::printf(" wall stress (%zu particles crowding a wall that fills the screen):\n", stress.particles.size());
   report(measure(r, stress), "_wall_stress");
+
+  // Ordinary play: the arena battle ten seconds in, from the player's chase camera. Most
+  // particles are out in space; soft edges cost only where one meets a hull.
+  Renderer battle_renderer(desc);
+  Game battle = Game::load_level(root + "/levels/arena.json", options);
+  for (int t = 0; t < 600; ++t) battle.step(InputFrame{});
+  load_scene_resources(battle_renderer, battle.world(), root);
+  RenderView arena;
+  build_render_view(battle.world(), 1.0, camera, kWidth, kHeight, arena);
+  if (const char* dir = std::getenv("ARCFIRE_GFX_DUMP")) {
+    battle_renderer.render(arena, kWidth, kHeight);
+    save_image(std::string(dir) + "/bench_battle.png", battle_renderer.read_pixels());
+  }
+  std::printf(" arena battle (levels/arena.json at tick 600, chase camera, %zu particles, %zu meshes):\n",
+              arena.particles.size(), arena.meshes.size());
+  report(measure(battle_renderer, arena), "_battle");
 }
 
 }  // namespace arc
