@@ -861,6 +861,7 @@ void Renderer::Impl::draw_particles(const RenderView& v, const glm::mat4& view, 
   glUniform1f(particle.loc("u_viewport_h"), float(scene_h));
   glUniform1i(particle.loc("u_sprites"), 0);
   glUniform1i(particle.loc("u_scene_depth"), 1);
+  glUniform2f(particle.loc("u_inv_depth_size"), 1.0f / float(scene_w), 1.0f / float(scene_h));
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D_ARRAY, sprite_tex);
   glActiveTexture(GL_TEXTURE1);
