@@ -259,53 +259,8 @@ void ParticleWorld::load(const uint8_t* data, size_t size) {
 }
 
 void ParticleWorld::hash_summary(FastHasher& out) const {
-  const ParticleWorldState& w = ParticleWorldAccess::state(*this);
   FastHasher h;  // local: kept in registers (fast_hash.h)
-  h.add_u64(w.tick);
-  h.add_u64(w.next_serial);
-  h.add_u64(w.live_particles);
-  h.add_u64(w.refused);
-  h.add_u64(w.skipped);
-  h.add_u64(w.owners.size());
-  for (const auto& [id, t] : w.owners) {
-    h.add_u64(id);
-    h.add_vec(t.position);
-    h.add_quat(t.orientation);
-    h.add_vec(t.velocity);
-  }
-  h.add_u64(w.slots.size());
-  h.add_u64(w.free_slots.size());
-  for (uint32_t s : w.free_slots) h.add_u64(s);
-  for (const Cluster& c : w.slots) {
-    h.add_u64((uint64_t(c.generation) << 1) | uint64_t(c.alive));
-    if (!c.alive) continue;
-    // Everything a cluster's particles are a closed-form function of: the RNG stream (serial),
-    // the definition, the age origin, the frame, the emitter's running state and counters.
-    h.add_u64(c.serial);
-    h.add_str(c.effect->name);
-    h.add_u64(c.def_index);
-    h.add_u64(c.spawn_tick);
-    h.add_u64(c.owner);
-    h.add_vec(c.local_position);
-    h.add_quat(c.local_orientation);
-    h.add_vec(c.world_origin);
-    h.add_vec(c.spawn_velocity);
-    h.add_vec(c.last_emit_position);
-    h.add_f64(c.scale);
-    h.add_f64(c.intensity);
-    h.add_i64(c.priority);
-    h.add_u64(c.pool.count());
-    h.add_u64((uint64_t(c.next_uid) << 1) | uint64_t(c.emitting));
-    h.add_f64(c.emit_accumulator);
-    h.add_u64(c.flash_tick);
-    h.add_u64(c.flash_ticks);
-    h.add_vec(c.flash_direction);
-    h.add_u64(c.lightning.epoch);
-    h.add_f64(c.lightning.cut);
-    h.add_vec(c.lightning.direction);
-    h.add_u64(c.lightning.points.size());
-    h.add_u64((c.animated_tick << 1) | uint64_t(c.culled));
-  }
+  hash_world_state(ParticleWorldAccess::state(*this), h, [&](const Cluster& c) { h.add_u64(c.pool.count()); });
   out.add_u64(h.value());
 }
 

@@ -581,54 +581,12 @@ ParticleStats ParticleWorld::stats() const {
 }
 
 void ParticleWorld::hash(StateHasher& h) const {
-  const Impl& w = *impl_;
-  h.add_u64(w.tick);
-  h.add_u64(w.next_serial);
-  h.add_u64(w.live_particles);
-  h.add_u64(w.refused);
-  h.add_u64(w.skipped);
-  for (const auto& [id, t] : w.owners) {
-    h.add_u64(id);
-    h.add_vec(t.position);
-    h.add_quat(t.orientation);
-    h.add_vec(t.velocity);
-  }
-  for (uint32_t s : w.free_slots) h.add_u64(s);
-  for (const Cluster& c : w.slots) {
-    h.add_u64(c.generation);
-    h.add_bool(c.alive);
-    if (!c.alive) continue;
-    h.add_u64(c.serial);
-    h.add_str(c.effect->name);
-    h.add_u64(c.def_index);
-    h.add_u64(c.spawn_tick);
-    h.add_u64(c.owner);
-    h.add_vec(c.local_position);
-    h.add_quat(c.local_orientation);
-    h.add_vec(c.world_origin);
-    h.add_vec(c.spawn_velocity);
-    h.add_vec(c.last_emit_position);
-    h.add_f64(c.scale);
-    h.add_f64(c.intensity);
-    h.add_i64(c.priority);
-    h.add_f64(c.emit_accumulator);
-    h.add_bool(c.emitting);
-    h.add_u64(c.next_uid);
-    h.add_vec(c.flash_direction);
-    h.add_u64(c.flash_tick);
-    h.add_u64(c.flash_ticks);
-    h.add_vec(c.lightning.origin);
-    h.add_vec(c.lightning.direction);
-    h.add_u64(c.lightning.points.size());
+  hash_world_state(*impl_, h, [&](const Cluster& c) {
     for (const glm::dvec3& p : c.lightning.points) h.add_vec(p);
-    h.add_u64(c.lightning.epoch);
-    h.add_f64(c.lightning.cut);
-    h.add_u64(c.animated_tick);
-    h.add_bool(c.culled);
     h.add_vec(c.bound_center);
     h.add_f64(c.bound_radius);
     hash_pool(c.pool, h);
-  }
+  });
 }
 
 uint64_t ParticleWorld::tick() const { return impl_->tick; }

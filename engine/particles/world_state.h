@@ -44,6 +44,60 @@ struct ParticleWorldState {
   }
 };
 
+// The world's counters, owner transforms and slot table, then for every live cluster all that
+// its particles are a closed-form function of (RNG stream, definition, age origin, frame,
+// emitter state, counters). Shared by the full hash (ParticleWorld::hash, which adds the
+// lightning polylines, bounds and every particle) and the per-tick summary
+// (ParticleWorld::hash_summary, which adds the particle counts); Hasher is StateHasher or
+// FastHasher. `per_cluster(c)` runs after each live cluster's fields.
+template <class Hasher, class PerCluster>
+void hash_world_state(const ParticleWorldState& w, Hasher& h, PerCluster&& per_cluster) {
+  h.add_u64(w.tick);
+  h.add_u64(w.next_serial);
+  h.add_u64(w.live_particles);
+  h.add_u64(w.refused);
+  h.add_u64(w.skipped);
+  h.add_u64(w.owners.size());
+  for (const auto& [id, t] : w.owners) {
+    h.add_u64(id);
+    h.add_vec(t.position);
+    h.add_quat(t.orientation);
+    h.add_vec(t.velocity);
+  }
+  h.add_u64(w.slots.size());
+  h.add_u64(w.free_slots.size());
+  for (uint32_t s : w.free_slots) h.add_u64(s);
+  for (const Cluster& c : w.slots) {
+    h.add_u64((uint64_t(c.generation) << 1) | uint64_t(c.alive));
+    if (!c.alive) continue;
+    h.add_u64(c.serial);
+    h.add_str(c.effect->name);
+    h.add_u64(c.def_index);
+    h.add_u64(c.spawn_tick);
+    h.add_u64(c.owner);
+    h.add_vec(c.local_position);
+    h.add_quat(c.local_orientation);
+    h.add_vec(c.world_origin);
+    h.add_vec(c.spawn_velocity);
+    h.add_vec(c.last_emit_position);
+    h.add_f64(c.scale);
+    h.add_f64(c.intensity);
+    h.add_i64(c.priority);
+    h.add_u64((uint64_t(c.next_uid) << 1) | uint64_t(c.emitting));
+    h.add_f64(c.emit_accumulator);
+    h.add_u64(c.flash_tick);
+    h.add_u64(c.flash_ticks);
+    h.add_vec(c.flash_direction);
+    h.add_u64(c.lightning.epoch);
+    h.add_f64(c.lightning.cut);
+    h.add_vec(c.lightning.origin);
+    h.add_vec(c.lightning.direction);
+    h.add_u64(c.lightning.points.size());
+    h.add_u64((c.animated_tick << 1) | uint64_t(c.culled));
+    per_cluster(c);
+  }
+}
+
 // Every particle of a pool folded into `h` (the full hash); particle_serialize.cpp. Words go
 // through a local FastHasher (particles/fast_hash.h), several times faster than StateHasher.
 void hash_pool(const ParticlePool& pool, StateHasher& h);
