@@ -1,13 +1,10 @@
 #version 330 core
-// One instance per ParticleInstance (particles/render_output.h); gl_VertexID 0..3 picks the
-// quad corner of a triangle strip. All vectors are camera-relative, built in view space so
-// the quad always faces the camera and the degenerate cases stay finite.
-layout(location = 0) in vec4 i_pos_size;
-layout(location = 1) in vec4 i_axis_rot;
-layout(location = 2) in vec4 i_color;
-layout(location = 3) in vec2 i_burn_extent;
-layout(location = 4) in uint i_sprite;
-layout(location = 5) in uvec2 i_soft_board;
+// Vertex pulling: four vertices per ParticleInstance (particles/render_output.h), fetched from
+// the frame's particle buffer as a buffer texture (four RGBA32UI texels each); gl_VertexID / 4
+// picks the particle and gl_VertexID % 4 the quad corner, two triangles through a static index
+// buffer. All vectors are camera-relative, built in view space so the quad always faces the
+// camera and the degenerate cases stay finite.
+uniform usamplerBuffer u_particles;
 uniform mat4 u_view;        // rotation only
 uniform mat4 u_proj;
 uniform float u_tan_half_y; // tan(fov_y / 2)
@@ -30,6 +27,14 @@ flat out vec3 v_aux;         // contrast (0/1), sprite layer, texture LOD
 const float kEps = 1e-6;
 
 void main() {
+  int first = (gl_VertexID >> 2) * 4;
+  uvec4 w3 = texelFetch(u_particles, first + 3);
+  vec4 i_pos_size = uintBitsToFloat(texelFetch(u_particles, first));
+  vec4 i_axis_rot = uintBitsToFloat(texelFetch(u_particles, first + 1));
+  vec4 i_color = uintBitsToFloat(texelFetch(u_particles, first + 2));
+  vec2 i_burn_extent = uintBitsToFloat(w3.xy);
+  uint i_sprite = w3.z & 0xFFFFu;                              // uint16 sprite
+  uvec2 i_soft_board = uvec2((w3.z >> 16) & 0xFFu, w3.z >> 24);  // uint8 soft_edge, uint8 billboard
   vec2 corner = vec2((gl_VertexID & 1) != 0 ? 1.0 : -1.0, (gl_VertexID & 2) != 0 ? 1.0 : -1.0);
   vec3 c = (u_view * vec4(i_pos_size.xyz, 1.0)).xyz;
   float dist = max(-c.z, u_near);

@@ -195,8 +195,10 @@ struct Renderer::Impl {
   uint64_t star_seed = ~0ull;
   glm::vec3 lobe_a{1, 0, 0}, lobe_b{0, 1, 0};
 
-  GLuint particle_vao = 0, particle_vbo = 0;
-  size_t particle_capacity = 0;
+  GLuint particle_vao = 0, particle_vbo = 0, particle_ibo = 0, particle_tbo = 0;
+  size_t particle_capacity = 0;  // bytes in particle_vbo
+  size_t index_capacity = 0;     // particles particle_ibo has indices for
+  size_t max_particles_per_draw = 0;  // GL_MAX_TEXTURE_BUFFER_SIZE / 4
   std::vector<ParticleInstance> upload;
   std::vector<uint32_t> keys, order;
   std::vector<Occluder> occluders;
@@ -275,24 +277,23 @@ Renderer::Renderer(const RendererDesc& desc) : impl_(std::make_unique<Impl>()) {
   glGenVertexArrays(1, &m.star_vao);
   glGenBuffers(1, &m.star_vbo);
 
+  // Particles are pulled by the vertex shader from a buffer texture over the frame's upload;
+  // the VAO holds only the index buffer (two triangles per particle).
+  static_assert(sizeof(ParticleInstance) == 64 && offsetof(ParticleInstance, sprite) == 56 &&
+                    offsetof(ParticleInstance, soft_edge) == 58 && offsetof(ParticleInstance, billboard) == 59,
+                "shaders/particle.vert reads ParticleInstance as four RGBA32UI texels");
   glGenVertexArrays(1, &m.particle_vao);
   glGenBuffers(1, &m.particle_vbo);
-  glBindVertexArray(m.particle_vao);
-  glBindBuffer(GL_ARRAY_BUFFER, m.particle_vbo);
-  const GLsizei stride = sizeof(ParticleInstance);
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(ParticleInstance, pos)));
-  glEnableVertexAttribArray(1);
-  glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(ParticleInstance, axis)));
-  glEnableVertexAttribArray(2);
-  glVertexAttribPointer(2, 4, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(ParticleInstance, color)));
-  glEnableVertexAttribArray(3);
-  glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(ParticleInstance, burn)));
-  glEnableVertexAttribArray(4);
-  glVertexAttribIPointer(4, 1, GL_UNSIGNED_SHORT, stride, reinterpret_cast<void*>(offsetof(ParticleInstance, sprite)));
-  glEnableVertexAttribArray(5);
-  glVertexAttribIPointer(5, 2, GL_UNSIGNED_BYTE, stride, reinterpret_cast<void*>(offsetof(ParticleInstance, soft_edge)));
-  for (GLuint a = 0; a < 6; ++a) glVertexAttribDivisor(a, 1);
+  glGenBuffers(1, &m.particle_ibo);
+  glGenTextures(1, &m.particle_tbo);
+  glBindBuffer(GL_TEXTURE_BUFFER, m.particle_vbo);
+  glBufferData(GL_TEXTURE_BUFFER, sizeof(ParticleInstance), nullptr, GL_STREAM_DRAW);
+  glBindTexture(GL_TEXTURE_BUFFER, m.particle_tbo);
+  glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32UI, m.particle_vbo);
+  GLint max_texels = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &max_texels);
+  m.max_particles_per_draw = size_t(std::max(max_texels, 4)) / 4;
+  if (desc.max_particles_per_draw > 0) m.max_particles_per_draw = std::min(m.max_particles_per_draw, desc.max_particles_per_draw);
 
   glGenVertexArrays(1, &m.hud_vao);
   glGenBuffers(1, &m.hud_vbo);
@@ -343,8 +344,9 @@ Renderer::~Renderer() {
   glDeleteFramebuffers(3, fbos);
   GLuint vaos[] = {m.empty_vao, m.star_vao, m.particle_vao, m.hud_vao};
   glDeleteVertexArrays(4, vaos);
-  GLuint bufs[] = {m.star_vbo, m.particle_vbo, m.hud_vbo};
-  glDeleteBuffers(3, bufs);
+  GLuint bufs[] = {m.star_vbo, m.particle_vbo, m.particle_ibo, m.hud_vbo};
+  glDeleteBuffers(4, bufs);
+  glDeleteTextures(1, &m.particle_tbo);
   if (m.timer_query) glDeleteQueries(3, m.queries.data());
   if (m.fragment_query) glDeleteQueries(1, &m.fragment_query);
 }
@@ -811,15 +813,30 @@ void Renderer::Impl::draw_particles(const RenderView& v, const glm::mat4& view, 
     stats.sorted = int(upload.size());
   }
 
-  glBindBuffer(GL_ARRAY_BUFFER, particle_vbo);
-  size_t bytes = upload.size() * sizeof(ParticleInstance);
-  if (bytes > particle_capacity) {
-    particle_capacity = bytes * 3 / 2;
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(particle_capacity), nullptr, GL_STREAM_DRAW);
-  } else {
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(particle_capacity), nullptr, GL_STREAM_DRAW);  // orphan
+  // A buffer texture reaches GL_MAX_TEXTURE_BUFFER_SIZE texels (at least 65536, so 16384
+  // particles; 2^27 on llvmpipe and desktop GPUs): beyond that the nearest ones are kept when
+  // sorted (the order is back to front), an arbitrary subset otherwise.
+  if (upload.size() > max_particles_per_draw) {
+    stats.over_draw_limit = int(upload.size() - max_particles_per_draw);
+    upload.erase(upload.begin(), upload.begin() + std::ptrdiff_t(upload.size() - max_particles_per_draw));
   }
-  glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(bytes), upload.data());
+  glBindBuffer(GL_TEXTURE_BUFFER, particle_vbo);
+  size_t bytes = upload.size() * sizeof(ParticleInstance);
+  if (bytes > particle_capacity) particle_capacity = bytes * 3 / 2;
+  glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(particle_capacity), nullptr, GL_STREAM_DRAW);  // new or orphaned
+  glBufferSubData(GL_TEXTURE_BUFFER, 0, GLsizeiptr(bytes), upload.data());
+  glBindVertexArray(particle_vao);
+  if (upload.size() > index_capacity) {
+    index_capacity = std::max<size_t>(upload.size() * 3 / 2, 1024);
+    std::vector<uint32_t> indices(index_capacity * 6);
+    for (size_t i = 0; i < index_capacity; ++i) {
+      const uint32_t b = uint32_t(i * 4);
+      const uint32_t quad[6] = {b, b + 1, b + 2, b + 2, b + 1, b + 3};
+      std::copy(quad, quad + 6, indices.begin() + std::ptrdiff_t(i * 6));
+    }
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, particle_ibo);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * 4), indices.data(), GL_STATIC_DRAW);
+  }
 
   bool timing = timer_query && !query_pending[size_t(query_index)];
   if (timing) glBeginQuery(GL_TIME_ELAPSED, queries[size_t(query_index)]);
@@ -861,18 +878,21 @@ void Renderer::Impl::draw_particles(const RenderView& v, const glm::mat4& view, 
   glUniform1f(particle.loc("u_viewport_h"), float(scene_h));
   glUniform1i(particle.loc("u_sprites"), 0);
   glUniform1i(particle.loc("u_scene_depth"), 1);
+  glUniform1i(particle.loc("u_particles"), 2);
   glUniform2f(particle.loc("u_inv_depth_size"), 1.0f / float(scene_w), 1.0f / float(scene_h));
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D_ARRAY, sprite_tex);
   glActiveTexture(GL_TEXTURE1);
   glBindTexture(GL_TEXTURE_2D, copy_depth);
+  glActiveTexture(GL_TEXTURE2);
+  glBindTexture(GL_TEXTURE_BUFFER, particle_tbo);
   glActiveTexture(GL_TEXTURE0);
   glBindVertexArray(particle_vao);
   if (count_fragments) {
     if (!fragment_query) glGenQueries(1, &fragment_query);
     glBeginQuery(GL_SAMPLES_PASSED, fragment_query);
   }
-  glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(upload.size()));
+  glDrawElements(GL_TRIANGLES, GLsizei(upload.size() * 6), GL_UNSIGNED_INT, nullptr);
   if (count_fragments) {
     glEndQuery(GL_SAMPLES_PASSED);
     GLuint64 samples = 0;

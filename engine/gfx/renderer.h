@@ -38,12 +38,16 @@ struct RendererDesc {
   std::string shader_dir = ARCFIRE_SOURCE_DIR "/shaders";
   bool offscreen = false;  // resolve into an RGBA8 target for read_pixels() instead of the window
   bool float_scene = false;  // RGBA16F scene buffer: NaN/Inf survive to read_pixels_float()
+  // Particles one draw can pull from its buffer texture: GL_MAX_TEXTURE_BUFFER_SIZE / 4, or
+  // this when it is smaller and not 0 (tests use it to reach the limit).
+  size_t max_particles_per_draw = 0;
 };
 
 struct FrameStats {
   int particles_in = 0;      // instances handed in by the view
   int particles_drawn = 0;   // after dropping invisible ones (zero alpha and zero colour) and culling
   int culled_offscreen = 0;  // particles whose quad lies wholly outside the view frustum's sides
+  int over_draw_limit = 0;   // farthest particles left out: more than one buffer texture holds
   int sorted = 0;            // particles put in back-to-front order
   bool depth_copied = false; // the soft-edge depth copy ran this frame
   int soft_shaded = 0;       // particles that read the depth copy: soft edges on and an opaque

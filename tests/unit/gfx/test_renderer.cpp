@@ -395,6 +395,33 @@ TEST(Renderer, CullsOnlyParticlesWhollyOffScreen) {
   EXPECT_GT(green, 0.3f) << "the beam reaching in from the left";
 }
 
+// Past the particles one draw can pull, the farthest are left out and counted.
+TEST(Renderer, KeepsTheNearestParticlesPastTheDrawLimit) {
+  REQUIRE_CONTEXT();
+  RendererDesc d;
+  d.offscreen = true;
+  d.max_particles_per_draw = 2;
+  Renderer r(d);
+  r.set_render_settings(test::plain_settings());
+  RenderView v = base_view();
+  v.particles.push_back(particle({-1.2f, 0, -8}, 0.5f, glm::vec3(1, 0, 0), 1.0f, 0.0f));   // far: left out
+  v.particles.push_back(particle({0, 0, -5}, 0.5f, glm::vec3(0, 1, 0), 1.0f, 0.0f));
+  v.particles.push_back(particle({0.8f, 0, -4}, 0.5f, glm::vec3(0, 0, 1), 1.0f, 0.0f));
+  r.render(v, 64, 64);
+  EXPECT_EQ(r.last_stats().over_draw_limit, 1);
+  Image img = r.read_pixels();
+  // Pixels of one pure primary each (the stars behind are whitish).
+  int pure[3] = {};
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 64; ++x)
+      for (int c = 0; c < 3; ++c)
+        pure[c] += channel(img, x, y, c) > 0.5f && channel(img, x, y, (c + 1) % 3) < 0.1f &&
+                   channel(img, x, y, (c + 2) % 3) < 0.1f;
+  EXPECT_EQ(pure[0], 0) << "the farthest particle is the one left out";
+  EXPECT_GT(pure[1], 10);
+  EXPECT_GT(pure[2], 10);
+}
+
 TEST(Renderer, SortingPutsTheNearParticleOnTop) {
   REQUIRE_CONTEXT();
   auto r = make_renderer();
