@@ -202,6 +202,7 @@ struct Renderer::Impl {
   std::vector<ParticleInstance> upload;
   std::vector<uint32_t> keys, order;
   std::vector<Occluder> occluders;
+  Occluder occluder_bounds{};  // union of all: most particles of a frame fall outside it
 
   GLuint hud_vao = 0, hud_vbo = 0;
   HudFont font;
@@ -223,7 +224,7 @@ struct Renderer::Impl {
   void draw_sky(const RenderView& v, const glm::mat3& cam_basis, const glm::mat4& view_proj, double aspect);
   void draw_meshes(const RenderView& v, const glm::mat4& view_proj);
   void draw_particles(const RenderView& v, const glm::mat4& view, const glm::mat4& proj, glm::vec2 linearize);
-  void gather_occluders(const RenderView& v, const glm::mat3& to_view);
+  void gather_occluders(const RenderView& v, const glm::mat3& to_view, float tan_x, float tan_y);
   bool soft_can_matter(const ParticleInstance& p, const glm::mat3& to_view, float near) const;
   void draw_hud(const HudLayer& hud, int w, int h);
   void upload_texture_params(GLenum target, bool mipmapped);
@@ -654,7 +655,7 @@ void Renderer::Impl::draw_meshes(const RenderView& v, const glm::mat4& view_proj
   glActiveTexture(GL_TEXTURE0);
 }
 
-void Renderer::Impl::gather_occluders(const RenderView& v, const glm::mat3& to_view) {
+void Renderer::Impl::gather_occluders(const RenderView& v, const glm::mat3& to_view, float tan_x, float tan_y) {
   occluders.clear();
   const float near = float(v.camera.near_plane);
   const float inf = std::numeric_limits<float>::infinity();
@@ -684,10 +685,22 @@ void Renderer::Impl::gather_occluders(const RenderView& v, const glm::mat3& to_v
     }
     if (!(o.farthest > near)) continue;  // wholly in front of the near plane: it draws nothing
     if (crosses_near) o.x0 = o.y0 = -inf, o.x1 = o.y1 = inf;
+    // Only what is on screen can stand behind a particle's pixels.
+    const float mx = tan_x * 1.01f, my = tan_y * 1.01f;
+    if (o.x0 > mx || o.x1 < -mx || o.y0 > my || o.y1 < -my) continue;
+    o.x0 = std::max(o.x0, -mx), o.x1 = std::min(o.x1, mx);
+    o.y0 = std::max(o.y0, -my), o.y1 = std::min(o.y1, my);
     // Float transforms on the GPU differ from these in the last bits: widen a little.
     o.nearest -= 1e-4f * std::abs(o.nearest) + 1e-5f;
     o.farthest += 1e-4f * std::abs(o.farthest) + 1e-5f;
     occluders.push_back(o);
+  }
+  occluder_bounds = Occluder{inf, -inf, inf, inf, -inf, -inf};
+  for (const Occluder& o : occluders) {
+    occluder_bounds.nearest = std::min(occluder_bounds.nearest, o.nearest);
+    occluder_bounds.farthest = std::max(occluder_bounds.farthest, o.farthest);
+    occluder_bounds.x0 = std::min(occluder_bounds.x0, o.x0), occluder_bounds.x1 = std::max(occluder_bounds.x1, o.x1);
+    occluder_bounds.y0 = std::min(occluder_bounds.y0, o.y0), occluder_bounds.y1 = std::max(occluder_bounds.y1, o.y1);
   }
 }
 
@@ -728,10 +741,13 @@ bool Renderer::Impl::soft_can_matter(const ParticleInstance& p, const glm::mat3&
   auto hi = [&](float b) { return b < 0.0f ? b / z1 : b / z0; };
   float x0 = whole_screen ? 0.0f : lo(c.x - lateral), x1 = whole_screen ? 0.0f : hi(c.x + lateral);
   float y0 = whole_screen ? 0.0f : lo(c.y - lateral), y1 = whole_screen ? 0.0f : hi(c.y + lateral);
-  for (const Occluder& o : occluders) {
-    if (!(o.nearest < reach) || !(o.farthest > front)) continue;
-    if (whole_screen || (o.x0 <= x1 && x0 <= o.x1 && o.y0 <= y1 && y0 <= o.y1)) return true;
-  }
+  auto touches = [&](const Occluder& o) {
+    return o.nearest < reach && o.farthest > front &&
+           (whole_screen || (o.x0 <= x1 && x0 <= o.x1 && o.y0 <= y1 && y0 <= o.y1));
+  };
+  if (occluders.empty() || !touches(occluder_bounds)) return false;
+  for (const Occluder& o : occluders)
+    if (touches(o)) return true;
   return false;
 }
 
@@ -742,12 +758,12 @@ void Renderer::Impl::draw_particles(const RenderView& v, const glm::mat4& view, 
   glm::vec3 fwd = -glm::vec3(glm::transpose(view)[2]);  // camera −Z in world space
   const glm::mat3 to_view(view);
   const float near = float(v.camera.near_plane);
-  gather_occluders(v, to_view);
   // The four side planes of the view frustum in view space, as unit normals pointing out: a
   // particle whose quad lies wholly outside one of them is not uploaded. Clusters are culled
   // whole before this (game/render); this drops the particles of a visible cluster that are off
   // screen, such as the far ends of a long beam, which would cost vertex work and setup.
   const float tx = 1.0f / proj[0][0], ty = 1.0f / proj[1][1];
+  gather_occluders(v, to_view, tx, ty);
   const glm::vec3 planes[4] = {glm::normalize(glm::vec3(1, 0, tx)), glm::normalize(glm::vec3(-1, 0, tx)),
                                glm::normalize(glm::vec3(0, 1, ty)), glm::normalize(glm::vec3(0, -1, ty))};
   upload.clear();
