@@ -156,7 +156,7 @@ Figures measure(Renderer& r, const RenderView& view) {
   const size_t kFill = add("fill reference", &no_particles, base, true);
 
   const char* env_rounds = std::getenv("ARCFIRE_BENCH_ROUNDS");
-  const int rounds = env_rounds ? std::max(1, std::atoi(env_rounds)) : 16;
+  const int rounds = env_rounds ? std::max(1, std::atoi(env_rounds)) : 32;
   for (Config& c : configs) {  // warm-up: shader variants compiled, buffers sized
     r.set_render_settings(c.settings);
     r.render(*c.view, kWidth, kHeight);
