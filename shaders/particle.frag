@@ -29,7 +29,8 @@ void main() {
 #if SOFT
   // Only particles an opaque surface can reach read the depth copy: the renderer gives the
   // others (and method off) inv_extent 0, and the arithmetic below then gives exactly 1. The
-  // condition is flat, so a GPU skips the read per primitive; llvmpipe was measured to pay for
+  // condition is flat, so a GPU skips the read wherever all fragments shaded together are clear
+  // (it is uniform over a particle); llvmpipe was measured to pay for
   // the read on every pixel of the draw whatever the branch, so there the saving is the frames
   // where no particle needs soft edges at all (the renderer then picks the hard program and
   // skips the depth copy).
