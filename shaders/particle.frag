@@ -30,10 +30,9 @@ void main() {
   // Only particles an opaque surface can reach read the depth copy: the renderer gives the
   // others (and method off) inv_extent 0, and the arithmetic below then gives exactly 1. The
   // condition is flat, so a GPU skips the read wherever all fragments shaded together are clear
-  // (it is uniform over a particle); llvmpipe was measured to pay for
-  // the read on every pixel of the draw whatever the branch, so there the saving is the frames
-  // where no particle needs soft edges at all (the renderer then picks the hard program and
-  // skips the depth copy).
+  // (it is uniform over a particle). llvmpipe was measured to pay for the read on every pixel of
+  // the draw whatever the branch, so there the saving is the frames where no particle needs soft
+  // edges at all (the renderer then picks the hard program and skips the depth copy).
   float d = 0.0;
   // A nearest-filtered read at the texel centre (gl_FragCoord is one): the same texel as
   // texelFetch, about 8 % cheaper per pixel on llvmpipe, which bounds-checks texelFetch.
