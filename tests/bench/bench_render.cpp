@@ -123,6 +123,14 @@ Figures measure(Renderer& r, const RenderView& view) {
     big.particles.push_back(p);
   }
   RenderSettings base;
+  // ARCFIRE_BENCH_FILTER=nearest|linear|mipmap measures with another sprite filter (default
+  // mipmap, the high preset's), to tell the filtering's share of the cost from the rest.
+  if (const char* filter = std::getenv("ARCFIRE_BENCH_FILTER")) {
+    const std::string f = filter;
+    base.filter = f == "nearest" ? RenderSettings::Filter::Nearest
+                  : f == "linear" ? RenderSettings::Filter::Linear
+                                  : RenderSettings::Filter::Mipmap;
+  }
   auto with_soft = [&](int m) {
     RenderSettings s = base;
     s.soft_override = m;
