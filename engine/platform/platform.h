@@ -11,12 +11,24 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <string_view>
+#include <vector>
 
 namespace arc {
 
 struct PlatformError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+
+// Device codes by the names bindings files use (GLFW's names without the GLFW_KEY_ prefix:
+// A, F12, SPACE, LEFT_SHIFT, MOUSE_LEFT, ...; gamepad LEFT_X, RIGHT_BUMPER, ...); −1 for an
+// unknown name. Keys and mouse buttons share one code space: mouse button n is
+// kMouseButtonBase + n. input_names.cpp.
+constexpr int kMouseButtonBase = 1000;
+int key_code(std::string_view name);
+int gamepad_axis_code(std::string_view name);
+int gamepad_button_code(std::string_view name);
+std::vector<std::string> key_names();  // every name key_code() knows
 
 // Raw device state sampled once per rendered frame; the game quantises it into InputFrames.
 struct InputState {

@@ -1,7 +1,5 @@
 #include "game/app/input_bindings.h"
 
-#include <GLFW/glfw3.h>
-
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -12,57 +10,17 @@
 namespace arc {
 namespace {
 
-constexpr int kMouseBase = 1000;
-
-const std::vector<std::pair<std::string, int>>& key_table() {
-  static const std::vector<std::pair<std::string, int>> t = [] {
-    std::vector<std::pair<std::string, int>> v;
-    for (char c = 'A'; c <= 'Z'; ++c) v.emplace_back(std::string(1, c), GLFW_KEY_A + (c - 'A'));
-    for (char c = '0'; c <= '9'; ++c) v.emplace_back(std::string(1, c), GLFW_KEY_0 + (c - '0'));
-    for (int f = 1; f <= 12; ++f) v.emplace_back("F" + std::to_string(f), GLFW_KEY_F1 + f - 1);
-    std::vector<std::pair<std::string, int>> named = {
-        {"SPACE", GLFW_KEY_SPACE}, {"ESCAPE", GLFW_KEY_ESCAPE}, {"ENTER", GLFW_KEY_ENTER},
-        {"TAB", GLFW_KEY_TAB}, {"BACKSPACE", GLFW_KEY_BACKSPACE}, {"UP", GLFW_KEY_UP},
-        {"DOWN", GLFW_KEY_DOWN}, {"LEFT", GLFW_KEY_LEFT}, {"RIGHT", GLFW_KEY_RIGHT},
-        {"LEFT_SHIFT", GLFW_KEY_LEFT_SHIFT}, {"RIGHT_SHIFT", GLFW_KEY_RIGHT_SHIFT},
-        {"LEFT_CONTROL", GLFW_KEY_LEFT_CONTROL}, {"RIGHT_CONTROL", GLFW_KEY_RIGHT_CONTROL},
-        {"LEFT_ALT", GLFW_KEY_LEFT_ALT}, {"RIGHT_ALT", GLFW_KEY_RIGHT_ALT}, {"HOME", GLFW_KEY_HOME},
-        {"END", GLFW_KEY_END}, {"PAGE_UP", GLFW_KEY_PAGE_UP}, {"PAGE_DOWN", GLFW_KEY_PAGE_DOWN},
-        {"INSERT", GLFW_KEY_INSERT}, {"DELETE", GLFW_KEY_DELETE}, {"COMMA", GLFW_KEY_COMMA},
-        {"PERIOD", GLFW_KEY_PERIOD}, {"SLASH", GLFW_KEY_SLASH}, {"SEMICOLON", GLFW_KEY_SEMICOLON},
-        {"MINUS", GLFW_KEY_MINUS}, {"EQUAL", GLFW_KEY_EQUAL}, {"BACKSLASH", GLFW_KEY_BACKSLASH},
-        {"MOUSE_LEFT", kMouseBase + GLFW_MOUSE_BUTTON_LEFT},
-        {"MOUSE_RIGHT", kMouseBase + GLFW_MOUSE_BUTTON_RIGHT},
-        {"MOUSE_MIDDLE", kMouseBase + GLFW_MOUSE_BUTTON_MIDDLE}};
-    v.insert(v.end(), named.begin(), named.end());
-    return v;
-  }();
-  return t;
-}
-
-const std::vector<std::pair<std::string, int>> kPadAxes = {
-    {"LEFT_X", GLFW_GAMEPAD_AXIS_LEFT_X},   {"LEFT_Y", GLFW_GAMEPAD_AXIS_LEFT_Y},
-    {"RIGHT_X", GLFW_GAMEPAD_AXIS_RIGHT_X}, {"RIGHT_Y", GLFW_GAMEPAD_AXIS_RIGHT_Y},
-    {"LEFT_TRIGGER", GLFW_GAMEPAD_AXIS_LEFT_TRIGGER}, {"RIGHT_TRIGGER", GLFW_GAMEPAD_AXIS_RIGHT_TRIGGER}};
-const std::vector<std::pair<std::string, int>> kPadButtons = {
-    {"A", GLFW_GAMEPAD_BUTTON_A}, {"B", GLFW_GAMEPAD_BUTTON_B}, {"X", GLFW_GAMEPAD_BUTTON_X},
-    {"Y", GLFW_GAMEPAD_BUTTON_Y}, {"LEFT_BUMPER", GLFW_GAMEPAD_BUTTON_LEFT_BUMPER},
-    {"RIGHT_BUMPER", GLFW_GAMEPAD_BUTTON_RIGHT_BUMPER}, {"BACK", GLFW_GAMEPAD_BUTTON_BACK},
-    {"START", GLFW_GAMEPAD_BUTTON_START}, {"DPAD_UP", GLFW_GAMEPAD_BUTTON_DPAD_UP},
-    {"DPAD_RIGHT", GLFW_GAMEPAD_BUTTON_DPAD_RIGHT}, {"DPAD_DOWN", GLFW_GAMEPAD_BUTTON_DPAD_DOWN},
-    {"DPAD_LEFT", GLFW_GAMEPAD_BUTTON_DPAD_LEFT}, {"LEFT_THUMB", GLFW_GAMEPAD_BUTTON_LEFT_THUMB},
-    {"RIGHT_THUMB", GLFW_GAMEPAD_BUTTON_RIGHT_THUMB}};
-
-int lookup(const JsonValue& v, const std::vector<std::pair<std::string, int>>& table, const char* what) {
+// A device name through one of platform's lookups; an unknown name is a positioned error.
+int lookup(const JsonValue& v, int (*code)(std::string_view), const char* what) {
   std::string name = v.string();
-  for (auto& [n, code] : table)
-    if (n == name) return code;
-  v.fail("'" + v.name() + "': unknown " + what + " '" + name + "' (see the list at the top of the bindings file)");
+  int c = code(name);
+  if (c < 0) v.fail("'" + v.name() + "': unknown " + what + " '" + name + "' (see the list at the top of the bindings file)");
+  return c;
 }
 
 int key(JsonObject& o, const char* k) {
   auto v = o.get(k);
-  return v ? lookup(*v, key_table(), "key") : -1;
+  return v ? lookup(*v, key_code, "key") : -1;
 }
 
 KeyAxis axis(JsonObject& o, const char* k) {
@@ -70,16 +28,16 @@ KeyAxis axis(JsonObject& o, const char* k) {
   if (!v) return {};
   auto items = v->array();
   if (items.size() != 2) v->fail("'" + std::string(k) + "' must be [negative key, positive key]");
-  return {lookup(items[0], key_table(), "key"), lookup(items[1], key_table(), "key")};
+  return {lookup(items[0], key_code, "key"), lookup(items[1], key_code, "key")};
 }
 
 int pad_axis(JsonObject& o, const char* k, int fallback) {
   auto v = o.get(k);
-  return v ? lookup(*v, kPadAxes, "gamepad axis") : fallback;
+  return v ? lookup(*v, gamepad_axis_code, "gamepad axis") : fallback;
 }
 int pad_button(JsonObject& o, const char* k) {
   auto v = o.get(k);
-  return v ? lookup(*v, kPadButtons, "gamepad button") : -1;
+  return v ? lookup(*v, gamepad_button_code, "gamepad button") : -1;
 }
 
 double deadzone(double v, double dz) {
@@ -89,12 +47,6 @@ double deadzone(double v, double dz) {
 }
 
 }  // namespace
-
-std::vector<std::string> key_names() {
-  std::vector<std::string> out;
-  for (auto& [n, c] : key_table()) out.push_back(n);
-  return out;
-}
 
 Bindings load_bindings(const std::string& path) {
   auto doc = JsonDoc::load_file(path);
@@ -152,7 +104,7 @@ Bindings load_bindings(const std::string& path) {
 
 bool LiveInput::down(const InputState& s, int code) const {
   if (code < 0) return false;
-  if (code >= kMouseBase) return s.mouse_buttons[size_t(code - kMouseBase) % s.mouse_buttons.size()];
+  if (code >= kMouseButtonBase) return s.mouse_buttons[size_t(code - kMouseButtonBase) % s.mouse_buttons.size()];
   return size_t(code) < s.keys.size() && s.keys[size_t(code)];
 }
 

@@ -13,7 +13,7 @@
 
 namespace arc {
 
-struct KeyAxis { int negative = -1, positive = -1; };  // key codes (mouse buttons are 1000+n)
+struct KeyAxis { int negative = -1, positive = -1; };  // key_code()s (platform.h)
 
 struct Bindings {
   KeyAxis pitch, yaw, roll, throttle, strafe_x, strafe_y;
@@ -23,7 +23,7 @@ struct Bindings {
   bool mouse_enabled = true;
   double mouse_sensitivity = 0.004;
   bool mouse_invert_y = false;
-  int pad_pitch = 1, pad_yaw = 0, pad_roll = 2, pad_throttle = 3;  // GLFW gamepad axes
+  int pad_pitch = 1, pad_yaw = 0, pad_roll = 2, pad_throttle = 3;  // gamepad_axis_code()s: LEFT_Y, LEFT_X, RIGHT_X, RIGHT_Y
   int pad_fire_primary = -1, pad_fire_secondary = -1, pad_afterburner = -1, pad_target_next = -1;
   int pad_switch_weapon = -1, pad_camera = -1, pad_pause = -1;
   double pad_deadzone = 0.12;
@@ -32,8 +32,6 @@ struct Bindings {
 
 // Validates every key (positioned errors, exit 2 from the command line).
 Bindings load_bindings(const std::string& path);
-// Names of keys as used in binding files (for messages and the README).
-std::vector<std::string> key_names();
 
 enum class AppAction { Screenshot, ToggleFps, ToggleCamera, TogglePause };
 

@@ -1,7 +1,5 @@
 #include "game/app/window_loop.h"
 
-#include <GLFW/glfw3.h>
-
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -146,9 +144,11 @@ int run_window(const AppOptions& o) {
     if (paused) {
       // Menu navigation reads the raw keys, edge-triggered by the InputState history.
       auto hit = [&](int key) { return devices.keys[size_t(key)] && !prev.keys[size_t(key)]; };
-      if (hit(GLFW_KEY_UP)) menu.selection = (menu.selection + 3) % 4;
-      if (hit(GLFW_KEY_DOWN)) menu.selection = (menu.selection + 1) % 4;
-      if (hit(GLFW_KEY_ENTER) || hit(GLFW_KEY_SPACE)) {
+      static const int up = key_code("UP"), down = key_code("DOWN");
+      static const int enter = key_code("ENTER"), space = key_code("SPACE");
+      if (hit(up)) menu.selection = (menu.selection + 3) % 4;
+      if (hit(down)) menu.selection = (menu.selection + 1) % 4;
+      if (hit(enter) || hit(space)) {
         switch (menu.selection) {
           case PauseMenu::Resume: menu_commands.push_back(Command::Resume); break;
           case PauseMenu::Restart:
