@@ -116,6 +116,26 @@ struct Occluder {
   float x0, y0, x1, y1;
 };
 
+// Where a particle's quad can be, as shaders/particle.vert builds it: corners lie within
+// `radius` = √(size² + half_long²) of the view-space centre, whatever the billboard (the
+// size clamp there only shrinks it), and the density methods' push along the view ray keeps
+// the footprint. Computed once per particle for culling and the soft-edge reach test.
+struct QuadBounds {
+  glm::vec3 centre;  // view space
+  float size, half_long, radius;
+  bool axis_locked;
+};
+
+QuadBounds quad_bounds(const ParticleInstance& p, const glm::mat3& to_view, float axis_len) {
+  QuadBounds b;
+  b.centre = to_view * glm::vec3(p.pos[0], p.pos[1], p.pos[2]);
+  b.size = std::max(p.size, 1e-6f);
+  b.axis_locked = p.billboard == uint8_t(Billboard::AxisLocked);
+  b.half_long = b.axis_locked ? 0.5f * axis_len + b.size : b.size;
+  b.radius = std::sqrt(b.size * b.size + b.half_long * b.half_long) * 1.001f;
+  return b;
+}
+
 // Set on the uploaded copy of a particle whose soft edges cannot change a pixel: no opaque
 // mesh comes within its depth extent anywhere on its quad. shaders/particle.vert reads it.
 constexpr uint8_t kSoftClear = 0x80;
@@ -225,7 +245,7 @@ struct Renderer::Impl {
   void draw_meshes(const RenderView& v, const glm::mat4& view_proj);
   void draw_particles(const RenderView& v, const glm::mat4& view, const glm::mat4& proj, glm::vec2 linearize);
   void gather_occluders(const RenderView& v, const glm::mat3& to_view, float tan_x, float tan_y);
-  bool soft_can_matter(const ParticleInstance& p, const glm::mat3& to_view, float near) const;
+  bool soft_can_matter(const ParticleInstance& p, const QuadBounds& q, float near) const;
   void draw_hud(const HudLayer& hud, int w, int h);
   void upload_texture_params(GLenum target, bool mipmapped);
 };
@@ -710,23 +730,17 @@ void Renderer::Impl::gather_occluders(const RenderView& v, const glm::mat3& to_v
 // gives exactly 1 (linear and contrast reach 1 at zb − z ≥ E, average density at E/2, density
 // extent at E·texture alpha); in front of it the depth test rejects the fragment whatever the
 // factor. When no mesh box reaches into the range, the particle can skip the depth read and
-// stay bit-identical. The bounds follow
-// shaders/particle.vert: a camera-facing quad is built from view-space axes, so it lies at one
-// view depth, corners within size·√2 of its centre; an axis-locked quad lies in the plane
-// through its centre square to the view ray, corners within √(size² + half_long²), so its view
-// depth varies by at most that times the sine of the ray's angle to the view axis.
-bool Renderer::Impl::soft_can_matter(const ParticleInstance& p, const glm::mat3& to_view, float near) const {
-  glm::vec3 c = to_view * glm::vec3(p.pos[0], p.pos[1], p.pos[2]);
+// stay bit-identical. With the bounds of QuadBounds: a camera-facing quad is built from
+// view-space axes, so it lies at one view depth; an axis-locked quad lies in the plane through
+// its centre square to the view ray, so its view depth varies by at most its radius times the
+// sine of the ray's angle to the view axis.
+bool Renderer::Impl::soft_can_matter(const ParticleInstance& p, const QuadBounds& q, float near) const {
+  const glm::vec3& c = q.centre;
   float d = -c.z;
-  float size = std::max(p.size, 1e-6f);
-  float extent = p.soft_extent > 0.0f ? p.soft_extent : size;
-  bool locked = p.billboard == uint8_t(Billboard::AxisLocked);
-  float axis_len = std::sqrt(p.axis[0] * p.axis[0] + p.axis[1] * p.axis[1] + p.axis[2] * p.axis[2]);
-  float half_long = locked ? 0.5f * axis_len + size : size;
-  float lateral = std::sqrt(size * size + half_long * half_long) * 1.0001f;
+  float extent = p.soft_extent > 0.0f ? p.soft_extent : q.size;
   float dist = glm::length(c);
   float sine = dist > 0.0f ? std::sqrt(std::max(0.0f, 1.0f - (c.z / dist) * (c.z / dist))) : 1.0f;
-  float spread = locked ? lateral * std::min(1.0f, sine + 1e-4f) : 0.0f;
+  float spread = q.axis_locked ? q.radius * std::min(1.0f, sine + 1e-4f) : 0.0f;
   float reach = d + spread + extent * 1.001f;
   uint8_t method = p.soft_edge & ~kSoftClear;
   float push = method == uint8_t(SoftEdge::AverageDensity) ? 0.5f * extent
@@ -739,8 +753,8 @@ bool Renderer::Impl::soft_can_matter(const ParticleInstance& p, const glm::mat3&
   // keeps the footprint.
   auto lo = [&](float a) { return a < 0.0f ? a / z0 : a / z1; };
   auto hi = [&](float b) { return b < 0.0f ? b / z1 : b / z0; };
-  float x0 = whole_screen ? 0.0f : lo(c.x - lateral), x1 = whole_screen ? 0.0f : hi(c.x + lateral);
-  float y0 = whole_screen ? 0.0f : lo(c.y - lateral), y1 = whole_screen ? 0.0f : hi(c.y + lateral);
+  float x0 = whole_screen ? 0.0f : lo(c.x - q.radius), x1 = whole_screen ? 0.0f : hi(c.x + q.radius);
+  float y0 = whole_screen ? 0.0f : lo(c.y - q.radius), y1 = whole_screen ? 0.0f : hi(c.y + q.radius);
   auto touches = [&](const Occluder& o) {
     return o.nearest < reach && o.farthest > front &&
            (whole_screen || (o.x0 <= x1 && x0 <= o.x1 && o.y0 <= y1 && y0 <= o.y1));
@@ -775,20 +789,15 @@ void Renderer::Impl::draw_particles(const RenderView& v, const glm::mat4& view, 
     float axis_len = std::sqrt(p.axis[0] * p.axis[0] + p.axis[1] * p.axis[1] + p.axis[2] * p.axis[2]);
     float reach = std::max(p.size, 0.0f) + axis_len;
     if (dark || !(depth > -reach)) continue;  // invisible or wholly behind the camera (NaN fails too)
-    // Corners lie within √(size² + half_long²) of the centre (shaders/particle.vert), whatever
-    // the billboard, and the density methods' push along the view ray keeps the footprint.
-    float size = std::max(p.size, 0.0f);
-    float half_long = p.billboard == uint8_t(Billboard::AxisLocked) ? 0.5f * axis_len + size : size;
-    float corner = std::sqrt(size * size + half_long * half_long) * 1.001f + 1e-6f;
-    glm::vec3 c = to_view * glm::vec3(p.pos[0], p.pos[1], p.pos[2]);
-    if (glm::dot(planes[0], c) > corner || glm::dot(planes[1], c) > corner || glm::dot(planes[2], c) > corner ||
-        glm::dot(planes[3], c) > corner) {
+    const QuadBounds b = quad_bounds(p, to_view, axis_len);
+    if (glm::dot(planes[0], b.centre) > b.radius || glm::dot(planes[1], b.centre) > b.radius ||
+        glm::dot(planes[2], b.centre) > b.radius || glm::dot(planes[3], b.centre) > b.radius) {
       ++stats.culled_offscreen;
       continue;
     }
     ParticleInstance q = p;
     if (rs.soft_override >= 0) q.soft_edge = uint8_t(rs.soft_override);
-    if (q.soft_edge != 0 && !soft_can_matter(q, to_view, near)) q.soft_edge |= kSoftClear;
+    if (q.soft_edge != 0 && !soft_can_matter(q, b, near)) q.soft_edge |= kSoftClear;
     bool soft = q.soft_edge != 0 && !(q.soft_edge & kSoftClear);
     stats.soft_shaded += soft;
     any_soft = any_soft || soft;
