@@ -90,6 +90,37 @@ RenderView wall_stress(int wall_model) {
   return v;
 }
 
+// A bad benchmark environment variable: one line naming it and what is allowed, exit 2.
+[[noreturn]] void bad_env(const char* name, const std::string& value, const char* allowed) {
+  std::fprintf(stderr, "arcfire-bench: %s='%s' is not allowed; use %s\n", name, value.c_str(), allowed);
+  std::exit(2);
+}
+
+// ARCFIRE_BENCH_ROUNDS=N (1..10000, default 32) interleaved rounds; ARCFIRE_BENCH_FILTER=
+// nearest|linear|mipmap measures with another sprite filter (default mipmap, the high
+// preset's), to tell the filtering's share of the cost from the rest. Read before any work.
+struct BenchEnv {
+  int rounds = 32;
+  RenderSettings::Filter filter = RenderSettings::Filter::Mipmap;
+};
+
+BenchEnv read_env() {
+  BenchEnv e;
+  if (const char* v = std::getenv("ARCFIRE_BENCH_ROUNDS")) {
+    char* end = nullptr;
+    const long n = std::strtol(v, &end, 10);
+    if (end == v || *end != '\0' || n < 1 || n > 10000) bad_env("ARCFIRE_BENCH_ROUNDS", v, "a whole number from 1 to 10000");
+    e.rounds = int(n);
+  }
+  if (const char* v = std::getenv("ARCFIRE_BENCH_FILTER")) {
+    const std::string f = v;
+    if (f == "nearest") e.filter = RenderSettings::Filter::Nearest;
+    else if (f == "linear") e.filter = RenderSettings::Filter::Linear;
+    else if (f != "mipmap") bad_env("ARCFIRE_BENCH_FILTER", f, "nearest, linear or mipmap");
+  }
+  return e;
+}
+
 struct Figures {
   double hard_ms = 0, alpha_ms = 0, empty_ms = 0, effect_ms = 0, big_ms = 0, fill_ms = 0;  // fastest frames
   double worst_soft_ratio = 0, burn_ratio = 0;  // medians of same-round ratios
@@ -102,7 +133,7 @@ double median(std::vector<double> v) {
   return n == 0 ? 0.0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-Figures measure(Renderer& r, const RenderView& view) {
+Figures measure(Renderer& r, const RenderView& view, const BenchEnv& env) {
   RenderView no_particles = view;
   no_particles.particles.clear();
   RenderView alpha_only = view;
@@ -123,14 +154,7 @@ Figures measure(Renderer& r, const RenderView& view) {
     big.particles.push_back(p);
   }
   RenderSettings base;
-  // ARCFIRE_BENCH_FILTER=nearest|linear|mipmap measures with another sprite filter (default
-  // mipmap, the high preset's), to tell the filtering's share of the cost from the rest.
-  if (const char* filter = std::getenv("ARCFIRE_BENCH_FILTER")) {
-    const std::string f = filter;
-    base.filter = f == "nearest" ? RenderSettings::Filter::Nearest
-                  : f == "linear" ? RenderSettings::Filter::Linear
-                                  : RenderSettings::Filter::Mipmap;
-  }
+  base.filter = env.filter;
   auto with_soft = [&](int m) {
     RenderSettings s = base;
     s.soft_override = m;
@@ -163,8 +187,7 @@ Figures measure(Renderer& r, const RenderView& view) {
   const size_t kBig = add("full-screen particles", &big, big_settings);
   const size_t kFill = add("fill reference", &no_particles, base, true);
 
-  const char* env_rounds = std::getenv("ARCFIRE_BENCH_ROUNDS");
-  const int rounds = env_rounds ? std::max(1, std::atoi(env_rounds)) : 32;
+  const int rounds = env.rounds;
   for (Config& c : configs) {  // warm-up: shader variants compiled, buffers sized
     r.set_render_settings(c.settings);
     r.render(*c.view, kWidth, kHeight);
@@ -241,6 +264,7 @@ void report(const Figures& f, const std::string& suffix) {
 }  // namespace
 
 ARCFIRE_SCENE(render_particle_gallery) {
+  const BenchEnv env = read_env();
   std::unique_ptr<HeadlessContext> ctx;
   try {
     ctx = create_headless_context();
@@ -271,7 +295,7 @@ ARCFIRE_SCENE(render_particle_gallery) {
   }
   std::printf(" gallery level (levels/gallery.json at tick 240, %zu particles, %zu meshes):\n", gallery.particles.size(),
               gallery.meshes.size());
-  report(measure(r, gallery), "");
+  report(measure(r, gallery, env), "");
 
   RenderView stress = wall_stress(r.add_model(wall(60, 30)));
   if (const char* dir = std::getenv("ARCFIRE_GFX_DUMP")) {
@@ -279,7 +303,7 @@ ARCFIRE_SCENE(render_particle_gallery) {
     save_image(std::string(dir) + "/bench_wall_stress.png", r.read_pixels());
   }
   std::printf(" wall stress (%zu particles crowding a wall that fills the screen):\n", stress.particles.size());
-  report(measure(r, stress), "_wall_stress");
+  report(measure(r, stress, env), "_wall_stress");
 
   // Ordinary play: the arena battle ten seconds in, from the player's chase camera. Most
   // particles are out in space; soft edges cost only where one meets a hull.
@@ -295,7 +319,7 @@ ARCFIRE_SCENE(render_particle_gallery) {
   }
   std::printf(" arena battle (levels/arena.json at tick 600, chase camera, %zu particles, %zu meshes):\n",
               arena.particles.size(), arena.meshes.size());
-  report(measure(battle_renderer, arena), "_battle");
+  report(measure(battle_renderer, arena, env), "_battle");
 }
 
 }  // namespace arc
