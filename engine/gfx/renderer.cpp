@@ -194,7 +194,7 @@ struct Renderer::Impl {
   bool clip_control = false;
   bool timer_query = false;
 
-  Program sky, stars, mesh, particle_hard, particle_soft, particle_contrast, particle_square, hud;
+  Program sky, sky_exact, stars, mesh, particle_hard, particle_soft, particle_contrast, particle_square, hud;
 
   std::vector<GpuModel> models;
   GLuint sprite_tex = 0;
@@ -214,6 +214,11 @@ struct Renderer::Impl {
   int star_count = 0;
   uint64_t star_seed = ~0ull;
   glm::vec3 lobe_a{1, 0, 0}, lobe_b{0, 1, 0};
+  // The nebula baked into a cube map for render.sky = baked: made again when the level's seed,
+  // the resolution or the shaders change.
+  GLuint sky_cube = 0, sky_fbo = 0;
+  int sky_cube_size = 0;
+  uint64_t sky_cube_seed = ~0ull;
 
   GLuint particle_vao = 0, particle_vbo = 0, particle_ibo = 0, particle_tbo = 0;
   size_t particle_capacity = 0;  // bytes in particle_vbo
@@ -241,6 +246,8 @@ struct Renderer::Impl {
   void load_programs(bool throw_on_error);
   void ensure_targets(int w, int h);
   void build_stars(uint64_t seed);
+  void bake_sky();
+  void set_sky_uniforms(const Program& p, const glm::mat3& basis, float tan_x, float tan_y) const;
   void draw_sky(const RenderView& v, const glm::mat3& cam_basis, const glm::mat4& view_proj, double aspect);
   void draw_meshes(const RenderView& v, const glm::mat4& view_proj);
   void draw_particles(const RenderView& v, const glm::mat4& view, const glm::mat4& proj, glm::vec2 linearize);
@@ -259,6 +266,7 @@ void Renderer::Impl::load_programs(bool throw_on_error) {
     const char* defines;
   };
   const Spec specs[] = {{&sky, "sky.vert", "sky.frag", ""},
+                        {&sky_exact, "sky.vert", "sky_exact.frag", ""},
                         {&stars, "stars.vert", "stars.frag", ""},
                         {&mesh, "mesh.vert", "mesh.frag", ""},
                         {&particle_hard, "particle.vert", "particle.frag", "#define SOFT 0\n#define CONTRAST 0\n"},
@@ -281,6 +289,7 @@ void Renderer::Impl::load_programs(bool throw_on_error) {
     if (specs[i].p->id) glDeleteProgram(specs[i].p->id);
     specs[i].p->id = built[i];
   }
+  sky_cube_seed = ~0ull;  // a changed nebula shader bakes again
 }
 
 Renderer::Renderer(const RendererDesc& desc) : impl_(std::make_unique<Impl>()) {
@@ -490,6 +499,8 @@ void Renderer::apply_settings(const Settings& s) {
   r.size_clamp = float(s.number("render.particle_size_clamp"));
   r.near_fade = float(s.number("render.near_fade"));
   r.contrast_power = float(s.number("render.contrast_power"));
+  r.sky_exact = s.choice("render.sky") == "exact";
+  r.sky_resolution = int(s.integer("render.sky_resolution"));
   set_render_settings(r);
 }
 
@@ -498,6 +509,7 @@ void Renderer::set_render_settings(const RenderSettings& s) {
   m.rs = s;
   if (!m.clip_control) m.rs.reversed_z = false;
   m.rs.scale = std::clamp(m.rs.scale, 0.1, 4.0);
+  m.rs.sky_resolution = std::clamp(m.rs.sky_resolution, 16, 2048);
   glBindTexture(GL_TEXTURE_2D_ARRAY, m.sprite_tex);
   m.upload_texture_params(GL_TEXTURE_2D_ARRAY, true);
   for (auto& model : m.models)
@@ -599,18 +611,77 @@ void Renderer::Impl::build_stars(uint64_t seed) {
   star_seed = seed;
 }
 
+// Each cube face as sky_exact.frag sees it: columns right, up, back such that a face pixel at
+// (sc, tc) in [−1, 1]² looks along right·sc + up·tc − back, the direction the GL cube map rules
+// (major axis, sc, tc) assign to that texel.
+const glm::mat3 kCubeFaceBasis[6] = {
+    glm::mat3(glm::vec3(0, 0, -1), glm::vec3(0, -1, 0), glm::vec3(-1, 0, 0)),  // +X
+    glm::mat3(glm::vec3(0, 0, 1), glm::vec3(0, -1, 0), glm::vec3(1, 0, 0)),    // −X
+    glm::mat3(glm::vec3(1, 0, 0), glm::vec3(0, 0, 1), glm::vec3(0, -1, 0)),    // +Y
+    glm::mat3(glm::vec3(1, 0, 0), glm::vec3(0, 0, -1), glm::vec3(0, 1, 0)),    // −Y
+    glm::mat3(glm::vec3(1, 0, 0), glm::vec3(0, -1, 0), glm::vec3(0, 0, -1)),   // +Z
+    glm::mat3(glm::vec3(-1, 0, 0), glm::vec3(0, -1, 0), glm::vec3(0, 0, 1)),   // −Z
+};
+
+void Renderer::Impl::set_sky_uniforms(const Program& p, const glm::mat3& basis, float tan_x, float tan_y) const {
+  glUniformMatrix3fv(p.loc("u_cam_basis"), 1, GL_FALSE, glm::value_ptr(basis));
+  glUniform2f(p.loc("u_tan_half"), tan_x, tan_y);
+  glUniform3fv(p.loc("u_lobe_a"), 1, glm::value_ptr(lobe_a));
+  glUniform3fv(p.loc("u_lobe_b"), 1, glm::value_ptr(lobe_b));
+  glUniform1f(p.loc("u_seed"), float(star_seed % 1000));
+}
+
+// The nebula changes only with the level's seed, so it is rendered once into the six faces of
+// a half-float cube map (a face of 256² is 0.35° a texel, the noise's finest feature about 4°)
+// and each frame looks it up. Seamless filtering hides the face edges.
+void Renderer::Impl::bake_sky() {
+  const int n = rs.sky_resolution;
+  if (!sky_cube) {
+    glGenTextures(1, &sky_cube);
+    glGenFramebuffers(1, &sky_fbo);
+  }
+  glBindTexture(GL_TEXTURE_CUBE_MAP, sky_cube);
+  for (int f = 0; f < 6; ++f)
+    glTexImage2D(GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f), 0, GL_RGBA16F, n, n, 0, GL_RGBA, GL_FLOAT, nullptr);
+  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAX_LEVEL, 0);
+  glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+  GLint fbo = 0, vp[4];
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &fbo);
+  glGetIntegerv(GL_VIEWPORT, vp);
+  glBindFramebuffer(GL_FRAMEBUFFER, sky_fbo);
+  glViewport(0, 0, n, n);
+  glUseProgram(sky_exact.id);
+  glBindVertexArray(empty_vao);
+  for (int f = 0; f < 6; ++f) {
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f), sky_cube, 0);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+      throw std::runtime_error("sky cube map framebuffer incomplete");
+    set_sky_uniforms(sky_exact, kCubeFaceBasis[f], 1.0f, 1.0f);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(fbo));
+  glViewport(vp[0], vp[1], vp[2], vp[3]);
+  sky_cube_size = n;
+  sky_cube_seed = star_seed;
+}
+
 void Renderer::Impl::draw_sky(const RenderView& v, const glm::mat3& cam_basis, const glm::mat4& view_proj, double aspect) {
   if (star_seed != v.starfield_seed) build_stars(v.starfield_seed);
   glDisable(GL_DEPTH_TEST);
   glDepthMask(GL_FALSE);
   glDisable(GL_BLEND);
-  glUseProgram(sky.id);
+  if (!rs.sky_exact && (sky_cube_seed != star_seed || sky_cube_size != rs.sky_resolution)) bake_sky();
+  const Program& p = rs.sky_exact ? sky_exact : sky;
+  glUseProgram(p.id);
   double ty = std::tan(v.camera.fov_y_radians * 0.5);
-  glUniformMatrix3fv(sky.loc("u_cam_basis"), 1, GL_FALSE, glm::value_ptr(cam_basis));
-  glUniform2f(sky.loc("u_tan_half"), float(ty * aspect), float(ty));
-  glUniform3fv(sky.loc("u_lobe_a"), 1, glm::value_ptr(lobe_a));
-  glUniform3fv(sky.loc("u_lobe_b"), 1, glm::value_ptr(lobe_b));
-  glUniform1f(sky.loc("u_seed"), float(v.starfield_seed % 1000));
+  set_sky_uniforms(p, cam_basis, float(ty * aspect), float(ty));
+  glUniform1i(p.loc("u_sky"), 0);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_CUBE_MAP, sky_cube);
   glBindVertexArray(empty_vao);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glEnable(GL_BLEND);

@@ -70,6 +70,8 @@ struct RenderSettings {
   float size_clamp = 0.5f;
   float near_fade = 2.0f;
   float contrast_power = 2.0f;
+  bool sky_exact = false;    // the nebula evaluated per pixel every frame, not looked up in a baked cube map
+  int sky_resolution = 256;  // texels along a face of the baked cube map (16..2048)
 };
 
 class Renderer {

@@ -9,6 +9,8 @@
 //    opaque geometry;
 //  - the arena battle ten seconds in from the player's chase camera (suffix _battle): what
 //    soft edges cost in ordinary play.
+// Each also times the frame without particles with the nebula evaluated per pixel against the
+// baked cube map (render.sky exact against baked: sky_exact_frame_ratio).
 // Every configuration is timed one glFinish-bracketed frame at a time, interleaved with all the
 // others over many rounds, because the machine is shared and noisy: frame times are the fastest
 // frame of each, ratios the median over rounds of the two frames' ratio within a round.
@@ -123,7 +125,8 @@ BenchEnv read_env() {
 
 struct Figures {
   double hard_ms = 0, alpha_ms = 0, empty_ms = 0, effect_ms = 0, big_ms = 0, fill_ms = 0;  // fastest frames
-  double worst_soft_ratio = 0, burn_ratio = 0;  // medians of same-round ratios
+  double exact_sky_ms = 0;
+  double worst_soft_ratio = 0, burn_ratio = 0, sky_ratio = 0;  // medians of same-round ratios
   long long fragments = 0;  // blended by the particle draw, soft edges per effect
 };
 
@@ -183,6 +186,9 @@ Figures measure(Renderer& r, const RenderView& view, const BenchEnv& env) {
   const size_t kSoft = configs.size();  // linear, contrast, average density, density extent
   for (int m = 1; m < 5; ++m) add(names[m], &view, with_soft(m));
   const size_t kEmpty = add("no particles", &no_particles, base);
+  RenderSettings exact_sky = base;
+  exact_sky.sky_exact = true;
+  const size_t kExactSky = add("no particles, exact sky", &no_particles, exact_sky);
   const size_t kEffect = add("per-effect soft", &view, base);
   const size_t kBig = add("full-screen particles", &big, big_settings);
   const size_t kFill = add("fill reference", &no_particles, base, true);
@@ -226,6 +232,8 @@ Figures measure(Renderer& r, const RenderView& view, const BenchEnv& env) {
     f.worst_soft_ratio = std::max(f.worst_soft_ratio, m == 0 ? 0.0 : ratio);
   }
   f.burn_ratio = paired(0, kAlpha);
+  f.sky_ratio = paired(kExactSky, kEmpty);
+  f.exact_sky_ms = configs[kExactSky].best_ms;
   f.hard_ms = configs[0].best_ms;
   f.alpha_ms = configs[kAlpha].best_ms;
   f.empty_ms = configs[kEmpty].best_ms;
@@ -240,6 +248,7 @@ Figures measure(Renderer& r, const RenderView& view, const BenchEnv& env) {
   std::printf("  burn blend %.2f ms, burn forced 0 %.2f ms, no particles %.2f ms, per-effect soft %.2f ms"
               " (fastest of %d interleaved rounds)\n",
               f.hard_ms, f.alpha_ms, f.empty_ms, f.effect_ms, rounds);
+  std::printf("  no particles: nebula baked %.2f ms, exact %.2f ms, x%.3f\n", f.empty_ms, f.exact_sky_ms, f.sky_ratio);
   double raw_px_per_s = double(quads) * kWidth * kHeight / (f.fill_ms * 1e-3);
   double particle_s = std::max(1e-9, (f.effect_ms - f.empty_ms) * 1e-3);
   double big_px_per_s = double(quads) * kWidth * kHeight / std::max(1e-9, (f.big_ms - f.empty_ms) * 1e-3);
@@ -259,6 +268,7 @@ void report(const Figures& f, const std::string& suffix) {
   bench::report_metric("particle_fill_efficiency" + suffix, double(f.fragments) / particle_s / raw_px_per_s);
   bench::report_metric("particle_shader_fill_ratio" + suffix, quads_px / big_s / raw_px_per_s);
   bench::report_metric("render_gallery_frame_ms" + suffix, f.effect_ms);
+  bench::report_metric("sky_exact_frame_ratio" + suffix, f.sky_ratio);
 }
 
 }  // namespace

@@ -564,9 +564,14 @@ TEST(Renderer, AppliesQualitySettings) {
   EXPECT_EQ(r->render_settings().sorting, RenderSettings::Sorting::Off);
   EXPECT_FALSE(r->render_settings().reversed_z);
   EXPECT_DOUBLE_EQ(r->render_settings().scale, 0.5);
+  EXPECT_FALSE(r->render_settings().sky_exact);
+  EXPECT_EQ(r->render_settings().sky_resolution, 128);
   s.apply_preset_file(ARCFIRE_SOURCE_DIR "/assets/settings/quality.json", "high");
   r->apply_settings(s);
   EXPECT_EQ(r->render_settings().soft_override, -1);
+  s.apply_preset_file(ARCFIRE_SOURCE_DIR "/assets/settings/quality.json", "reference");
+  r->apply_settings(s);
+  EXPECT_TRUE(r->render_settings().sky_exact);
 }
 
 TEST(Renderer, StarfieldIsSeededAndVaried) {
@@ -593,6 +598,49 @@ TEST(Renderer, StarfieldIsSeededAndVaried) {
     }
   EXPECT_GT(faint, 20);
   EXPECT_GT(bright, 3);
+}
+
+// render.sky = baked looks the nebula up in a cube map rendered once by the exact shader; the
+// views look at the eight cube corners with a wide lens, so every face, edge and corner of the
+// map is on screen. Compared in the float scene buffer (the stars are the same in both).
+TEST(Renderer, BakedSkyMatchesTheExactNebula) {
+  REQUIRE_CONTEXT();
+  auto r = make_renderer(true);
+  auto worst_error = [&](bool exact, int resolution, float* lowest) {
+    RenderSettings s = test::plain_settings();
+    s.sky_exact = exact;
+    s.sky_resolution = resolution;
+    r->set_render_settings(s);
+    float err = 0.0f;
+    for (int corner = 0; corner < 8; ++corner) {
+      glm::dvec3 dir(corner & 1 ? 1 : -1, corner & 2 ? 1 : -1, corner & 4 ? 1 : -1);
+      RenderView v = base_view();
+      v.camera.fov_y_radians = 1.6;
+      v.camera.orientation = glm::quatLookAt(glm::normalize(dir), glm::dvec3(0.3, 1, 0.2));
+      RenderSettings e = s;
+      e.sky_exact = true;
+      r->set_render_settings(e);
+      r->render(v, 160, 90);
+      std::vector<float> want = r->read_pixels_float();
+      r->set_render_settings(s);
+      r->render(v, 160, 90);
+      std::vector<float> got = r->read_pixels_float();
+      for (size_t i = 0; i < want.size(); ++i) {
+        if (i % 4 == 3) continue;
+        err = std::max(err, std::abs(got[i] - want[i]));
+        *lowest = std::min(*lowest, want[i]);
+      }
+    }
+    return err;
+  };
+  float lowest = 1.0f;
+  EXPECT_EQ(worst_error(true, 256, &lowest), 0.0f) << "exact against itself";
+  ASSERT_GT(lowest, 0.005f) << "the nebula (at least its base tint) covers every pixel";
+  float fine = worst_error(false, 256, &lowest), coarse = worst_error(false, 16, &lowest);
+  // Half a step of an 8-bit output at the default resolution; a wrong face orientation or a
+  // seam would be off by the nebula's own size.
+  EXPECT_LT(fine, 0.5f / 255.0f);
+  EXPECT_GT(coarse, 2.0f * fine) << "a coarser cube map is measurably less exact";
 }
 
 TEST(RadixSort, BackToFrontAndStable) {
