@@ -552,6 +552,8 @@ void Renderer::Impl::ensure_targets(int w, int h) {
     glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT32F, sw, sh, 0, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     glBindFramebuffer(GL_FRAMEBUFFER, copy_fbo);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, copy_depth, 0);
     glDrawBuffer(GL_NONE);
@@ -853,7 +855,7 @@ void Renderer::Impl::draw_particles(const RenderView& v, const glm::mat4& view, 
                                glm::normalize(glm::vec3(0, 1, ty)), glm::normalize(glm::vec3(0, -1, ty))};
   upload.clear();
   keys.clear();
-  bool any_soft = false, any_contrast = false, any_ordered = false;
+  bool any_ordered = false;
   for (const ParticleInstance& p : in) {
     bool dark = p.color[0] <= 0 && p.color[1] <= 0 && p.color[2] <= 0 && p.color[3] <= 0;
     float depth = p.pos[0] * fwd.x + p.pos[1] * fwd.y + p.pos[2] * fwd.z;
@@ -869,10 +871,6 @@ void Renderer::Impl::draw_particles(const RenderView& v, const glm::mat4& view, 
     ParticleInstance q = p;
     if (rs.soft_override >= 0) q.soft_edge = uint8_t(rs.soft_override);
     if (q.soft_edge != 0 && !soft_can_matter(q, b, near)) q.soft_edge |= kSoftClear;
-    bool soft = q.soft_edge != 0 && !(q.soft_edge & kSoftClear);
-    stats.soft_shaded += soft;
-    any_soft = any_soft || soft;
-    any_contrast = any_contrast || (soft && q.soft_edge == uint8_t(SoftEdge::Contrast));
     any_ordered = any_ordered || q.color[3] * (1.0f - q.burn) > 0.0f;
     upload.push_back(q);
     keys.push_back(sortable_bits(depth));
@@ -915,6 +913,14 @@ void Renderer::Impl::draw_particles(const RenderView& v, const glm::mat4& view, 
   if (upload.size() > max_particles_per_draw) {
     stats.over_draw_limit = int(upload.size() - max_particles_per_draw);
     upload.erase(upload.begin(), upload.begin() + std::ptrdiff_t(upload.size() - max_particles_per_draw));
+  }
+  // Which program and whether the depth copy is needed, from the particles that are drawn.
+  bool any_soft = false, any_contrast = false;
+  for (const ParticleInstance& q : upload) {
+    const bool soft = q.soft_edge != 0 && !(q.soft_edge & kSoftClear);
+    stats.soft_shaded += soft;
+    any_soft = any_soft || soft;
+    any_contrast = any_contrast || (soft && q.soft_edge == uint8_t(SoftEdge::Contrast));
   }
   glBindBuffer(GL_TEXTURE_BUFFER, particle_vbo);
   size_t bytes = upload.size() * sizeof(ParticleInstance);

@@ -420,6 +420,19 @@ TEST(Renderer, KeepsTheNearestParticlesPastTheDrawLimit) {
   EXPECT_EQ(pure[0], 0) << "the farthest particle is the one left out";
   EXPECT_GT(pure[1], 10);
   EXPECT_GT(pure[2], 10);
+  // The one left out is the only soft particle, right in front of a wall: with it gone nothing
+  // drawn needs the depth copy or the soft program.
+  v.particles[0].soft_edge = uint8_t(SoftEdge::Linear);
+  v.meshes.push_back({r.add_model(test::wall_model(40, 40, {0.5f, 0.5f, 0.5f, 1}, glm::vec3(0))), {0, 0, -8.2}});
+  r.render(v, 64, 64);
+  EXPECT_EQ(r.last_stats().over_draw_limit, 1);
+  EXPECT_EQ(r.last_stats().soft_shaded, 0);
+  EXPECT_FALSE(r.last_stats().depth_copied);
+  v.particles[1].soft_edge = uint8_t(SoftEdge::Linear);
+  v.particles[1].pos[2] = -7.9f;  // now the middle one, kept, is soft next to the wall
+  r.render(v, 64, 64);
+  EXPECT_EQ(r.last_stats().soft_shaded, 1);
+  EXPECT_TRUE(r.last_stats().depth_copied);
 }
 
 TEST(Renderer, SortingPutsTheNearParticleOnTop) {
