@@ -54,7 +54,7 @@ Settings Settings::defaults() {
   s.define_number("render.contrast_power", 2.0, 0.5, 8.0, "exponent of the contrast soft-edge curve");
   s.define_choice("render.sky", "baked", {"baked", "exact"},
                   "nebula background: baked once per level into a cube map, or evaluated per pixel every frame");
-  s.define_integer("render.sky_resolution", 256, 16, 2048, "texels along each face of the baked nebula cube map");
+  s.define_integer("render.sky_resolution", 256, 16, 1024, "texels along each face of the baked nebula cube map");
   // Particles
   s.define_integer("particles.budget", 200000, 1000, 4000000, "largest number of live particles");
   s.define_integer("particles.lightning_interval", 0, 0, 60,

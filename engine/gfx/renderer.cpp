@@ -509,7 +509,7 @@ void Renderer::set_render_settings(const RenderSettings& s) {
   m.rs = s;
   if (!m.clip_control) m.rs.reversed_z = false;
   m.rs.scale = std::clamp(m.rs.scale, 0.1, 4.0);
-  m.rs.sky_resolution = std::clamp(m.rs.sky_resolution, 16, 2048);
+  m.rs.sky_resolution = std::clamp(m.rs.sky_resolution, 16, 1024);
   glBindTexture(GL_TEXTURE_2D_ARRAY, m.sprite_tex);
   m.upload_texture_params(GL_TEXTURE_2D_ARRAY, true);
   for (auto& model : m.models)

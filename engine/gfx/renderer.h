@@ -71,7 +71,7 @@ struct RenderSettings {
   float near_fade = 2.0f;
   float contrast_power = 2.0f;
   bool sky_exact = false;    // the nebula evaluated per pixel every frame, not looked up in a baked cube map
-  int sky_resolution = 256;  // texels along a face of the baked cube map (16..2048)
+  int sky_resolution = 256;  // texels along a face of the baked cube map (16..1024)
 };
 
 class Renderer {
