@@ -239,6 +239,10 @@ struct Renderer::Impl {
   double last_gpu_ms = -1;
   bool count_fragments = false;
   GLuint fragment_query = 0;
+  bool time_passes = false;  // synchronous GL_TIME_ELAPSED of the particle pass and fill reference
+  GLuint pass_query = 0;
+  void begin_pass_timer();
+  double end_pass_timer();
 
   FrameStats stats;
   glm::mat4 last_view_proj{1.0f};
@@ -940,8 +944,9 @@ void Renderer::Impl::draw_particles(const RenderView& v, const glm::mat4& view, 
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * 4), indices.data(), GL_STATIC_DRAW);
   }
 
-  bool timing = timer_query && !query_pending[size_t(query_index)];
+  const bool timing = timer_query && !time_passes && !query_pending[size_t(query_index)];
   if (timing) glBeginQuery(GL_TIME_ELAPSED, queries[size_t(query_index)]);
+  begin_pass_timer();
 
   if (any_soft) {
     // This frame's depth, never last frame's (Ribeiro: a stale copy flickers as the camera moves).
@@ -1005,6 +1010,7 @@ void Renderer::Impl::draw_particles(const RenderView& v, const glm::mat4& view, 
   ++stats.particle_draw_calls;
   glDepthMask(GL_TRUE);
   glDisable(GL_BLEND);
+  stats.particle_pass_gpu_ms = end_pass_timer();
   if (timing) {
     glEndQuery(GL_TIME_ELAPSED);
     query_pending[size_t(query_index)] = true;
@@ -1147,7 +1153,21 @@ std::string Renderer::reload() {
   return {};
 }
 
-void Renderer::draw_fill_reference(int count) {
+void Renderer::Impl::begin_pass_timer() {
+  if (!time_passes || !timer_query) return;
+  if (!pass_query) glGenQueries(1, &pass_query);
+  glBeginQuery(GL_TIME_ELAPSED, pass_query);
+}
+
+double Renderer::Impl::end_pass_timer() {
+  if (!time_passes || !timer_query) return -1.0;
+  glEndQuery(GL_TIME_ELAPSED);
+  GLuint64 ns = 0;
+  glGetQueryObjectui64v(pass_query, GL_QUERY_RESULT, &ns);
+  return double(ns) * 1e-6;
+}
+
+double Renderer::draw_fill_reference(int count) {
   Impl& m = *impl_;
   if (!m.scene_fbo) throw std::logic_error("draw_fill_reference before any render");
   HudLayer layer;
@@ -1155,11 +1175,15 @@ void Renderer::draw_fill_reference(int count) {
     layer.quads.push_back({0, 0, float(m.scene_w), float(m.scene_h), glm::vec4(0.02f, 0.01f, 0.005f, 0.05f)});
   glBindFramebuffer(GL_FRAMEBUFFER, m.scene_fbo);
   glViewport(0, 0, m.scene_w, m.scene_h);
+  m.begin_pass_timer();
   m.draw_hud(layer, m.scene_w, m.scene_h);
+  return m.end_pass_timer();
 }
 
 void Renderer::finish() { glFinish(); }
 
 void Renderer::count_particle_fragments(bool on) { impl_->count_fragments = on; }
+
+void Renderer::time_gpu_passes(bool on) { impl_->time_passes = on; }
 
 }  // namespace arc

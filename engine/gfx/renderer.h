@@ -57,6 +57,7 @@ struct FrameStats {
   double particle_cpu_ms = 0;  // sorting + upload + draw submission
   double particle_gpu_ms = -1; // GL_TIME_ELAPSED of the particle pass of an earlier frame; −1 if unknown
   long long particle_fragments = -1;  // samples the particle draw blended (count_particle_fragments); −1 if not counted
+  double particle_pass_gpu_ms = -1;   // GL_TIME_ELAPSED of this frame's particle pass (time_gpu_passes); −1 if not timed
 };
 
 // Depth mode and settings as the renderer applies them (after falling back where unsupported).
@@ -101,13 +102,19 @@ class Renderer {
   std::string reload();
 
   // For the benchmark's raw fill-rate reference: draws `count` full-screen quads with the
-  // particle blend state into the scene buffer of the last frame's size.
-  void draw_fill_reference(int count);
+  // particle blend state into the scene buffer of the last frame's size. Returns their
+  // GL_TIME_ELAPSED in ms when time_gpu_passes is on and the context has timer queries, else −1.
+  double draw_fill_reference(int count);
   // Blocks until the GPU has finished all submitted work (glFinish), for timing.
   void finish();
   // For the benchmark: count the fragments the particle draw blends (an occlusion query read
   // back at the end of the frame, so it stalls; off by default).
   void count_particle_fragments(bool on);
+  // For the benchmark: time this frame's particle pass (depth copy and draw) and the fill
+  // reference with GL_TIME_ELAPSED queries read back at once (stalls; off by default). On a
+  // GPU that is the pass's GPU time without the CPU's sorting and upload; on llvmpipe it
+  // covers only the rasteriser threads, not vertex processing and binning.
+  void time_gpu_passes(bool on);
 
  private:
   struct Impl;

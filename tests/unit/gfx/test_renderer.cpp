@@ -435,6 +435,32 @@ TEST(Renderer, KeepsTheNearestParticlesPastTheDrawLimit) {
   EXPECT_TRUE(r.last_stats().depth_copied);
 }
 
+// The benchmark's instruments: the occlusion query counts the samples the particle draw
+// blends (the whole quad that passes the depth test, transparent corners included), and the
+// pass timer reports a time only when asked.
+TEST(Renderer, CountsBlendedFragmentsAndTimesThePassOnRequest) {
+  REQUIRE_CONTEXT();
+  auto r = make_renderer();
+  RenderView v = base_view();
+  v.particles.push_back(particle({0, 0, -5}, 1.0f, glm::vec3(1), 0.5f, 0.0f));
+  r->render(v, 64, 64);
+  EXPECT_EQ(r->last_stats().particle_fragments, -1);
+  EXPECT_EQ(r->last_stats().particle_pass_gpu_ms, -1);
+  r->count_particle_fragments(true);
+  r->time_gpu_passes(true);
+  r->render(v, 64, 64);
+  const double half = 1.0 / (5.0 * std::tan(0.45)) * 32.0;  // quad half-size in pixels
+  EXPECT_NEAR(double(r->last_stats().particle_fragments), 4.0 * half * half, 0.1 * 4.0 * half * half);
+  EXPECT_GE(r->last_stats().particle_pass_gpu_ms, 0.0);
+  v.meshes.push_back({r->add_model(test::wall_model(40, 40, {0.5f, 0.5f, 0.5f, 1}, glm::vec3(0))), {0, 0, -4}});
+  r->render(v, 64, 64);
+  EXPECT_EQ(r->last_stats().particle_fragments, 0) << "behind the wall nothing is blended";
+  r->count_particle_fragments(false);
+  r->time_gpu_passes(false);
+  r->render(v, 64, 64);
+  EXPECT_EQ(r->last_stats().particle_pass_gpu_ms, -1);
+}
+
 TEST(Renderer, SortingPutsTheNearParticleOnTop) {
   REQUIRE_CONTEXT();
   auto r = make_renderer();
