@@ -370,12 +370,12 @@ Renderer::~Renderer() {
     }
     if (!model.textures.empty()) glDeleteTextures(GLsizei(model.textures.size()), model.textures.data());
   }
-  for (Program* p : {&m.sky, &m.stars, &m.mesh, &m.particle_hard, &m.particle_soft, &m.particle_contrast, &m.particle_square, &m.hud}) glDeleteProgram(p->id);
-  GLuint tex[] = {m.sprite_tex, m.font_tex, m.scene_color, m.copy_depth, m.target_color};
-  glDeleteTextures(5, tex);
+  for (Program* p : {&m.sky, &m.sky_exact, &m.stars, &m.mesh, &m.particle_hard, &m.particle_soft, &m.particle_contrast, &m.particle_square, &m.hud}) glDeleteProgram(p->id);
+  GLuint tex[] = {m.sprite_tex, m.font_tex, m.scene_color, m.copy_depth, m.target_color, m.sky_cube};
+  glDeleteTextures(6, tex);
   glDeleteRenderbuffers(1, &m.scene_depth);
-  GLuint fbos[] = {m.scene_fbo, m.copy_fbo, m.target_fbo};
-  glDeleteFramebuffers(3, fbos);
+  GLuint fbos[] = {m.scene_fbo, m.copy_fbo, m.target_fbo, m.sky_fbo};
+  glDeleteFramebuffers(4, fbos);
   GLuint vaos[] = {m.empty_vao, m.star_vao, m.particle_vao, m.hud_vao};
   glDeleteVertexArrays(4, vaos);
   GLuint bufs[] = {m.star_vbo, m.particle_vbo, m.particle_ibo, m.hud_vbo};
@@ -383,6 +383,7 @@ Renderer::~Renderer() {
   glDeleteTextures(1, &m.particle_tbo);
   if (m.timer_query) glDeleteQueries(3, m.queries.data());
   if (m.fragment_query) glDeleteQueries(1, &m.fragment_query);
+  if (m.pass_query) glDeleteQueries(1, &m.pass_query);
 }
 
 std::string Renderer::gl_version() const { return impl_->version; }
