@@ -18,6 +18,7 @@
 #include <glm/mat4x4.hpp>
 
 #include "core/rng.h"
+#include "gfx/cover_boxes.h"
 #include "gfx/hud_font.h"
 
 namespace arc {
@@ -104,8 +105,7 @@ struct GpuModel {
   std::vector<GpuPrimitive> prims;
   std::vector<Material> materials;
   std::vector<GLuint> textures;
-  glm::vec3 lo{0.0f}, hi{0.0f};  // model-space box around every vertex drawn
-  bool empty = true;
+  std::vector<Box3> parts;  // up to eight boxes that hold its triangles (cover_boxes.h)
 };
 
 // An opaque mesh as the particle pass sees it: the view depth range of its box and the box's
@@ -114,6 +114,17 @@ struct GpuModel {
 struct Occluder {
   float nearest, farthest;
   float x0, y0, x1, y1;
+  void include(const Occluder& o) {
+    nearest = std::min(nearest, o.nearest), farthest = std::max(farthest, o.farthest);
+    x0 = std::min(x0, o.x0), x1 = std::max(x1, o.x1);
+    y0 = std::min(y0, o.y0), y1 = std::max(y1, o.y1);
+  }
+};
+
+// One mesh instance: the union of its part boxes' occluders, and where they are.
+struct OccluderGroup {
+  Occluder bound;
+  size_t first, count;
 };
 
 // Where a particle's quad can be, as shaders/particle.vert builds it: corners lie within
@@ -226,7 +237,8 @@ struct Renderer::Impl {
   size_t max_particles_per_draw = 0;  // GL_MAX_TEXTURE_BUFFER_SIZE / 4
   std::vector<ParticleInstance> upload;
   std::vector<uint32_t> keys, order;
-  std::vector<Occluder> occluders;
+  std::vector<Occluder> occluders;        // one per part box of each visible mesh instance
+  std::vector<OccluderGroup> occluder_groups;
   Occluder occluder_bounds{};  // union of all: most particles of a frame fall outside it
 
   GLuint hud_vao = 0, hud_vbo = 0;
@@ -413,12 +425,8 @@ int Renderer::add_model(const ModelData& model) {
     glm::vec3 p, n;
     glm::vec2 uv;
   };
+  g.parts = cover_boxes(model.primitives, 3);
   for (const MeshPrimitive& prim : model.primitives) {
-    for (const glm::vec3& pos : prim.positions) {
-      g.lo = g.empty ? pos : glm::min(g.lo, pos);
-      g.hi = g.empty ? pos : glm::max(g.hi, pos);
-      g.empty = false;
-    }
     std::vector<Vertex> verts(prim.positions.size());
     for (size_t i = 0; i < verts.size(); ++i) {
       verts[i].p = prim.positions[i];
@@ -755,50 +763,53 @@ void Renderer::Impl::draw_meshes(const RenderView& v, const glm::mat4& view_proj
 
 void Renderer::Impl::gather_occluders(const RenderView& v, const glm::mat3& to_view, float tan_x, float tan_y) {
   occluders.clear();
+  occluder_groups.clear();
   const float near = float(v.camera.near_plane);
   const float inf = std::numeric_limits<float>::infinity();
+  const Occluder nothing{inf, -inf, inf, inf, -inf, -inf};
+  occluder_bounds = nothing;
   for (const MeshInstance& inst : v.meshes) {
     if (inst.model < 0 || inst.model >= int(models.size())) continue;
     const GpuModel& g = models[size_t(inst.model)];
-    if (g.empty) continue;
     // The same camera-relative transform draw_meshes uses, taken in double before float.
-    glm::dvec3 rel = inst.position - v.camera.position;
-    glm::dmat3 rot = glm::mat3_cast(inst.orientation) * inst.scale;
-    Occluder o{inf, -inf, inf, inf, -inf, -inf};
-    bool crosses_near = false;
-    for (int i = 0; i < 8; ++i) {
-      glm::dvec3 corner((i & 1) ? g.hi.x : g.lo.x, (i & 2) ? g.hi.y : g.lo.y, (i & 4) ? g.hi.z : g.lo.z);
-      glm::vec3 c = to_view * glm::vec3(rel + rot * corner);
-      float d = -c.z;
-      o.nearest = std::min(o.nearest, d);
-      o.farthest = std::max(o.farthest, d);
-      if (d <= near) {
-        crosses_near = true;
-        continue;
+    const glm::dvec3 rel = inst.position - v.camera.position;
+    const glm::dmat3 rot = glm::mat3_cast(inst.orientation) * inst.scale;
+    OccluderGroup group{nothing, occluders.size(), 0};
+    for (const Box3& part : g.parts) {
+      Occluder o = nothing;
+      bool crosses_near = false;
+      for (int i = 0; i < 8; ++i) {
+        glm::dvec3 corner((i & 1) ? part.hi.x : part.lo.x, (i & 2) ? part.hi.y : part.lo.y, (i & 4) ? part.hi.z : part.lo.z);
+        glm::vec3 c = to_view * glm::vec3(rel + rot * corner);
+        float d = -c.z;
+        o.nearest = std::min(o.nearest, d);
+        o.farthest = std::max(o.farthest, d);
+        if (d <= near) {
+          crosses_near = true;
+          continue;
+        }
+        o.x0 = std::min(o.x0, c.x / d);
+        o.x1 = std::max(o.x1, c.x / d);
+        o.y0 = std::min(o.y0, c.y / d);
+        o.y1 = std::max(o.y1, c.y / d);
       }
-      o.x0 = std::min(o.x0, c.x / d);
-      o.x1 = std::max(o.x1, c.x / d);
-      o.y0 = std::min(o.y0, c.y / d);
-      o.y1 = std::max(o.y1, c.y / d);
+      if (!(o.farthest > near)) continue;  // wholly in front of the near plane: it draws nothing
+      if (crosses_near) o.x0 = o.y0 = -inf, o.x1 = o.y1 = inf;
+      // Only what is on screen can stand behind a particle's pixels.
+      const float mx = tan_x * 1.01f, my = tan_y * 1.01f;
+      if (o.x0 > mx || o.x1 < -mx || o.y0 > my || o.y1 < -my) continue;
+      o.x0 = std::max(o.x0, -mx), o.x1 = std::min(o.x1, mx);
+      o.y0 = std::max(o.y0, -my), o.y1 = std::min(o.y1, my);
+      // Float transforms on the GPU differ from these in the last bits: widen a little.
+      o.nearest -= 1e-4f * std::abs(o.nearest) + 1e-5f;
+      o.farthest += 1e-4f * std::abs(o.farthest) + 1e-5f;
+      occluders.push_back(o);
+      group.bound.include(o);
+      ++group.count;
     }
-    if (!(o.farthest > near)) continue;  // wholly in front of the near plane: it draws nothing
-    if (crosses_near) o.x0 = o.y0 = -inf, o.x1 = o.y1 = inf;
-    // Only what is on screen can stand behind a particle's pixels.
-    const float mx = tan_x * 1.01f, my = tan_y * 1.01f;
-    if (o.x0 > mx || o.x1 < -mx || o.y0 > my || o.y1 < -my) continue;
-    o.x0 = std::max(o.x0, -mx), o.x1 = std::min(o.x1, mx);
-    o.y0 = std::max(o.y0, -my), o.y1 = std::min(o.y1, my);
-    // Float transforms on the GPU differ from these in the last bits: widen a little.
-    o.nearest -= 1e-4f * std::abs(o.nearest) + 1e-5f;
-    o.farthest += 1e-4f * std::abs(o.farthest) + 1e-5f;
-    occluders.push_back(o);
-  }
-  occluder_bounds = Occluder{inf, -inf, inf, inf, -inf, -inf};
-  for (const Occluder& o : occluders) {
-    occluder_bounds.nearest = std::min(occluder_bounds.nearest, o.nearest);
-    occluder_bounds.farthest = std::max(occluder_bounds.farthest, o.farthest);
-    occluder_bounds.x0 = std::min(occluder_bounds.x0, o.x0), occluder_bounds.x1 = std::max(occluder_bounds.x1, o.x1);
-    occluder_bounds.y0 = std::min(occluder_bounds.y0, o.y0), occluder_bounds.y1 = std::max(occluder_bounds.y1, o.y1);
+    if (group.count == 0) continue;
+    occluder_groups.push_back(group);
+    occluder_bounds.include(group.bound);
   }
 }
 
@@ -837,9 +848,12 @@ bool Renderer::Impl::soft_can_matter(const ParticleInstance& p, const QuadBounds
     return o.nearest < reach && o.farthest > front &&
            (whole_screen || (o.x0 <= x1 && x0 <= o.x1 && o.y0 <= y1 && y0 <= o.y1));
   };
-  if (occluders.empty() || !touches(occluder_bounds)) return false;
-  for (const Occluder& o : occluders)
-    if (touches(o)) return true;
+  if (occluder_groups.empty() || !touches(occluder_bounds)) return false;
+  for (const OccluderGroup& g : occluder_groups) {
+    if (!touches(g.bound)) continue;
+    for (size_t i = g.first; i < g.first + g.count; ++i)
+      if (touches(occluders[i])) return true;
+  }
   return false;
 }
 
@@ -882,7 +896,7 @@ void Renderer::Impl::draw_particles(const RenderView& v, const glm::mat4& view, 
   }
   stats.particles_drawn = int(upload.size());
   if (upload.empty()) {
-    stats.particle_cpu_ms = ms_since(t0);
+    stats.particle_prep_ms = stats.particle_cpu_ms = ms_since(t0);
     return;
   }
   // Pure additive particles need no order; as soon as one is alpha blended, the whole set is
@@ -927,6 +941,7 @@ void Renderer::Impl::draw_particles(const RenderView& v, const glm::mat4& view, 
     any_soft = any_soft || soft;
     any_contrast = any_contrast || (soft && q.soft_edge == uint8_t(SoftEdge::Contrast));
   }
+  stats.particle_prep_ms = ms_since(t0);
   glBindBuffer(GL_TEXTURE_BUFFER, particle_vbo);
   size_t bytes = upload.size() * sizeof(ParticleInstance);
   if (bytes > particle_capacity) particle_capacity = bytes * 3 / 2;

@@ -54,7 +54,10 @@ struct FrameStats {
                              // mesh within their reach (the others' soft factor is exactly 1)
   int draw_calls = 0;
   int particle_draw_calls = 0;
-  double particle_cpu_ms = 0;  // sorting + upload + draw submission
+  double particle_prep_ms = 0; // culling, soft-edge flags and sorting, before any GL call
+  double particle_cpu_ms = 0;  // all of the pass on the CPU: preparation, upload, draw submission
+                               // (on llvmpipe submission includes vertex work, binning and any
+                               // wait for earlier passes the depth copy needs)
   double particle_gpu_ms = -1; // GL_TIME_ELAPSED of the particle pass of an earlier frame; −1 if unknown
   long long particle_fragments = -1;  // samples the particle draw blended (count_particle_fragments); −1 if not counted
   double particle_pass_gpu_ms = -1;   // GL_TIME_ELAPSED of this frame's particle pass (time_gpu_passes); −1 if not timed

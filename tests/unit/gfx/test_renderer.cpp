@@ -324,6 +324,14 @@ TEST(Renderer, SoftEdgesSkipParticlesNoSurfaceCanReach) {
     return r->read_pixels();
   };
   v.meshes.push_back({r->add_model(test::box_model({1, 1, 1}, {0.6f, 0.3f, 0.3f, 1}, glm::vec3(0))), {1.7, 0, -5}});
+  // One model of two cubes 4 apart (half size 0.5), like a ship's wing tips: its bounding box
+  // spans the empty gap between them, its cover boxes do not.
+  ModelData dumbbell = test::box_model({0.5f, 0.5f, 0.5f}, {0.3f, 0.6f, 0.3f, 1}, glm::vec3(0));
+  MeshPrimitive other = dumbbell.primitives[0];
+  for (glm::vec3& q : dumbbell.primitives[0].positions) q.x -= 2.0f;
+  for (glm::vec3& q : other.positions) q.x += 2.0f;
+  dumbbell.primitives.push_back(other);
+  v.meshes.push_back({r->add_model(dumbbell), {3, -2.5, -9}});
   struct Case {
     const char* what;
     ParticleInstance p;
@@ -349,6 +357,8 @@ TEST(Renderer, SoftEdgesSkipParticlesNoSurfaceCanReach) {
       {"just behind the wall", particle({-2.0f, 0.0f, -10.3f}, 0.8f, orange, 0.7f, 0.0f), false, true},
       // The box at depth 4..6 covers it on screen but lies wholly in front: hidden, not softened.
       {"behind a nearer box", particle({3.1f, 0.0f, -9.0f}, 0.8f, orange, 0.7f, 0.0f), false, false},
+      {"in the gap between two parts of one model", particle({3.0f, -2.5f, -9.0f}, 0.4f, orange, 0.7f, 0.0f), false, false},
+      {"just in front of one part of that model", particle({5.0f, -2.5f, -8.3f}, 0.4f, orange, 0.7f, 0.0f), true, true},
   };
   for (const Case& c : cases) {
     v.particles = {c.p};
