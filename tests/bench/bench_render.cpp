@@ -28,11 +28,8 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "bench_registry.h"
+#include "bench_scenes.h"
 #include "core/rng.h"
-#include "game/app/scene_resources.h"
-#include "game/render/render_view_builder.h"
-#include "game/sim/game.h"
-#include "game/sim/input.h"
 #include "gfx/renderer.h"
 #include "platform/platform.h"
 
@@ -323,16 +320,7 @@ ARCFIRE_SCENE(render_particle_gallery) {
   Renderer r(desc);
   std::printf("context: %s\n", ctx->description().c_str());
 
-  // The gallery level four seconds in: explosions, beams, sparks, trails and shields all alive.
-  GameOptions options;
-  options.root_dir = root;
-  Game game = Game::load_level(root + "/levels/gallery.json", options);
-  for (int t = 0; t < 240; ++t) game.step(InputFrame{});
-  load_scene_resources(r, game.world(), root);
-  CameraSettings camera;
-  camera.show_hud = false;  // the labels are HUD text, drawn after the particle pass
-  RenderView gallery;
-  build_render_view(game.world(), 1.0, camera, kWidth, kHeight, gallery);
+  const RenderView gallery = bench::level_view(r, "levels/gallery.json", 240, kWidth, kHeight);
   if (const char* dir = std::getenv("ARCFIRE_GFX_DUMP")) {
     r.render(gallery, kWidth, kHeight);
     save_image(std::string(dir) + "/bench_gallery.png", r.read_pixels());
@@ -352,11 +340,7 @@ ARCFIRE_SCENE(render_particle_gallery) {
   // Ordinary play: the arena battle ten seconds in, from the player's chase camera. Most
   // particles are out in space; soft edges cost only where one meets a hull.
   Renderer battle_renderer(desc);
-  Game battle = Game::load_level(root + "/levels/arena.json", options);
-  for (int t = 0; t < 600; ++t) battle.step(InputFrame{});
-  load_scene_resources(battle_renderer, battle.world(), root);
-  RenderView arena;
-  build_render_view(battle.world(), 1.0, camera, kWidth, kHeight, arena);
+  const RenderView arena = bench::level_view(battle_renderer, "levels/arena.json", 600, kWidth, kHeight);
   if (const char* dir = std::getenv("ARCFIRE_GFX_DUMP")) {
     battle_renderer.render(arena, kWidth, kHeight);
     save_image(std::string(dir) + "/bench_battle.png", battle_renderer.read_pixels());

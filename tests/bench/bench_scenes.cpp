@@ -1,0 +1,24 @@
+#include "bench_scenes.h"
+
+#include "game/app/scene_resources.h"
+#include "game/render/render_view_builder.h"
+#include "game/sim/game.h"
+#include "game/sim/input.h"
+
+namespace arc::bench {
+
+RenderView level_view(Renderer& r, const std::string& level, int ticks, int width, int height) {
+  const std::string root = ARCFIRE_SOURCE_DIR;
+  GameOptions options;
+  options.root_dir = root;
+  Game game = Game::load_level(root + "/" + level, options);
+  for (int t = 0; t < ticks; ++t) game.step(InputFrame{});
+  load_scene_resources(r, game.world(), root);
+  CameraSettings camera;
+  camera.show_hud = false;
+  RenderView view;
+  build_render_view(game.world(), 1.0, camera, width, height, view);
+  return view;
+}
+
+}  // namespace arc::bench

@@ -1,0 +1,16 @@
+// Scenes several benchmark files measure.
+#pragma once
+#include <string>
+
+#include "gfx/renderer.h"
+
+namespace arc::bench {
+
+// A level (path relative to the source tree) simulated `ticks` ticks from its start with the
+// default settings and no input, its models and sprites loaded into `r`, and the view built for
+// width×height from the level's camera without the HUD (its labels are text drawn after the
+// particle pass). The gallery at tick 240 has explosions, beams, sparks, trails and shields all
+// alive; the arena at tick 600 is the battle in full swing, seen from the chase camera.
+RenderView level_view(Renderer& r, const std::string& level, int ticks, int width, int height);
+
+}  // namespace arc::bench
