@@ -172,6 +172,22 @@ void think(World& w, Ship& s) {
   }
 }
 
+// Whether a live ship of the shooter's own side sits in its line of fire nearer than `dist`:
+// within its shield sphere, plus a little for the lightning's wander, of the ray from the shooter
+// along `dir`. Allies take no damage, but they stop the beam, missiles and plasma meant for
+// the enemy, so a pilot holds fire until the line is clear.
+bool ally_in_line_of_fire(const World& w, const Ship& s, const glm::dvec3& dir, double dist) {
+  for (const Ship& o : w.ships) {
+    if (!o.alive || o.id == s.id || w.hostile(s, o)) continue;
+    const glm::dvec3 rel = o.position - s.position;
+    const double along = glm::dot(rel, dir);
+    if (along <= 0.0 || along >= dist) continue;
+    const double r = o.cls->shield_radius + 2.0;
+    if (glm::dot(rel, rel) - along * along < r * r) return true;
+  }
+  return false;
+}
+
 void drive_ai(World& w, Ship& s) {
   if (w.tick >= s.ai_state.next_think) think(w, s);
   const AiTuning tune = ai_tuning(w.difficulty);
@@ -208,12 +224,14 @@ void drive_ai(World& w, Ship& s) {
   // recover (longer the calmer it is) instead of flickering the beam at the regeneration rate.
   const double energy_frac = s.cls->energy > 0 ? s.energy / s.cls->energy : 0.0;
   const bool beam_ready = s.beam_firing ? energy_frac > 0.1 : energy_frac > 0.3 + 0.5 * (1.0 - tune.aggression);
-  if (beam_ready && off < cone + 0.02 && dist < s.cls->beam.range * 0.95) c.buttons |= kFirePrimary;
+  const bool line_clear = !ally_in_line_of_fire(w, s, fwd, dist);
+  if (line_clear && beam_ready && off < cone + 0.02 && dist < s.cls->beam.range * 0.95) c.buttons |= kFirePrimary;
   const Rng rng{w.seed, kAiStream + 0x100 + static_cast<uint64_t>(s.id), static_cast<uint64_t>(w.tick)};
-  if (s.cls->missile.present && !plasma && off < 0.35 && dist < 1500 && dist > 80 &&
+  if (line_clear && s.cls->missile.present && !plasma && off < 0.35 && dist < 1500 && dist > 80 &&
       rng.uniform(0) < 0.05 * tune.aggression)
     c.buttons |= kFireSecondary;
-  if (plasma && energy_frac > 0.25 && off < cone + 0.03 && dist < s.cls->plasma.speed * s.cls->plasma.lifetime * 0.8)
+  if (line_clear && plasma && energy_frac > 0.25 && off < cone + 0.03 &&
+      dist < s.cls->plasma.speed * s.cls->plasma.lifetime * 0.8)
     c.buttons |= kFireSecondary;
   // Switch weapons now and then so both get used.
   if (s.cls->missile.present && s.cls->plasma.present && rng.uniform(1) < 0.004)

@@ -232,6 +232,34 @@ TEST_P(AiVersusStationary, DestroysItWithinTwoAndAHalfMinutes) {
 
 INSTANTIATE_TEST_SUITE_P(Difficulties, AiVersusStationary, ::testing::Values("easy", "normal", "hard"));
 
+// An AI fighter with the enemy straight ahead holds fire while a ship of its own side sits in
+// the line of fire, and fires once it has flown past that ship; with the ally well to the side
+// it fires on the way in.
+TEST(Ai, HoldsFireWhileAnAllyIsInTheLineOfFire) {
+  struct Count {
+    int before = 0, after = 0;  // ticks firing with the ally still ahead, and once past it
+  };
+  auto run = [](double ally_x) {
+    std::string ships = R"({ "name": "Hunter", "class": "viper", "team": "red", "position": [0, 0, 0] },
+      { "name": "Ally", "class": "warden", "team": "red", "ai": "none", "position": [)" +
+                        std::to_string(ally_x) + R"(, 0, -150] },
+      { "name": "Enemy", "class": "warden", "team": "blue", "ai": "none", "position": [0, 0, -400] })";
+    Game g = Game::load_level(write_level("ai_ally_" + std::to_string(int(ally_x)) + ".json", level_text(ships)), options());
+    Count n;
+    for (int t = 0; t < 360; ++t) {
+      g.step(InputFrame{});
+      const Ship& h = g.world().ships[0];
+      const bool firing = (h.controls.buttons & (kFirePrimary | kFireSecondary)) != 0;
+      (h.position.z > -150.0 ? n.before : n.after) += firing;
+    }
+    return n;
+  };
+  const Count blocked = run(0.0), clear = run(60.0);
+  EXPECT_EQ(blocked.before, 0) << "the ally is straight in the line of fire";
+  EXPECT_GT(blocked.after, 10) << "past the ally the line is clear";
+  EXPECT_GT(clear.before, 10) << "the ally is well to the side";
+}
+
 TEST(Ai, HarderDifficultyAimsTighterAndReactsFaster) {
   EXPECT_GT(ai_tuning(0).aim_error, ai_tuning(1).aim_error);
   EXPECT_GT(ai_tuning(1).aim_error, ai_tuning(2).aim_error);
