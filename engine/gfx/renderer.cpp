@@ -114,6 +114,11 @@ struct GpuModel {
 struct Occluder {
   float nearest, farthest;
   float x0, y0, x1, y1;
+  // Covers nothing: the identity of include().
+  static Occluder none() {
+    const float inf = std::numeric_limits<float>::infinity();
+    return Occluder{inf, -inf, inf, inf, -inf, -inf};
+  }
   void include(const Occluder& o) {
     nearest = std::min(nearest, o.nearest), farthest = std::max(farthest, o.farthest);
     x0 = std::min(x0, o.x0), x1 = std::max(x1, o.x1);
@@ -761,48 +766,60 @@ void Renderer::Impl::draw_meshes(const RenderView& v, const glm::mat4& view_proj
   glActiveTexture(GL_TEXTURE0);
 }
 
+namespace {
+
+// A model-space box under the instance's camera-relative transform as an Occluder; false when
+// it lies wholly in front of the near plane or off the screen (tangent half-extents mx, my).
+bool project_box(const Box3& box, const glm::dvec3& rel, const glm::dmat3& rot, const glm::mat3& to_view, float near,
+                 float mx, float my, Occluder& o) {
+  const float inf = std::numeric_limits<float>::infinity();
+  o = Occluder::none();
+  bool crosses_near = false;
+  for (int i = 0; i < 8; ++i) {
+    glm::dvec3 corner((i & 1) ? box.hi.x : box.lo.x, (i & 2) ? box.hi.y : box.lo.y, (i & 4) ? box.hi.z : box.lo.z);
+    glm::vec3 c = to_view * glm::vec3(rel + rot * corner);
+    float d = -c.z;
+    o.nearest = std::min(o.nearest, d);
+    o.farthest = std::max(o.farthest, d);
+    if (d <= near) {
+      crosses_near = true;
+      continue;
+    }
+    o.x0 = std::min(o.x0, c.x / d);
+    o.x1 = std::max(o.x1, c.x / d);
+    o.y0 = std::min(o.y0, c.y / d);
+    o.y1 = std::max(o.y1, c.y / d);
+  }
+  if (!(o.farthest > near)) return false;  // wholly in front of the near plane: it draws nothing
+  if (crosses_near) o.x0 = o.y0 = -inf, o.x1 = o.y1 = inf;
+  // Only what is on screen can stand behind a particle's pixels.
+  if (o.x0 > mx || o.x1 < -mx || o.y0 > my || o.y1 < -my) return false;
+  o.x0 = std::max(o.x0, -mx), o.x1 = std::min(o.x1, mx);
+  o.y0 = std::max(o.y0, -my), o.y1 = std::min(o.y1, my);
+  // Float transforms on the GPU differ from these in the last bits: widen a little.
+  o.nearest -= 1e-4f * std::abs(o.nearest) + 1e-5f;
+  o.farthest += 1e-4f * std::abs(o.farthest) + 1e-5f;
+  return true;
+}
+
+}  // namespace
+
 void Renderer::Impl::gather_occluders(const RenderView& v, const glm::mat3& to_view, float tan_x, float tan_y) {
   occluders.clear();
   occluder_groups.clear();
   const float near = float(v.camera.near_plane);
-  const float inf = std::numeric_limits<float>::infinity();
-  const Occluder nothing{inf, -inf, inf, inf, -inf, -inf};
-  occluder_bounds = nothing;
+  const float mx = tan_x * 1.01f, my = tan_y * 1.01f;
+  occluder_bounds = Occluder::none();
   for (const MeshInstance& inst : v.meshes) {
     if (inst.model < 0 || inst.model >= int(models.size())) continue;
     const GpuModel& g = models[size_t(inst.model)];
     // The same camera-relative transform draw_meshes uses, taken in double before float.
     const glm::dvec3 rel = inst.position - v.camera.position;
     const glm::dmat3 rot = glm::mat3_cast(inst.orientation) * inst.scale;
-    OccluderGroup group{nothing, occluders.size(), 0};
+    OccluderGroup group{Occluder::none(), occluders.size(), 0};
+    Occluder o;
     for (const Box3& part : g.parts) {
-      Occluder o = nothing;
-      bool crosses_near = false;
-      for (int i = 0; i < 8; ++i) {
-        glm::dvec3 corner((i & 1) ? part.hi.x : part.lo.x, (i & 2) ? part.hi.y : part.lo.y, (i & 4) ? part.hi.z : part.lo.z);
-        glm::vec3 c = to_view * glm::vec3(rel + rot * corner);
-        float d = -c.z;
-        o.nearest = std::min(o.nearest, d);
-        o.farthest = std::max(o.farthest, d);
-        if (d <= near) {
-          crosses_near = true;
-          continue;
-        }
-        o.x0 = std::min(o.x0, c.x / d);
-        o.x1 = std::max(o.x1, c.x / d);
-        o.y0 = std::min(o.y0, c.y / d);
-        o.y1 = std::max(o.y1, c.y / d);
-      }
-      if (!(o.farthest > near)) continue;  // wholly in front of the near plane: it draws nothing
-      if (crosses_near) o.x0 = o.y0 = -inf, o.x1 = o.y1 = inf;
-      // Only what is on screen can stand behind a particle's pixels.
-      const float mx = tan_x * 1.01f, my = tan_y * 1.01f;
-      if (o.x0 > mx || o.x1 < -mx || o.y0 > my || o.y1 < -my) continue;
-      o.x0 = std::max(o.x0, -mx), o.x1 = std::min(o.x1, mx);
-      o.y0 = std::max(o.y0, -my), o.y1 = std::min(o.y1, my);
-      // Float transforms on the GPU differ from these in the last bits: widen a little.
-      o.nearest -= 1e-4f * std::abs(o.nearest) + 1e-5f;
-      o.farthest += 1e-4f * std::abs(o.farthest) + 1e-5f;
+      if (!project_box(part, rel, rot, to_view, near, mx, my, o)) continue;
       occluders.push_back(o);
       group.bound.include(o);
       ++group.count;

@@ -33,6 +33,12 @@ bool parse_size(const std::string& text, int& w, int& h) {
 
 }  // namespace
 
+void apply_simulation_settings(const Settings& s, GameOptions& game) {
+  game.particle_budget = uint32_t(s.integer("particles.budget"));
+  game.lightning_interval = int(s.integer("particles.lightning_interval"));
+  game.substeps = int(s.integer("sim.substeps"));
+}
+
 std::string resolve_data_path(const std::string& path, const std::string& option) {
   namespace fs = std::filesystem;
   if (fs::is_regular_file(path)) return path;
@@ -126,9 +132,7 @@ std::optional<int> parse_command_line(int argc, char** argv, AppOptions& o) {
     std::fprintf(stderr, "arcfire: %s\n", e.what());
     return int(kExitBadInput);
   }
-  o.game.particle_budget = uint32_t(o.settings.integer("particles.budget"));
-  o.game.lightning_interval = int(o.settings.integer("particles.lightning_interval"));
-  o.game.substeps = int(o.settings.integer("sim.substeps"));
+  apply_simulation_settings(o.settings, o.game);
   if (list_settings) {
     std::cout << "Settings (arcfire --set key=value; presets with --quality):\n" << o.settings.describe();
     return 0;

@@ -33,6 +33,10 @@ struct AppOptions {
   GameOptions game;
 };
 
+// The simulation keys of the settings (particles.budget, particles.lightning_interval,
+// sim.substeps) copied into the options a Game is loaded with.
+void apply_simulation_settings(const Settings& s, GameOptions& game);
+
 // A data file named on the command line: as given, or else relative to the source tree, so
 // `arcfire --level levels/arena.json` works from any folder. InputError if neither exists.
 std::string resolve_data_path(const std::string& path, const std::string& option);

@@ -1,5 +1,6 @@
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -24,6 +25,11 @@ std::vector<std::pair<std::string, double>>& metrics() {
 void report_metric(const std::string& name, double value) { metrics().emplace_back(name, value); }
 double now_seconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n == 0 ? 0.0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 SceneRegistrar::SceneRegistrar(const char* name, std::function<void()> fn) {
   scenes().emplace_back(name, std::move(fn));

@@ -20,6 +20,7 @@
 #include "bench_registry.h"
 #include "bench_scenes.h"
 #include "core/settings.h"
+#include "game/app/app_options.h"
 #include "game/sim/game.h"
 #include "game/sim/input.h"
 #include "gfx/renderer.h"
@@ -41,9 +42,7 @@ Settings preset(const std::string& name) {
 GameOptions game_options(const Settings& s) {
   GameOptions o;
   o.root_dir = ARCFIRE_SOURCE_DIR;
-  o.particle_budget = uint32_t(s.integer("particles.budget"));
-  o.lightning_interval = int(s.integer("particles.lightning_interval"));
-  o.substeps = int(s.integer("sim.substeps"));
+  apply_simulation_settings(s, o);
   return o;
 }
 
@@ -63,12 +62,6 @@ void image_error(const Image& want, const Image& got, double* mean, double* off)
   }
   *mean = sum / double(n * 3);
   *off = double(beyond) / double(n);
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n == 0 ? 0.0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
 }  // namespace
@@ -129,10 +122,10 @@ ARCFIRE_SCENE(quality_presets) {
     image_error(images[kReference], images[i], &mean, &off);
     const double best = *std::min_element(ms[i].begin(), ms[i].end());
     std::printf("  %-10s %7.2f ms/frame, x%.3f of reference; image %.3f/255 mean error, %.4f of pixels beyond 5/255\n",
-                kPresets[i], best, median(ratio), mean, off);
+                kPresets[i], best, bench::median(ratio), mean, off);
     const std::string n = kPresets[i];
     bench::report_metric("preset_frame_ms_" + n, best);
-    bench::report_metric("preset_frame_ratio_" + n, median(ratio));
+    bench::report_metric("preset_frame_ratio_" + n, bench::median(ratio));
     if (i != kReference) {
       bench::report_metric("preset_image_error_" + n, mean);
       bench::report_metric("preset_pixels_off_" + n, off);

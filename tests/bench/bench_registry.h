@@ -7,12 +7,15 @@
 #pragma once
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace arc::bench {
 
 void report_metric(const std::string& name, double value);
 // Wall-clock seconds (steady clock) for scenes.
 double now_seconds();
+// The median of a set of timings or ratios (0 when empty).
+double median(std::vector<double> v);
 
 struct SceneRegistrar {
   SceneRegistrar(const char* name, std::function<void()> fn);

@@ -132,12 +132,6 @@ struct Figures {
   long long fragments = 0;  // blended by the particle draw, soft edges per effect
 };
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  size_t n = v.size();
-  return n == 0 ? 0.0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 Figures measure(Renderer& r, const RenderView& view, const BenchEnv& env) {
   RenderView no_particles = view;
   no_particles.particles.clear();
@@ -220,7 +214,7 @@ Figures measure(Renderer& r, const RenderView& view, const BenchEnv& env) {
   auto paired = [&](size_t a, size_t b) {
     std::vector<double> q;
     for (int i = 0; i < rounds; ++i) q.push_back(configs[a].ms[size_t(i)] / configs[b].ms[size_t(i)]);
-    return median(q);
+    return bench::median(q);
   };
 
   Figures f;
