@@ -206,6 +206,29 @@ TEST(Renderer, DegenerateBillboardsGiveFinitePixels) {
   EXPECT_GT(channel(img, 48, 44, 2), channel(img, 48, 44, 0));
 }
 
+// The near-camera fade (render.near_fade) scales a particle by clamp((depth − near)/fade): one
+// 0.6 from the camera (near plane 0.1) with a fade of 2 keeps about a quarter of its light, so
+// flying through a cloud does not pop; one far beyond the fade distance is untouched.
+TEST(Renderer, NearFadeDimsOnlyParticlesCloseToTheCamera) {
+  REQUIRE_CONTEXT();
+  auto r = make_renderer();
+  auto centre = [&](float z, float size, float fade) {
+    RenderSettings s = test::plain_settings();
+    s.near_fade = fade;
+    r->set_render_settings(s);
+    RenderView v = base_view();
+    v.starfield_seed = 0;
+    v.particles = {particle({0, 0, z}, size, glm::vec3(0.8f), 1.0f, 1.0f)};
+    r->render(v, 32, 32);
+    return r->read_pixels();
+  };
+  const float near_off = channel(centre(-0.6f, 0.1f, 0.0f), 16, 16, 0);
+  const float near_on = channel(centre(-0.6f, 0.1f, 2.0f), 16, 16, 0);
+  ASSERT_GT(near_off, 0.3f);
+  EXPECT_NEAR(near_on / near_off, 0.25f, 0.04f);
+  EXPECT_EQ(compare_images(centre(-20.0f, 2.0f, 0.0f), centre(-20.0f, 2.0f, 2.0f)).max_diff, 0);
+}
+
 TEST(Renderer, ReversedAndStandardDepthAgree) {
   REQUIRE_CONTEXT();
   auto r = make_renderer();

@@ -116,6 +116,19 @@ TEST(World, CollectEvaluatesAClusterThatWasCulledAtStep) {
   EXPECT_EQ(std::memcmp(pa.data(), pb.data(), pa.size() * sizeof(ParticleInstance)), 0);
 }
 
+// Whole clusters outside the view frustum are left out of the frame's output before any
+// per-particle work; turning back shows them again.
+TEST(World, CollectLeavesOutClustersOutsideTheFrustum) {
+  ParticleWorld w(ParticleConfig{.seed = 3}, &library());
+  w.spawn("linear", {});
+  for (uint64_t t = 1; t <= 10; ++t) w.step(t, looking_at_origin());
+  std::vector<ParticleInstance> seen, behind;
+  w.collect(looking_at_origin(), seen);
+  w.collect(looking_away(), behind);
+  EXPECT_GT(seen.size(), 0u);
+  EXPECT_EQ(behind.size(), 0u);
+}
+
 TEST(World, AttachedShieldMovesAndTurnsWithItsOwner) {
   ParticleWorld w(ParticleConfig{}, &library());
   OwnerTransform t{{1000, 0, 0}, glm::dquat(1, 0, 0, 0), {}};
