@@ -7,7 +7,7 @@
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 #include "assets/image_decode.h"
-#include "assets/model.h"
+#include "assets/image.h"
 #include "core/error.h"
 
 namespace arc {

@@ -4,7 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
-#include "assets/model.h"
+#include "assets/image.h"
 
 namespace arc {
 

@@ -1,10 +1,8 @@
-// assets/model.h — glTF models and images as plain CPU data (no GL).
+// assets/model.h — glTF models as plain CPU data (no GL); images are in assets/image.h.
 //
 // load_model() reads .gltf or .glb through tinygltf: positions, normals, UVs, indices of any
 // component type, base-colour factor and texture, emissive factor (and texture), with node
-// transforms baked into the vertices. load_image() reads any format OpenImageIO knows into
-// RGBA8; load_sprite() also premultiplies colour by alpha (Ilmonen eq. 10: tcola = tcol·talpha).
-// Every failure throws arc::InputError("path: what is wrong").
+// transforms baked into the vertices. Every failure throws arc::InputError("path: what is wrong").
 //
 // Details of load_model: the default scene (or every root node when the file has no scenes) is
 // walked with TRS or matrix node transforms; primitives must be triangles, indexed by
@@ -14,7 +12,6 @@
 // checked before tinygltf sees it. Textures are decoded through OpenImageIO like load_image().
 //
 //   arc::ModelData ship = arc::load_model("assets/models/viper.glb");
-//   arc::Image smoke = arc::load_sprite("assets/textures/sprite_smoke.png");
 #pragma once
 #include <cstdint>
 #include <string>
@@ -23,14 +20,9 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
-namespace arc {
+#include "assets/image.h"
 
-struct Image {
-  int width = 0;
-  int height = 0;
-  std::vector<uint8_t> rgba;  // width*height*4, rows top to bottom
-  bool premultiplied = false;
-};
+namespace arc {
 
 struct Material {
   glm::vec4 base_color{1.0f};
@@ -57,12 +49,5 @@ struct ModelData {
 };
 
 ModelData load_model(const std::string& path);
-Image load_image(const std::string& path);
-Image load_sprite(const std::string& path);  // RGBA8, premultiplied
-void premultiply(Image& image);
-// Reverses the row order (GL reads images bottom to top; Image rows run top to bottom).
-void flip_rows(Image& image);
-// Writes RGBA8 as PNG (or any format by extension) through OpenImageIO, atomically.
-void save_image(const std::string& path, const Image& image);
 
 }  // namespace arc

@@ -9,7 +9,7 @@
 #pragma once
 #include <string>
 
-#include "assets/model.h"
+#include "assets/image.h"
 
 namespace arc {
 

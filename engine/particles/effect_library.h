@@ -6,6 +6,7 @@
 // `path:line:col: message`. A library is immutable once the game starts: ParticleWorld keeps
 // pointers to its definitions.
 //
+// Example, compiled as EffectLibraryExample.LoadsTheGameEffects in tests/unit/particles/test_examples.cpp:
 //   EffectLibrary fx;
 //   fx.load_directory("assets/effects");
 //   const EffectDef& boom = fx.get("ship_explosion");

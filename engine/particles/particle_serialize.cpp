@@ -1,6 +1,6 @@
 // particles/particle_serialize.cpp — ParticleWorld snapshots and the cheap per-tick hash.
 //
-// Format (version 1), inside the frame of particles/snapshot_io.h, all little-endian:
+// Format (version 1), inside the frame of core/snapshot_io.h, all little-endian:
 //   config: seed u64, budget u32, cull_distance f64, lightning_interval i32, tick_seconds f64
 //   counters: tick u64, next_serial u64, live_particles u32, refused u64, skipped u32
 //   owners: count u32, then (id u32, position 3×f64, orientation 4×f64, velocity 3×f64)
@@ -21,10 +21,10 @@
 #include <type_traits>
 
 #include "core/hash.h"
-#include "particles/fast_hash.h"
+#include "core/fast_hash.h"
 #include "particles/effect_library.h"
 #include "particles/particle_world.h"
-#include "particles/snapshot_io.h"
+#include "core/snapshot_io.h"
 #include "particles/world_state.h"
 
 namespace arc {

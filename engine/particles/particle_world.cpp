@@ -1,3 +1,4 @@
+// particles/particle_world.cpp — clusters: spawn, attach, step (emit, animate, cull), collect, hash.
 #include "particles/particle_world.h"
 
 #include <algorithm>
@@ -11,6 +12,7 @@
 #include "particles/cluster.h"
 #include "particles/effect_library.h"
 #include "particles/emitter.h"
+#include "particles/instance_output.h"
 #include "particles/world_state.h"
 
 namespace arc {
@@ -65,6 +67,14 @@ struct ParticleWorld::Impl : ParticleWorldState {
   Pose frame(const Cluster& c) const {
     if (moves_with_frame(c)) return emitter_pose(c);
     return {c.world_origin, glm::dquat(1, 0, 0, 0)};
+  }
+  // frame() with the owner where the renderer draws it, when `drawn` lists it.
+  Pose drawn_frame(const Cluster& c, std::span<const DrawnOwner> drawn) const {
+    if (c.owner == 0 || !moves_with_frame(c)) return frame(c);
+    auto it = std::lower_bound(drawn.begin(), drawn.end(), c.owner,
+                               [](const DrawnOwner& d, uint32_t owner) { return d.owner < owner; });
+    if (it == drawn.end() || it->owner != c.owner) return frame(c);
+    return {it->position + it->orientation * c.local_position, it->orientation * c.local_orientation};
   }
 
   uint32_t budget_limit(int priority) const {
@@ -529,7 +539,8 @@ void ParticleWorld::step(uint64_t tick, const ParticleCamera& camera) {
   }
 }
 
-void ParticleWorld::collect(const ParticleCamera& camera, std::vector<ParticleInstance>& out) const {
+void ParticleWorld::collect(const ParticleCamera& camera, std::vector<ParticleInstance>& out,
+                            std::span<const DrawnOwner> drawn) const {
   const Impl& w = *impl_;
   for (size_t slot = 0; slot < w.slots.size(); ++slot) {
     const Cluster& c = w.slots[slot];
@@ -541,33 +552,7 @@ void ParticleWorld::collect(const ParticleCamera& camera, std::vector<ParticleIn
       w.animate(c, w.tick, w.scratch);
       pool = &w.scratch;
     }
-    const Pose f = w.frame(c);
-    const glm::vec3 offset(f.position - camera.position);
-    const glm::mat3 rot(glm::mat3_cast(f.orientation));
-    const ClusterDef& d = *c.def;
-    const bool lightning = d.animation == AnimationType::Lightning;
-    const float soft_extent = float(d.soft_extent * c.scale);
-    for (size_t i = 0; i < pool->count(); ++i) {
-      const float a = pool->a[i];
-      if ((pool->flags[i] & kParticleHidden) || !(a > 0.0f)) continue;
-      ParticleInstance p{};
-      const glm::vec3 pos = offset + rot * glm::vec3(pool->px[i], pool->py[i], pool->pz[i]);
-      p.pos[0] = pos.x, p.pos[1] = pos.y, p.pos[2] = pos.z;
-      p.size = std::max(pool->size[i], 1e-4f);
-      if (lightning) {
-        const glm::vec3 axis = rot * glm::vec3(pool->vx[i], pool->vy[i], pool->vz[i]);
-        p.axis[0] = axis.x, p.axis[1] = axis.y, p.axis[2] = axis.z;
-      }
-      p.rotation = pool->rotation[i];
-      p.color[0] = pool->r[i] * a, p.color[1] = pool->g[i] * a, p.color[2] = pool->b[i] * a, p.color[3] = a;
-      p.burn = std::clamp(pool->burn[i], 0.0f, 1.0f);
-      p.soft_extent = soft_extent;
-      p.sprite = pool->sprite[i];
-      p.soft_edge = uint8_t(d.soft_edge);
-      p.billboard = uint8_t(lightning ? Billboard::AxisLocked : Billboard::CameraFacing);
-      p.cluster = uint32_t(slot + 1);
-      out.push_back(p);
-    }
+    append_instances(c, *pool, w.drawn_frame(c, drawn), camera.position, uint32_t(slot + 1), out);
   }
 }
 

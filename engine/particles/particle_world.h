@@ -10,15 +10,19 @@
 // Randomness is keyed by (seed, cluster id, tick, particle index), so results do not depend on
 // update order, and clusters far from the camera may skip ticks and catch up exactly.
 //
-//   EffectLibrary fx; fx.load_directory("assets/effects");
+// Example, compiled as ParticleWorldExample.SpawnStepCollect in tests/unit/particles/test_examples.cpp:
+//   EffectLibrary fx;
+//   fx.load_directory("assets/effects");
 //   ParticleWorld world(ParticleConfig{.seed = level_seed}, &fx);
-//   EffectHandle e = world.spawn("ship_explosion", SpawnParams{.position = p});
-//   ClusterHandle beam = world.spawn_lightning("lightning_beam", ship_id, mount, dir);
-//   each tick: world.set_owner_transform(ship_id, {pos, rot, vel}); world.step(tick, camera);
-//   each frame: world.collect(camera, alpha, view.particles);
+//   EffectHandle boom = world.spawn("ship_explosion", SpawnParams{.position = where});
+//   ClusterHandle beam = world.spawn_lightning("lightning_beam", ship_owner, mount, forward);
+//   world.set_owner_transform(ship_owner, OwnerTransform{ship_position, ship_rotation, ship_velocity});
+//   world.step(tick, camera);
+//   world.collect(camera, particles, drawn_owners);
 #pragma once
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 #include <glm/gtc/quaternion.hpp>
@@ -78,6 +82,14 @@ struct ParticleStats {
   uint32_t skipped_clusters = 0;   // clusters not animated in the last step (culled)
 };
 
+// Where an owner is drawn this frame: the renderer interpolates meshes between the last two
+// ticks, so collect() can be told the same in-between pose for the owners it draws.
+struct DrawnOwner {
+  uint32_t owner = 0;
+  glm::dvec3 position{0.0};
+  glm::dquat orientation{1, 0, 0, 0};
+};
+
 // The view used for culling and for camera-relative output.
 struct ParticleCamera {
   glm::dvec3 position{0.0};
@@ -124,15 +136,18 @@ class ParticleWorld {
 
   // Advances everything to `tick` (normally the previous tick + 1).
   void step(uint64_t tick, const ParticleCamera& camera);
-  // Appends visible particles, camera-relative, culled by cluster.
-  void collect(const ParticleCamera& camera, std::vector<ParticleInstance>& out) const;
+  // Appends visible particles, camera-relative, culled by cluster. `drawn` (sorted by owner)
+  // gives owners' drawn poses: clusters that move with an owner listed there are placed in
+  // that pose instead of this tick's, so they sit on the owner's interpolated mesh.
+  void collect(const ParticleCamera& camera, std::vector<ParticleInstance>& out,
+               std::span<const DrawnOwner> drawn = {}) const;
 
   ParticleStats stats() const;
   void hash(StateHasher& h) const;  // everything, every particle included
   // Cheap: counters, owners and a per-cluster summary (serial, definition, spawn tick, owner,
   // frame, particle count, RNG and lightning-epoch counters, emitter accumulator). Particle
   // state is a closed-form function of these, so this is what a per-tick replay hash needs.
-  void hash_summary(FastHasher& h) const;  // particles/fast_hash.h
+  void hash_summary(FastHasher& h) const;  // core/fast_hash.h
   uint64_t tick() const;
 
   // Snapshot of the whole dynamic state (particle_serialize.cpp): every cluster slot with its

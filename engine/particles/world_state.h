@@ -99,7 +99,7 @@ void hash_world_state(const ParticleWorldState& w, Hasher& h, PerCluster&& per_c
 }
 
 // Every particle of a pool folded into `h` (the full hash); particle_serialize.cpp. Words go
-// through a local FastHasher (particles/fast_hash.h), several times faster than StateHasher.
+// through a local FastHasher (core/fast_hash.h), several times faster than StateHasher.
 void hash_pool(const ParticlePool& pool, StateHasher& h);
 
 // The snapshot code's way in (a friend of ParticleWorld); defined in particle_world.cpp.

@@ -66,10 +66,4 @@ int key_code(std::string_view name) { return find(keys(), name); }
 int gamepad_axis_code(std::string_view name) { return find(kPadAxes, name); }
 int gamepad_button_code(std::string_view name) { return find(kPadButtons, name); }
 
-std::vector<std::string> key_names() {
-  std::vector<std::string> out;
-  for (const auto& [n, c] : keys()) out.push_back(n);
-  return out;
-}
-
 }  // namespace arc

@@ -28,7 +28,6 @@ constexpr int kMouseButtonBase = 1000;
 int key_code(std::string_view name);
 int gamepad_axis_code(std::string_view name);
 int gamepad_button_code(std::string_view name);
-std::vector<std::string> key_names();  // every name key_code() knows
 
 // Raw device state sampled once per rendered frame; the game quantises it into InputFrames.
 struct InputState {

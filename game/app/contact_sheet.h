@@ -2,7 +2,7 @@
 #pragma once
 #include <vector>
 
-#include "assets/model.h"
+#include "assets/image.h"
 
 namespace arc {
 

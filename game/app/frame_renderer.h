@@ -8,7 +8,7 @@
 #include <memory>
 #include <string>
 
-#include "assets/model.h"
+#include "assets/image.h"
 #include "core/settings.h"
 
 namespace arc {

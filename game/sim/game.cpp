@@ -12,7 +12,7 @@
 #include "game/sim/serialize.h"
 #include "game/sim/simulation.h"
 #include "game/sim/world.h"
-#include "particles/fast_hash.h"
+#include "core/fast_hash.h"
 
 namespace arc {
 
@@ -105,7 +105,7 @@ void hash_clusters(FastHasher& h, const EffectHandle& e) {
 
 // The cheap per-tick hash (Game::hash()): FastHasher, so it costs a small part of a step.
 uint64_t hash_core(const World& w) {
-  FastHasher h;  // local: kept in registers (particles/fast_hash.h)
+  FastHasher h;  // local: kept in registers (core/fast_hash.h)
   h.add_i64(w.tick);
   h.add_u64(w.seed);
   h.add_i64(w.difficulty);

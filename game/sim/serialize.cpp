@@ -4,7 +4,7 @@
 #include <string>
 
 #include "game/sim/world.h"
-#include "particles/snapshot_io.h"
+#include "core/snapshot_io.h"
 
 namespace arc {
 namespace {

@@ -8,7 +8,7 @@
 // (ship classes, effects, the level) are not in it: restoring loads the level first and then
 // overwrites the dynamic state, checking that the snapshot belongs to that level.
 //
-// Format: particles/snapshot_io.h's frame (magic "ARCSNAP1", version, size, checksum), then
+// Format: core/snapshot_io.h's frame (magic "ARCSNAP1", version, size, checksum), then
 // little-endian fields in the order of serialize.cpp. A truncated, corrupt or foreign
 // snapshot throws InputError("snapshot: ...").
 //

@@ -10,7 +10,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
-#include "assets/model.h"
+#include "assets/image.h"
 #include "core/rng.h"
 
 namespace arc::assetgen {

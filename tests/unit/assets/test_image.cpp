@@ -5,7 +5,7 @@
 #include <vector>
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
-#include "assets/model.h"
+#include "assets/image.h"
 #include "core/error.h"
 #include "test_util.h"
 

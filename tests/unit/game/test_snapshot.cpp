@@ -9,7 +9,7 @@
 #include "core/hash.h"
 #include "core/rng.h"
 #include "game/sim/world.h"
-#include "particles/snapshot_io.h"
+#include "core/snapshot_io.h"
 #include "test_helpers.h"
 
 namespace arc {

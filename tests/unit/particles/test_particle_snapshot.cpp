@@ -9,9 +9,9 @@
 #include "core/error.h"
 #include "core/hash.h"
 #include "particles/effect_library.h"
-#include "particles/fast_hash.h"
+#include "core/fast_hash.h"
 #include "particles/particle_world.h"
-#include "particles/snapshot_io.h"
+#include "core/snapshot_io.h"
 
 namespace arc {
 namespace {

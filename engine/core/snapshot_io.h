@@ -1,4 +1,4 @@
-// particles/snapshot_io.h — little-endian byte writer and bounds-checked reader for snapshots.
+// core/snapshot_io.h — little-endian byte writer and bounds-checked reader for snapshots.
 //
 // Used by ParticleWorld::save/load and by the game's snapshot (game/sim/serialize.cpp). A
 // snapshot is framed as

@@ -1,4 +1,4 @@
-// particles/fast_hash.h — a 64-bit hash of a stream of words, fast enough to run every tick.
+// core/fast_hash.h — a 64-bit hash of a stream of words, fast enough to run every tick.
 //
 // Same interface as core/hash.h's StateHasher. StateHasher mixes each word into the running
 // value, so every word waits for the previous one's full mix (a chain of multiplies). Here the
@@ -9,7 +9,6 @@
 //
 // Use a local FastHasher in a hot loop (not one reached through a reference), so the compiler
 // keeps its two words in registers, and fold it into an outer hasher with add_u64(value()).
-// (It belongs beside StateHasher in core/hash.h; it lives here until that module is free.)
 #pragma once
 #include <bit>
 #include <cstdint>

@@ -1,0 +1,31 @@
+// assets/image.h — RGBA8 images as plain CPU data, read and written through OpenImageIO (no GL).
+//
+// load_image() reads any format OpenImageIO knows into RGBA8; load_sprite() also premultiplies
+// colour by alpha (Ilmonen eq. 10: tcola = tcol·talpha). save_image() writes atomically (a
+// temporary file renamed into place). Every failure throws arc::InputError("path: what is wrong").
+//
+//   arc::Image smoke = arc::load_sprite("assets/textures/sprite_smoke.png");
+//   arc::save_image("out/smoke.png", smoke);
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace arc {
+
+struct Image {
+  int width = 0;
+  int height = 0;
+  std::vector<uint8_t> rgba;  // width*height*4, rows top to bottom
+  bool premultiplied = false;
+};
+
+Image load_image(const std::string& path);
+Image load_sprite(const std::string& path);  // RGBA8, premultiplied
+void premultiply(Image& image);
+// Reverses the row order (GL reads images bottom to top; Image rows run top to bottom).
+void flip_rows(Image& image);
+// Writes RGBA8 as PNG (or any format by extension) through OpenImageIO, atomically.
+void save_image(const std::string& path, const Image& image);
+
+}  // namespace arc
