@@ -98,8 +98,8 @@ int run_window(const AppOptions& o) {
   LiveInput input(bindings);
   FixedStepClock clock(int(std::lround(1.0 / session.game->tick_seconds())));
   PauseMenu menu;
-  CameraSettings camera;
-  camera.show_fps = o.show_fps;
+  HudState hud;
+  hud.show_fps = o.show_fps;
   window->set_mouse_captured(true);
   bool mouse_captured = true;
 
@@ -128,7 +128,7 @@ int run_window(const AppOptions& o) {
     for (AppAction a : input.take_actions()) {
       switch (a) {
         case AppAction::Screenshot: want_screenshot = true; break;
-        case AppAction::ToggleFps: camera.show_fps = !camera.show_fps; break;
+        case AppAction::ToggleFps: hud.show_fps = !hud.show_fps; break;
         case AppAction::ToggleCamera: menu_commands.push_back(Command::CameraToggle); break;
         case AppAction::TogglePause:
           menu_commands.push_back(paused ? Command::Resume : Command::Pause);
@@ -212,12 +212,12 @@ int run_window(const AppOptions& o) {
       fps_frames = 0;
       fps_time = now;
     }
-    camera.fps = fps;
-    camera.pause_selection = menu.selection;
-    camera.pause_items = menu.items(game_options.difficulty);
+    hud.fps = fps;
+    hud.pause_selection = menu.selection;
+    hud.pause_items = menu.items(game_options.difficulty);
     int w = window->framebuffer_width(), h = window->framebuffer_height();
     if (w > 0 && h > 0) {
-      build_render_view(session.game->world(), clock.alpha(), camera, w, h, view);
+      build_render_view(session.game->world(), clock.alpha(), CameraSettings{}, hud, w, h, view);
       if (!reload_error.empty()) {
         view.hud.quads.push_back({0.0f, float(h) - 34.0f, float(w), 34.0f, {0.35f, 0.02f, 0.02f, 0.85f}});
         view.hud.texts.push_back({12.0f, float(h) - 26.0f, 1.2f, {1.0f, 0.85f, 0.8f, 1.0f}, "reload failed: " + reload_error});
