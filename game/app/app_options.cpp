@@ -1,3 +1,4 @@
+// The arcfire command line: options defined with CLI11, then checked and resolved.
 #include "game/app/app_options.h"
 
 #include <CLI/CLI.hpp>
@@ -47,22 +48,26 @@ std::string resolve_data_path(const std::string& path, const std::string& option
   throw InputError(option + " " + path + ": no such file");
 }
 
-std::optional<int> parse_command_line(int argc, char** argv, AppOptions& o) {
-  CLI::App app{"Arcfire: a small 3-D space-combat demo. Without options it opens a window and plays "
-               "levels/duel.json.",
-               "arcfire"};
+namespace {
+
+// Options as written on the command line, before they are checked and resolved.
+struct CommandLineText {
   std::string size = "1280x720";
   std::string quality;
   std::vector<std::string> sets;
   std::string difficulty;
   int64_t seed = -1;
   bool list_settings = false;
+  bool no_vsync = false;
+};
+
+void define_options(CLI::App& app, AppOptions& o, CommandLineText& t) {
   app.add_option("--level", o.level, "level file to play or simulate (default levels/duel.json)");
   app.add_flag("--headless", o.headless, "run without a window (EGL, no display needed)");
   app.add_flag("--demo", o.demo, "headless attract demo: AI against AI, frames and a contact sheet in --out");
   app.add_option("--ticks", o.ticks, "headless: number of simulation ticks to run")->check(CLI::Range(int64_t(1), int64_t(100000000)));
   app.add_option("--every", o.every, "headless: write a PNG frame every N ticks into --out")->check(CLI::Range(int64_t(1), int64_t(100000000)));
-  app.add_option("--size", size, "frame size for headless rendering, WIDTHxHEIGHT (16..8192)");
+  app.add_option("--size", t.size, "frame size for headless rendering, WIDTHxHEIGHT (16..8192)");
   app.add_option("--out", o.out_dir, "folder for frames, snapshots and reports (created if missing)");
   app.add_flag("--no-render", o.no_render, "headless: simulate only, create no GL context");
   app.add_option("--summary", o.summary_path, "headless: write the final world state as JSON to this file");
@@ -72,19 +77,60 @@ std::optional<int> parse_command_line(int argc, char** argv, AppOptions& o) {
   app.add_option("--serialization-test", o.serialization_test,
                  "save and reload the world every N ticks beside the original; fail at the first differing hash")
       ->check(CLI::Range(int64_t(1), int64_t(1000000)));
-  app.add_option("--quality", quality, "quality preset: low, medium, high or reference");
-  app.add_option("--set", sets, "override one setting, key=value (repeatable; see --list-settings)");
-  app.add_flag("--list-settings", list_settings, "list every setting with its value and allowed range");
-  app.add_option("--difficulty", difficulty, "AI difficulty: easy, normal or hard (default: the level's)");
-  app.add_option("--seed", seed, "override the level's random seed")->check(CLI::Range(int64_t(0), int64_t(4294967295)));
+  app.add_option("--quality", t.quality, "quality preset: low, medium, high or reference");
+  app.add_option("--set", t.sets, "override one setting, key=value (repeatable; see --list-settings)");
+  app.add_flag("--list-settings", t.list_settings, "list every setting with its value and allowed range");
+  app.add_option("--difficulty", t.difficulty, "AI difficulty: easy, normal or hard (default: the level's)");
+  app.add_option("--seed", t.seed, "override the level's random seed")->check(CLI::Range(int64_t(0), int64_t(4294967295)));
   app.add_option("--bindings", o.bindings_path,
                  "key and gamepad bindings file; a missing file is created with the defaults to edit");
   app.add_flag("--fullscreen", o.fullscreen, "start in fullscreen (F11 or Alt+Enter toggles)");
-  bool no_vsync = false;
-  app.add_flag("--no-vsync", no_vsync, "do not wait for vertical sync");
+  app.add_flag("--no-vsync", t.no_vsync, "do not wait for vertical sync");
   app.add_flag("--fps", o.show_fps, "show the FPS counter (F3 toggles)");
   app.set_version_flag("--version", "arcfire 0.1.0");
+}
 
+// Files, settings and choices of the parsed command line checked and resolved into `o`;
+// InputError for anything wrong.
+void resolve_options(const CLI::App& app, const CommandLineText& t, AppOptions& o) {
+  o.level = resolve_data_path(o.level, "--level");
+  if (app.get_option("--bindings")->count() > 0 && !std::filesystem::exists(o.bindings_path)) {
+    // A new bindings file starts as a copy of the defaults, written atomically.
+    write_file_atomic(o.bindings_path,
+                      read_text_file(std::string(ARCFIRE_SOURCE_DIR) + "/assets/settings/bindings.json"));
+    std::printf("arcfire: wrote default bindings to %s; edit it to remap keys\n", o.bindings_path.c_str());
+  }
+  o.bindings_path = resolve_data_path(o.bindings_path, "--bindings");
+  load_bindings(o.bindings_path);  // a bad bindings file is bad input in every mode
+  if (!parse_size(t.size, o.width, o.height))
+    throw InputError("--size: expected WIDTHxHEIGHT with each in 16..8192, got '" + t.size + "'");
+  if (!t.quality.empty())
+    o.settings.apply_preset_file(std::string(ARCFIRE_SOURCE_DIR) + "/assets/settings/quality.json", t.quality);
+  for (const auto& s : t.sets) o.settings.set_from_text(s, "--set " + s);
+  if (!t.difficulty.empty()) {
+    if (t.difficulty == "easy") o.game.difficulty = Difficulty::Easy;
+    else if (t.difficulty == "normal") o.game.difficulty = Difficulty::Normal;
+    else if (t.difficulty == "hard") o.game.difficulty = Difficulty::Hard;
+    else throw InputError("--difficulty: must be easy, normal or hard, got '" + t.difficulty + "'");
+    o.game.difficulty_override = true;
+  }
+  if (t.seed >= 0) {
+    o.game.seed_override = true;
+    o.game.seed = uint64_t(t.seed);
+  }
+  if (o.no_render && !o.headless && o.replay_path.empty())
+    throw InputError("--no-render: only with --headless or --replay");
+  if (o.update_golden && o.replay_path.empty()) throw InputError("--update-golden: only with --replay");
+}
+
+}  // namespace
+
+std::optional<int> parse_command_line(int argc, char** argv, AppOptions& o) {
+  CLI::App app{"Arcfire: a small 3-D space-combat demo. Without options it opens a window and plays "
+               "levels/duel.json.",
+               "arcfire"};
+  CommandLineText text;
+  define_options(app, o, text);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {
@@ -95,45 +141,18 @@ std::optional<int> parse_command_line(int argc, char** argv, AppOptions& o) {
     std::fprintf(stderr, "arcfire: %s (see arcfire --help)\n", msg.c_str());
     return int(kExitBadInput);
   }
-  o.vsync = !no_vsync;
+  o.vsync = !text.no_vsync;
   o.level_given = app.get_option("--level")->count() > 0;
   if (o.demo && !o.level_given) o.level = "levels/attract.json";
   o.game.root_dir = ARCFIRE_SOURCE_DIR;
   try {
-    o.level = resolve_data_path(o.level, "--level");
-    if (app.get_option("--bindings")->count() > 0 && !std::filesystem::exists(o.bindings_path)) {
-      // A new bindings file starts as a copy of the defaults, written atomically.
-      write_file_atomic(o.bindings_path,
-                        read_text_file(std::string(ARCFIRE_SOURCE_DIR) + "/assets/settings/bindings.json"));
-      std::printf("arcfire: wrote default bindings to %s; edit it to remap keys\n", o.bindings_path.c_str());
-    }
-    o.bindings_path = resolve_data_path(o.bindings_path, "--bindings");
-    load_bindings(o.bindings_path);  // a bad bindings file is bad input in every mode
-    if (!parse_size(size, o.width, o.height))
-      throw InputError("--size: expected WIDTHxHEIGHT with each in 16..8192, got '" + size + "'");
-    if (!quality.empty())
-      o.settings.apply_preset_file(std::string(ARCFIRE_SOURCE_DIR) + "/assets/settings/quality.json", quality);
-    for (const auto& s : sets) o.settings.set_from_text(s, "--set " + s);
-    if (!difficulty.empty()) {
-      if (difficulty == "easy") o.game.difficulty = Difficulty::Easy;
-      else if (difficulty == "normal") o.game.difficulty = Difficulty::Normal;
-      else if (difficulty == "hard") o.game.difficulty = Difficulty::Hard;
-      else throw InputError("--difficulty: must be easy, normal or hard, got '" + difficulty + "'");
-      o.game.difficulty_override = true;
-    }
-    if (seed >= 0) {
-      o.game.seed_override = true;
-      o.game.seed = uint64_t(seed);
-    }
-    if (o.no_render && !o.headless && o.replay_path.empty())
-      throw InputError("--no-render: only with --headless or --replay");
-    if (o.update_golden && o.replay_path.empty()) throw InputError("--update-golden: only with --replay");
+    resolve_options(app, text, o);
   } catch (const InputError& e) {
     std::fprintf(stderr, "arcfire: %s\n", e.what());
     return int(kExitBadInput);
   }
   apply_simulation_settings(o.settings, o.game);
-  if (list_settings) {
+  if (text.list_settings) {
     std::cout << "Settings (arcfire --set key=value; presets with --quality):\n" << o.settings.describe();
     return 0;
   }

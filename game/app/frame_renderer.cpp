@@ -35,8 +35,8 @@ FrameRenderer::FrameRenderer(const FrameRendererDesc& desc, const Settings& sett
 FrameRenderer::~FrameRenderer() = default;
 
 Image FrameRenderer::render(const Game& game, double alpha) {
-  CameraSettings cam;
-  build_render_view(game.world(), alpha, cam, impl_->desc.width, impl_->desc.height, impl_->view);
+  build_render_view(game.world(), alpha, CameraSettings{}, HudState{}, impl_->desc.width, impl_->desc.height,
+                    impl_->view);
   impl_->renderer->render(impl_->view, impl_->desc.width, impl_->desc.height);
   return impl_->renderer->read_pixels();
 }

@@ -7,7 +7,8 @@
 #include "core/error.h"
 #include "game/app/app_options.h"
 #include "game/app/headless_run.h"
-#include "game/app/replay_modes.h"
+#include "game/app/replay_player.h"
+#include "game/app/serialization_test.h"
 #include "game/app/window_loop.h"
 #include "platform/platform.h"
 
@@ -15,8 +16,8 @@ int main(int argc, char** argv) {
   arc::AppOptions options;
   if (auto code = arc::parse_command_line(argc, argv, options)) return *code;
   try {
-    if (!options.replay_path.empty()) return arc::run_replay_from_options(options);
-    if (options.serialization_test > 0) return arc::run_serialization_test_from_options(options);
+    if (!options.replay_path.empty()) return arc::run_replay(arc::ReplayRunOptions(options));
+    if (options.serialization_test > 0) return arc::run_serialization_test(arc::SerializationTestOptions(options));
     if (options.headless || options.demo) return arc::run_headless(options);
     return arc::run_window(options);
   } catch (const arc::InputError& e) {

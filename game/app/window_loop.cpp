@@ -1,18 +1,18 @@
+// The live game in a window, as a WindowSession: set-up once, then update and draw per frame.
 #include "game/app/window_loop.h"
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 #include "core/clock.h"
 #include "core/error.h"
 #include "game/app/file_watcher.h"
 #include "game/app/input_bindings.h"
-#include "game/app/replay_cli.h"
 #include "game/app/scene_resources.h"
+#include "game/app/session_recorder.h"
 #include "game/render/render_view_builder.h"
 #include "game/sim/game.h"
 #include "game/sim/world.h"
@@ -50,19 +50,227 @@ std::string screenshot_path() {
   }
 }
 
-// The live session: one Game, its renderer resources, and an optional recorder.
-struct Session {
-  std::unique_ptr<Game> game;
-  std::unique_ptr<SessionRecorder> recorder;
+// The live session: one Game (restarted from the pause menu, or when its files change), the
+// window and renderer that show it, live input, and an optional recorder.
+class WindowSession {
+ public:
+  explicit WindowSession(const AppOptions& options) : options_(options), game_options_(options.game) {}
+  ~WindowSession();
+  // Loads the bindings and the level (bad files are one line and exit 2 before any window
+  // opens), opens the window, makes the renderer and starts the game and the recording.
+  void setup();
+  bool open() const { return !window_->should_close(); }
+  double time() const { return window_->time_seconds(); }
+  // One frame's work before drawing: devices to input and actions, the pause menu, reloads of
+  // changed files, and the fixed-step ticks that `frame_seconds` of wall clock owe.
+  void update(double frame_seconds);
+  // The game at the clock's alpha, any reload error, a requested screenshot; then the swap.
+  void draw();
+
+ private:
+  std::unique_ptr<Renderer> make_renderer() const;
+  void end_recording();
+  void handle_actions(std::vector<Command>& menu_commands);
+  void navigate_pause_menu(std::vector<Command>& menu_commands);
+  void reload_changed_files();
+  void step_ticks(double frame_seconds);
+  void count_fps(double frame_seconds);
+
+  const AppOptions& options_;
+  GameOptions game_options_;  // the pause menu's difficulty changes it for the next restart
+  std::unique_ptr<Window> window_;
+  std::unique_ptr<Renderer> renderer_;
+  std::unique_ptr<Game> game_;
+  std::unique_ptr<SessionRecorder> recorder_;
+  std::optional<LiveInput> input_;
+  std::optional<FixedStepClock> clock_;
+  InputState devices_, previous_devices_;
+  std::vector<Command> pending_;  // menu commands wait for the next tick rather than being lost
+  PauseMenu menu_;
+  HudState hud_;
+  RenderView view_;
+  bool mouse_captured_ = true;
+  bool want_screenshot_ = false;
+  FileWatcher watcher_;       // hot reload: levels, ships, effects and shaders
+  std::string reload_error_;  // shown on screen until a reload succeeds
+  double next_watch_ = 0;     // window time of the next poll of the watched files
+  double fps_seconds_ = 0;    // frames and time since the FPS counter was last updated
+  int fps_frames_ = 0;
 };
 
-Session start_session(const AppOptions& o, const GameOptions& game_options, Renderer& renderer, bool first) {
-  Session s;
-  s.game = std::make_unique<Game>(Game::load_level(o.level, game_options));
-  if (first) load_scene_resources(renderer, s.game->world(), game_options.root_dir);
-  // A restart ends the recording: one script describes one uninterrupted session.
-  if (first && !o.record_path.empty()) s.recorder = std::make_unique<SessionRecorder>(o.record_path, o.level, *s.game);
-  return s;
+WindowSession::~WindowSession() {
+  if (!recorder_) return;
+  recorder_->finish(*game_);
+  std::printf("arcfire: recorded %s\n", recorder_->path().c_str());
+}
+
+void WindowSession::setup() {
+  input_.emplace(load_bindings(options_.bindings_path));
+  game_ = std::make_unique<Game>(Game::load_level(options_.level, game_options_));
+  WindowDesc wd;
+  wd.width = options_.width;
+  wd.height = options_.height;
+  wd.vsync = options_.vsync;
+  wd.fullscreen = options_.fullscreen;
+  wd.title = "Arcfire — " + std::filesystem::path(options_.level).stem().string();
+  window_ = open_window(wd);
+  renderer_ = make_renderer();
+  load_scene_resources(*renderer_, game_->world(), game_options_.root_dir);
+  if (!options_.record_path.empty())
+    recorder_ = std::make_unique<SessionRecorder>(options_.record_path, options_.level, *game_);
+  clock_.emplace(int(std::lround(1.0 / game_->tick_seconds())));
+  hud_.show_fps = options_.show_fps;
+  window_->set_mouse_captured(true);
+  watcher_.watch(options_.level, "data");
+  watcher_.watch(game_options_.root_dir + "/assets/ships", "data");
+  watcher_.watch(game_options_.root_dir + "/assets/effects", "data");
+  watcher_.watch(game_options_.root_dir + "/shaders", "shaders");
+  watcher_.poll();
+}
+
+std::unique_ptr<Renderer> WindowSession::make_renderer() const {
+  RendererDesc rd;
+  rd.shader_dir = game_options_.root_dir + "/shaders";
+  auto r = std::make_unique<Renderer>(rd);
+  r->apply_settings(options_.settings);
+  return r;
+}
+
+// One script describes one uninterrupted session: a restart or a reload ends the recording.
+void WindowSession::end_recording() {
+  if (recorder_) recorder_->finish(*game_);
+  recorder_.reset();
+}
+
+void WindowSession::update(double frame_seconds) {
+  window_->poll(devices_);
+  input_->sample(devices_);
+  std::vector<Command> menu_commands;
+  handle_actions(menu_commands);
+  const bool paused = game_->paused();
+  if (paused == mouse_captured_) {
+    window_->set_mouse_captured(!paused);
+    mouse_captured_ = !paused;
+    input_->discard_mouse_motion();
+  }
+  if (paused) navigate_pause_menu(menu_commands);
+  previous_devices_ = devices_;
+  if (window_->time_seconds() >= next_watch_) {
+    next_watch_ = window_->time_seconds() + 0.5;
+    reload_changed_files();
+  }
+  pending_.insert(pending_.end(), menu_commands.begin(), menu_commands.end());
+  step_ticks(frame_seconds);
+  count_fps(frame_seconds);
+}
+
+void WindowSession::handle_actions(std::vector<Command>& menu_commands) {
+  for (AppAction a : input_->take_actions()) {
+    switch (a) {
+      case AppAction::Screenshot: want_screenshot_ = true; break;
+      case AppAction::ToggleFps: hud_.show_fps = !hud_.show_fps; break;
+      case AppAction::ToggleCamera: menu_commands.push_back(Command::CameraToggle); break;
+      case AppAction::TogglePause:
+        menu_commands.push_back(game_->paused() ? Command::Resume : Command::Pause);
+        menu_.selection = 0;
+        break;
+    }
+  }
+}
+
+// Menu navigation reads the raw keys, edge-triggered against the previous frame's devices.
+void WindowSession::navigate_pause_menu(std::vector<Command>& menu_commands) {
+  auto hit = [&](int key) { return devices_.keys[size_t(key)] && !previous_devices_.keys[size_t(key)]; };
+  static const int up = key_code("UP"), down = key_code("DOWN");
+  static const int enter = key_code("ENTER"), space = key_code("SPACE");
+  if (hit(up)) menu_.selection = (menu_.selection + 3) % 4;
+  if (hit(down)) menu_.selection = (menu_.selection + 1) % 4;
+  if (!hit(enter) && !hit(space)) return;
+  switch (menu_.selection) {
+    case PauseMenu::Resume: menu_commands.push_back(Command::Resume); break;
+    case PauseMenu::Restart:
+      end_recording();
+      game_ = std::make_unique<Game>(Game::load_level(options_.level, game_options_));
+      break;
+    case PauseMenu::DifficultyItem:
+      game_options_.difficulty = Difficulty((int(game_options_.difficulty) + 1) % 3);
+      game_options_.difficulty_override = true;
+      break;
+    case PauseMenu::Quit: window_->request_close(); break;
+  }
+}
+
+// Shaders reload in place; a changed level, ship or effect restarts the level. A file that
+// fails to load keeps the last good version playing and shows its error.
+void WindowSession::reload_changed_files() {
+  for (const std::string& group : watcher_.poll()) {
+    if (group == "shaders") {
+      reload_error_ = renderer_->reload();
+      std::printf("arcfire: shaders reloaded%s\n", reload_error_.empty() ? "" : " with errors (kept the old ones)");
+    } else {
+      try {
+        auto fresh = std::make_unique<Game>(Game::load_level(options_.level, game_options_));
+        if (fresh->world().model_paths != game_->world().model_paths) {
+          // Model indices are positions in the level's model list: reload them all.
+          renderer_ = make_renderer();
+          load_scene_resources(*renderer_, fresh->world(), game_options_.root_dir);
+        }
+        end_recording();
+        game_ = std::move(fresh);
+        reload_error_.clear();
+        std::printf("arcfire: data changed, level restarted\n");
+      } catch (const InputError& e) {
+        reload_error_ = e.what();
+      }
+    }
+    std::fflush(stdout);
+  }
+}
+
+void WindowSession::step_ticks(double frame_seconds) {
+  const int ticks = clock_->advance(frame_seconds);
+  for (int i = 0; i < ticks; ++i) {
+    InputFrame frame = input_->take_frame();
+    std::vector<Command> commands = input_->take_commands();
+    if (i == 0) {
+      commands.insert(commands.end(), pending_.begin(), pending_.end());
+      pending_.clear();
+    }
+    if (recorder_) recorder_->record(*game_, frame, commands);
+    game_->step(frame, commands);
+  }
+}
+
+void WindowSession::count_fps(double frame_seconds) {
+  ++fps_frames_;
+  fps_seconds_ += frame_seconds;
+  if (fps_seconds_ < 0.5) return;
+  hud_.fps = fps_frames_ / fps_seconds_;
+  fps_frames_ = 0;
+  fps_seconds_ = 0;
+}
+
+void WindowSession::draw() {
+  hud_.pause_selection = menu_.selection;
+  hud_.pause_items = menu_.items(game_options_.difficulty);
+  const int w = window_->framebuffer_width(), h = window_->framebuffer_height();
+  if (w > 0 && h > 0) {
+    build_render_view(game_->world(), clock_->alpha(), CameraSettings{}, hud_, w, h, view_);
+    if (!reload_error_.empty()) {
+      view_.hud.quads.push_back({0.0f, float(h) - 34.0f, float(w), 34.0f, {0.35f, 0.02f, 0.02f, 0.85f}});
+      view_.hud.texts.push_back(
+          {12.0f, float(h) - 26.0f, 1.2f, {1.0f, 0.85f, 0.8f, 1.0f}, "reload failed: " + reload_error_});
+    }
+    renderer_->render(view_, w, h);
+    if (want_screenshot_) {
+      // Read the frame just drawn, before the swap leaves the back buffer undefined.
+      std::string path = screenshot_path();
+      save_image(path, read_window_pixels(w, h));
+      std::printf("arcfire: screenshot %s\n", path.c_str());
+      want_screenshot_ = false;
+    }
+  }
+  window_->swap();
 }
 
 }  // namespace
@@ -73,169 +281,14 @@ int run_window(const AppOptions& o) {
                          "use --headless, or ./tools/play.sh which runs the headless demo\n");
     return kExitBadInput;
   }
-  Bindings bindings = load_bindings(o.bindings_path);
-  GameOptions game_options = o.game;
-  // Validate the level before opening a window, so a bad file is one line and exit 2.
-  Game::load_level(o.level, game_options);
-
-  WindowDesc wd;
-  wd.width = o.width;
-  wd.height = o.height;
-  wd.vsync = o.vsync;
-  wd.fullscreen = o.fullscreen;
-  wd.title = "Arcfire — " + std::filesystem::path(o.level).stem().string();
-  std::unique_ptr<Window> window = open_window(wd);
-  RendererDesc rd;
-  rd.shader_dir = game_options.root_dir + "/shaders";
-  auto make_renderer = [&]() {
-    auto r = std::make_unique<Renderer>(rd);
-    r->apply_settings(o.settings);
-    return r;
-  };
-  std::unique_ptr<Renderer> renderer = make_renderer();
-
-  Session session = start_session(o, game_options, *renderer, true);
-  LiveInput input(bindings);
-  FixedStepClock clock(int(std::lround(1.0 / session.game->tick_seconds())));
-  PauseMenu menu;
-  CameraSettings camera;
-  camera.show_fps = o.show_fps;
-  window->set_mouse_captured(true);
-  bool mouse_captured = true;
-
-  // Hot reload: tweakers edit levels, ships, effects and shaders while the game runs.
-  FileWatcher watcher;
-  watcher.watch(o.level, "data");
-  watcher.watch(game_options.root_dir + "/assets/ships", "data");
-  watcher.watch(game_options.root_dir + "/assets/effects", "data");
-  watcher.watch(game_options.root_dir + "/shaders", "shaders");
-  watcher.poll();
-  std::string reload_error;  // shown on screen until a reload succeeds
-  double next_watch = 0;
-
-  double last = window->time_seconds();
-  double fps_time = last, fps = 0;
-  int fps_frames = 0;
-  RenderView view;
-  InputState devices, prev;
-  std::vector<Command> pending;
-  bool want_screenshot = false;
-  while (!window->should_close()) {
-    window->poll(devices);
-    input.sample(devices);
-    bool paused = session.game->paused();
-    std::vector<Command> menu_commands;
-    for (AppAction a : input.take_actions()) {
-      switch (a) {
-        case AppAction::Screenshot: want_screenshot = true; break;
-        case AppAction::ToggleFps: camera.show_fps = !camera.show_fps; break;
-        case AppAction::ToggleCamera: menu_commands.push_back(Command::CameraToggle); break;
-        case AppAction::TogglePause:
-          menu_commands.push_back(paused ? Command::Resume : Command::Pause);
-          menu.selection = 0;
-          break;
-      }
-    }
-    if (paused == mouse_captured) {
-      window->set_mouse_captured(!paused);
-      mouse_captured = !paused;
-      input.discard_mouse_motion();
-    }
-    if (paused) {
-      // Menu navigation reads the raw keys, edge-triggered by the InputState history.
-      auto hit = [&](int key) { return devices.keys[size_t(key)] && !prev.keys[size_t(key)]; };
-      static const int up = key_code("UP"), down = key_code("DOWN");
-      static const int enter = key_code("ENTER"), space = key_code("SPACE");
-      if (hit(up)) menu.selection = (menu.selection + 3) % 4;
-      if (hit(down)) menu.selection = (menu.selection + 1) % 4;
-      if (hit(enter) || hit(space)) {
-        switch (menu.selection) {
-          case PauseMenu::Resume: menu_commands.push_back(Command::Resume); break;
-          case PauseMenu::Restart:
-            if (session.recorder) session.recorder->finish(*session.game);
-            session = start_session(o, game_options, *renderer, false);
-            break;
-          case PauseMenu::DifficultyItem:
-            game_options.difficulty = Difficulty((int(game_options.difficulty) + 1) % 3);
-            game_options.difficulty_override = true;
-            break;
-          case PauseMenu::Quit: window->request_close(); break;
-        }
-      }
-    }
-    prev = devices;
-
-    if (window->time_seconds() >= next_watch) {
-      next_watch = window->time_seconds() + 0.5;
-      for (const std::string& group : watcher.poll()) {
-        if (group == "shaders") {
-          reload_error = renderer->reload();
-          std::printf("arcfire: shaders reloaded%s\n", reload_error.empty() ? "" : " with errors (kept the old ones)");
-        } else {
-          try {
-            Session fresh = start_session(o, game_options, *renderer, false);
-            if (fresh.game->world().model_paths != session.game->world().model_paths) {
-              // Model indices are positions in the level's model list: reload them all.
-              renderer = make_renderer();
-              load_scene_resources(*renderer, fresh.game->world(), game_options.root_dir);
-            }
-            if (session.recorder) session.recorder->finish(*session.game);
-            session = std::move(fresh);
-            reload_error.clear();
-            std::printf("arcfire: data changed, level restarted\n");
-          } catch (const InputError& e) {
-            reload_error = e.what();  // keep playing the last good version
-          }
-        }
-        std::fflush(stdout);
-      }
-    }
-    // Menu commands wait for the next tick rather than being lost on a frame that runs none.
-    pending.insert(pending.end(), menu_commands.begin(), menu_commands.end());
-    double now = window->time_seconds();
-    int ticks = clock.advance(now - last);
+  WindowSession session(o);
+  session.setup();
+  double last = session.time();
+  while (session.open()) {
+    const double now = session.time();
+    session.update(now - last);
     last = now;
-    for (int i = 0; i < ticks; ++i) {
-      InputFrame frame = input.take_frame();
-      std::vector<Command> commands = input.take_commands();
-      if (i == 0) {
-        commands.insert(commands.end(), pending.begin(), pending.end());
-        pending.clear();
-      }
-      if (session.recorder) session.recorder->record(*session.game, frame, commands);
-      session.game->step(frame, commands);
-    }
-
-    ++fps_frames;
-    if (now - fps_time >= 0.5) {
-      fps = fps_frames / (now - fps_time);
-      fps_frames = 0;
-      fps_time = now;
-    }
-    camera.fps = fps;
-    camera.pause_selection = menu.selection;
-    camera.pause_items = menu.items(game_options.difficulty);
-    int w = window->framebuffer_width(), h = window->framebuffer_height();
-    if (w > 0 && h > 0) {
-      build_render_view(session.game->world(), clock.alpha(), camera, w, h, view);
-      if (!reload_error.empty()) {
-        view.hud.quads.push_back({0.0f, float(h) - 34.0f, float(w), 34.0f, {0.35f, 0.02f, 0.02f, 0.85f}});
-        view.hud.texts.push_back({12.0f, float(h) - 26.0f, 1.2f, {1.0f, 0.85f, 0.8f, 1.0f}, "reload failed: " + reload_error});
-      }
-      renderer->render(view, w, h);
-      if (want_screenshot) {
-        // Read the frame just drawn, before the swap leaves the back buffer undefined.
-        std::string path = screenshot_path();
-        save_image(path, read_window_pixels(w, h));
-        std::printf("arcfire: screenshot %s\n", path.c_str());
-        want_screenshot = false;
-      }
-    }
-    window->swap();
-  }
-  if (session.recorder) {
-    session.recorder->finish(*session.game);
-    std::printf("arcfire: recorded %s\n", session.recorder->path().c_str());
+    session.draw();
   }
   return kExitOk;
 }

@@ -1,10 +1,14 @@
 // game/app/window_loop.h — the live game in a window: fixed-step simulation, interpolated
-// rendering, devices to InputFrames, pause menu, screenshots, optional recording.
+// rendering, devices to InputFrames, pause menu, screenshots, hot reload, optional recording.
+//
+// run_window() drives a WindowSession (window_loop.cpp) the way raylib's examples are laid
+// out: setup() once, then update(frame seconds) and draw() every frame until the window closes.
 #pragma once
 #include "game/app/app_options.h"
 
 namespace arc {
 
+// Exit code 2 without a display or with a bad bindings or level file; 0 when the window closes.
 int run_window(const AppOptions& options);
 
 }  // namespace arc

@@ -2,41 +2,36 @@
 //
 // The renderer never sees the game: build_render_view() interpolates ship and camera
 // transforms between the previous and the current tick by `alpha`, lists meshes by model
-// index, collects the visible particles (ParticleWorld::collect) and lays out the HUD in
-// pixels: crosshair, target brackets, off-screen arrow, lead indicator, own and target bars,
-// radar, kills, objective, victory/defeat, FPS counter, pause menu, and gallery labels.
+// index, collects the visible particles (ParticleWorld::collect) and lays out the HUD
+// (layout_hud, game/render/hud_layout.h). The camera's mode and field of view come from the
+// World unless CameraSettings (game/render/camera_settings.h) overrides them.
 //
 // Model indices are positions in World::model_paths (required_models()): the app loads
-// exactly those files, in that order, into its renderer's model table.
+// exactly those files, in that order, into its renderer's model table
+// (load_scene_resources, game/app/scene_resources.h).
 //
-//   for (auto& path : required_models(game.world())) renderer.load_model(path);
+// Example, compiled as TEST(RenderViewBuilder, BannerExample) in tests/unit/game/test_render_view.cpp:
+//
+//   Game game = Game::load_level("levels/duel.json", options);
+//   game.step(InputFrame{});
 //   RenderView view;
-//   build_render_view(game.world(), clock.alpha(), CameraSettings{}, width, height, view);
-//   renderer.draw(view);
+//   build_render_view(game.world(), 0.5, CameraSettings{}, HudState{}, 1280, 720, view);
+//   // view.meshes[i].model indexes required_models(game.world()); Renderer::render(view, 1280, 720)
 #pragma once
 #include <string>
 #include <vector>
 
+#include "game/render/camera_settings.h"
+#include "game/render/hud_layout.h"
 #include "gfx/render_view.h"
 
 namespace arc {
 
 class World;
 
-struct CameraSettings {
-  bool use_world_mode = true;  // false: `mode` below overrides the World's camera mode
-  int mode = 0;                // CameraMode: 0 chase, 1 cockpit, 2 fixed (level's camera hint)
-  double fov_deg = 0;          // 0 = the level's camera hint
-  bool show_hud = true;
-  bool show_fps = false;
-  double fps = 0;              // shown when show_fps
-  int pause_selection = 0;     // highlighted pause-menu item while the game is paused
-  std::vector<std::string> pause_items{"Resume", "Restart", "Difficulty: normal", "Quit"};
-};
-
 const std::vector<std::string>& required_models(const World& world);
 
-void build_render_view(const World& world, double alpha, const CameraSettings& settings, int width, int height,
-                       RenderView& out);
+void build_render_view(const World& world, double alpha, const CameraSettings& camera, const HudState& hud, int width,
+                       int height, RenderView& out);
 
 }  // namespace arc

@@ -13,7 +13,7 @@
 
 #include "bench_registry.h"
 #include "core/json.h"
-#include "game/app/replay_cli.h"
+#include "game/app/replay_player.h"
 #include "replay/script.h"
 
 namespace {

@@ -14,10 +14,10 @@ RenderView level_view(Renderer& r, const std::string& level, int ticks, int widt
   Game game = Game::load_level(root + "/" + level, options);
   for (int t = 0; t < ticks; ++t) game.step(InputFrame{});
   load_scene_resources(r, game.world(), root);
-  CameraSettings camera;
-  camera.show_hud = false;
+  HudState hud;
+  hud.show_hud = false;
   RenderView view;
-  build_render_view(game.world(), 1.0, camera, width, height, view);
+  build_render_view(game.world(), 1.0, CameraSettings{}, hud, width, height, view);
   return view;
 }
 

@@ -8,7 +8,9 @@
 
 #include "core/error.h"
 #include "core/json.h"
-#include "game/app/replay_cli.h"
+#include "game/app/replay_player.h"
+#include "game/app/serialization_test.h"
+#include "game/app/session_recorder.h"
 #include "game/sim/world.h"
 #include "replay/script.h"
 

@@ -1,0 +1,89 @@
+// Expectations of replay scripts evaluated against the World, and their names checked up front.
+#include "game/app/replay_expectations.h"
+
+#include <cmath>
+#include <cstdio>
+#include <vector>
+#include <glm/geometric.hpp>
+
+#include "core/error.h"
+#include "core/json.h"
+#include "game/sim/world.h"
+
+namespace arc {
+namespace {
+
+using replay::Expectation;
+
+const Ship* find_ship(const World& w, const std::string& name) {
+  for (const Ship& s : w.ships)
+    if (s.name == name) return &s;
+  return nullptr;
+}
+
+std::string number(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+}  // namespace
+
+void check_expectation_names(const replay::Script& s, const World& w) {
+  std::vector<std::string> names;
+  for (const Ship& sh : w.ships) names.push_back("'" + sh.name + "'");
+  auto require = [&](const Expectation& e, const std::string& name, int col) {
+    if (name.empty() || find_ship(w, name)) return;
+    throw InputError(s.path + ":" + std::to_string(e.src.line) + ":" + std::to_string(col) + ": no ship named '" + name +
+                     "' in level " + w.level.name + "; ships: " + join_allowed(names));
+  };
+  for (const Expectation& e : s.expectations) {
+    require(e, e.ship, e.ship_col);
+    require(e, e.other, e.other_col);
+  }
+  if (s.header.tick_rate && std::lround(1.0 / w.dt) != *s.header.tick_rate)
+    throw InputError(s.path + ": header tick_rate " + std::to_string(*s.header.tick_rate) +
+                     " differs from the level's " + std::to_string(std::lround(1.0 / w.dt)));
+}
+
+std::optional<std::string> expectation_failure(const Expectation& e, const World& w) {
+  const Ship* a = find_ship(w, e.ship);
+  switch (e.kind) {
+    case Expectation::Kind::Alive:
+      if (a->alive) return std::nullopt;
+      return e.ship + " was destroyed at tick " + std::to_string(a->death_tick);
+    case Expectation::Kind::Destroyed:
+      if (!a->alive) return std::nullopt;
+      return e.ship + " is alive (hull " + number(a->hull) + ")";
+    case Expectation::Kind::Hull:
+      if (e.range.contains(a->hull)) return std::nullopt;
+      return "hull of " + e.ship + " is " + number(a->hull);
+    case Expectation::Kind::Shield:
+      if (e.range.contains(a->shield)) return std::nullopt;
+      return "shield of " + e.ship + " is " + number(a->shield);
+    case Expectation::Kind::Position: {
+      const glm::dvec3& p = a->position;
+      if (e.box[0].contains(p.x) && e.box[1].contains(p.y) && e.box[2].contains(p.z)) return std::nullopt;
+      return e.ship + " is at " + number(p.x) + " " + number(p.y) + " " + number(p.z);
+    }
+    case Expectation::Kind::Distance: {
+      const Ship* b = find_ship(w, e.other);
+      double d = glm::length(a->position - b->position);
+      if (e.range.contains(d)) return std::nullopt;
+      return "distance is " + number(d);
+    }
+    case Expectation::Kind::Particles: {
+      double n = double(w.particles->stats().live_particles);
+      if (e.range.contains(n)) return std::nullopt;
+      return "particle count is " + number(n);
+    }
+    case Expectation::Kind::Winner: {
+      std::string winner = w.outcome == Outcome::Undecided || w.winner.empty() ? "none" : w.winner;
+      if (winner == e.team) return std::nullopt;
+      return "winner is " + winner;
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace arc

@@ -1,0 +1,81 @@
+// Replay script ↔ Game: input conversion, the level and game options of a script, its feeder.
+#include "game/app/script_feeder.h"
+
+#include <filesystem>
+#include <vector>
+
+#include "core/error.h"
+
+namespace arc {
+
+// The script's names for inputs and commands are the game's, value for value.
+static_assert(uint16_t(replay::kFirePrimary) == kFirePrimary && uint16_t(replay::kFireSecondary) == kFireSecondary &&
+              uint16_t(replay::kAfterburner) == kAfterburner && uint16_t(replay::kFlightAssist) == kFlightAssist);
+static_assert(uint8_t(replay::ScriptCommand::TargetNext) == uint8_t(Command::TargetNext) &&
+              uint8_t(replay::ScriptCommand::TargetNearest) == uint8_t(Command::TargetNearest) &&
+              uint8_t(replay::ScriptCommand::TargetNextHostile) == uint8_t(Command::TargetNextHostile) &&
+              uint8_t(replay::ScriptCommand::SwitchWeapon) == uint8_t(Command::SwitchWeapon) &&
+              uint8_t(replay::ScriptCommand::CameraToggle) == uint8_t(Command::CameraToggle) &&
+              uint8_t(replay::ScriptCommand::Pause) == uint8_t(Command::Pause) &&
+              uint8_t(replay::ScriptCommand::Resume) == uint8_t(Command::Resume));
+
+InputFrame to_input_frame(const replay::InputState& s) {
+  InputFrame f;
+  f.pitch = s.axes[0];
+  f.yaw = s.axes[1];
+  f.roll = s.axes[2];
+  f.throttle = s.axes[3];
+  f.strafe_x = s.axes[4];
+  f.strafe_y = s.axes[5];
+  f.buttons = s.buttons;
+  return f;
+}
+
+replay::InputState to_input_state(const InputFrame& f) {
+  replay::InputState s;
+  s.axes = {f.pitch, f.yaw, f.roll, f.throttle, f.strafe_x, f.strafe_y};
+  s.buttons = f.buttons;
+  return s;
+}
+
+std::string data_root(const GameOptions& options) {
+  return options.root_dir == "." ? std::string(ARCFIRE_SOURCE_DIR) : options.root_dir;
+}
+
+std::string resolve_script_level(const replay::Script& s, const std::string& root) {
+  namespace fs = std::filesystem;
+  const std::string& level = s.header.level;
+  if (fs::exists(level)) return level;
+  fs::path under_root = fs::path(root) / level;
+  if (!fs::path(level).is_absolute() && fs::exists(under_root)) return under_root.string();
+  throw InputError(s.path + ":" + std::to_string(s.header.level_line) + ":1: level file '" + level +
+                   "' not found (looked in the working folder and in " + root + ")");
+}
+
+GameOptions script_game_options(const replay::Script& s, GameOptions o) {
+  if (s.header.particle_budget) o.particle_budget = *s.header.particle_budget;
+  if (s.header.lightning_interval) o.lightning_interval = *s.header.lightning_interval;
+  if (s.header.substeps) o.substeps = *s.header.substeps;
+  if (s.header.seed) {
+    o.seed_override = true;
+    o.seed = *s.header.seed;
+  }
+  if (s.header.difficulty) {
+    o.difficulty_override = true;
+    const std::string& d = *s.header.difficulty;
+    o.difficulty = d == "easy" ? Difficulty::Easy : d == "hard" ? Difficulty::Hard : Difficulty::Normal;
+  }
+  return o;
+}
+
+void ScriptFeeder::step(Game& game, uint64_t t) {
+  const replay::Script& s = *script_;
+  for (; next_input_ < s.inputs.size() && s.inputs[next_input_].tick == t; ++next_input_)
+    replay::apply_input(held_, s.inputs[next_input_]);
+  std::vector<Command> commands;
+  for (; next_command_ < s.commands.size() && s.commands[next_command_].tick == t; ++next_command_)
+    commands.push_back(static_cast<Command>(s.commands[next_command_].command));
+  game.step(to_input_frame(held_), commands);
+}
+
+}  // namespace arc

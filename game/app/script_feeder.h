@@ -1,0 +1,45 @@
+// game/app/script_feeder.h — a replay script's side of a Game: what the player, the
+// serialization test and the recorder share.
+//
+// A script (engine/replay) speaks its own plain types; these convert its held input to the
+// game's InputFrame and back, resolve the level it names, build the options its game is loaded
+// with, and step a Game with the script's input and commands tick by tick (ScriptFeeder).
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "game/sim/game.h"
+#include "replay/script.h"
+
+namespace arc {
+
+// Converts between the script's held input and the simulation's InputFrame.
+InputFrame to_input_frame(const replay::InputState& s);
+replay::InputState to_input_state(const InputFrame& f);
+
+// The folder data files are found under: options.root_dir, or the source tree for ".".
+std::string data_root(const GameOptions& options);
+
+// The level a script names: as written (relative to the working folder), else relative to
+// root_dir, so scripts run from any folder. InputError at the level line when neither exists.
+std::string resolve_script_level(const replay::Script& script, const std::string& root_dir);
+
+// The options a script's game is loaded with: `base`, then the header's seed, difficulty and
+// simulation keys.
+GameOptions script_game_options(const replay::Script& script, GameOptions base);
+
+// Feeds a script's held input and commands to a Game, one step at a time.
+class ScriptFeeder {
+ public:
+  explicit ScriptFeeder(const replay::Script& script) : script_(&script) {}
+  // Applies the lines stamped `tick`, then steps the game once.
+  void step(Game& game, uint64_t tick);
+
+ private:
+  const replay::Script* script_;
+  size_t next_input_ = 0, next_command_ = 0;
+  replay::InputState held_;
+};
+
+}  // namespace arc

@@ -1,0 +1,112 @@
+// The usage examples in the banners of game/app headers, word for word, so an example that no
+// longer matches the code fails to compile or fails here. Each banner names its test, and
+// BannersMatchTheirTests checks that each banner's example is still that test's text.
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "core/json.h"
+#include "game/app/replay_player.h"
+#include "game/app/serialization_test.h"
+#include "game/app/session_recorder.h"
+#include "replay/script.h"
+
+namespace arc {
+namespace {
+
+// The example lines of a header's banner: the "//   " lines after the one that says where
+// the example is compiled, indented as in a test body.
+std::string banner_example(const std::string& header_text) {
+  std::istringstream in(header_text);
+  std::string line, example;
+  bool in_example = false;
+  while (std::getline(in, line)) {
+    if (!in_example) {
+      in_example = line.find("compiled as TEST(") != std::string::npos;
+      if (in_example) std::getline(in, line);  // the blank comment line before the code
+      continue;
+    }
+    if (line.rfind("//   ", 0) != 0) break;
+    example += "  " + line.substr(5) + "\n";
+  }
+  return example;
+}
+
+TEST(BannerExample, BannersMatchTheirTests) {
+  const std::string root = ARCFIRE_SOURCE_DIR;
+  const std::vector<std::pair<std::string, std::string>> banners{
+      {"game/render/render_view_builder.h", "tests/unit/game/test_render_view.cpp"},
+      {"game/app/replay_player.h", "tests/unit/app/test_banner_examples.cpp"},
+      {"game/app/session_recorder.h", "tests/unit/app/test_banner_examples.cpp"},
+      {"game/app/serialization_test.h", "tests/unit/app/test_banner_examples.cpp"}};
+  for (const auto& [header, test] : banners) {
+    const std::string example = banner_example(read_text_file(root + "/" + header));
+    EXPECT_FALSE(example.empty()) << header << " has no example";
+    EXPECT_NE(read_text_file(root + "/" + test).find(example), std::string::npos)
+        << "the example in " << header << " is not the body of its test in " << test << ":\n" << example;
+  }
+}
+
+TEST(BannerExample, ReplayPlayer) {
+  testing::internal::CaptureStdout();
+
+  ReplayRunOptions options;
+  options.script_path = "tests/replays/range_beam_shield.replay";
+  options.no_render = true;                      // hashes and expectations only: no GL context
+  ReplayOutcome outcome = play_replay(options);  // prints one `ok` or `FAIL` line per check
+  // outcome.exit_code is 0 when every check passed; outcome.final_hash, outcome.ticks
+  // run_replay(options) plays it too and ends stdout with "final hash HEX at tick N"
+
+  const std::string out = testing::internal::GetCapturedStdout();
+  EXPECT_EQ(outcome.exit_code, 0) << out;
+  EXPECT_EQ(outcome.failures, 0);
+  EXPECT_GT(outcome.checks, 0);
+  EXPECT_EQ(outcome.ticks, replay::load_script(options.script_path).last_tick());
+}
+
+TEST(BannerExample, SessionRecorder) {
+  const std::string level = "tests/replays/levels/range.json";
+  const std::string path = testing::TempDir() + "/banner_example_session.replay";
+
+  Game game = Game::load_level(level, GameOptions{});
+  SessionRecorder recorder(path, level, game);  // the header is written now
+  for (int tick = 0; tick < 120; ++tick) {
+    InputFrame input;
+    input.throttle = 127;
+    std::vector<Command> commands;
+    if (tick == 30) commands.push_back(Command::TargetNearest);
+    recorder.record(game, input, commands);     // just before the step, with its arguments
+    game.step(input, commands);
+  }
+  recorder.finish(game);                        // final hash and `end` (~SessionRecorder too)
+
+  const replay::Script script = replay::load_script(path);
+  EXPECT_EQ(script.end_tick, 120u);
+  EXPECT_EQ(script.commands.size(), 1u);
+  ASSERT_FALSE(script.hashes.empty());
+  EXPECT_EQ(script.hashes.back().value, game.hash());
+  ReplayRunOptions replay_options;
+  replay_options.script_path = path;
+  replay_options.no_render = true;
+  replay_options.quiet = true;
+  EXPECT_EQ(play_replay(replay_options).final_hash, game.hash());
+}
+
+TEST(BannerExample, SerializationTest) {
+  testing::internal::CaptureStdout();
+
+  SerializationTestOptions options;
+  options.level_path = "tests/replays/levels/range.json";
+  options.every = 30;                              // save and restore every 30 ticks
+  options.ticks = 120;
+  int exit_code = run_serialization_test(options);  // 0: hashes equal on every tick
+
+  const std::string out = testing::internal::GetCapturedStdout();
+  EXPECT_EQ(exit_code, 0) << out;
+  EXPECT_NE(out.find("4 save/restore cycles"), std::string::npos) << out;
+}
+
+}  // namespace
+}  // namespace arc
