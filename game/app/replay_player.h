@@ -9,8 +9,7 @@
 // golden PNGs; only they create a GL context. Exit codes: 0 every check passed, 1 a check
 // failed; a bad script, level or golden folder throws InputError (exit 2) before any tick.
 //
-// Example, compiled as TEST(BannerExample, ReplayPlayer) in tests/unit/app/test_banner_examples.cpp:
-//
+// Example, compiled as BannerExample.ReplayPlayer in tests/unit/app/test_banner_examples.cpp:
 //   ReplayRunOptions options;
 //   options.script_path = "tests/replays/range_beam_shield.replay";
 //   options.no_render = true;                      // hashes and expectations only: no GL context

@@ -6,8 +6,7 @@
 // printing both state dumps. Input comes from a replay script when one is given, else the
 // level runs with no input (AI ships still fight).
 //
-// Example, compiled as TEST(BannerExample, SerializationTest) in tests/unit/app/test_banner_examples.cpp:
-//
+// Example, compiled as BannerExample.SerializationTest in tests/unit/app/test_banner_examples.cpp:
 //   SerializationTestOptions options;
 //   options.level_path = "tests/replays/levels/range.json";
 //   options.every = 30;                              // save and restore every 30 ticks

@@ -7,8 +7,7 @@
 // file that lacks at most the last tick. A `hash` line every second of game time lets the
 // replay check that it reproduces the live session.
 //
-// Example, compiled as TEST(BannerExample, SessionRecorder) in tests/unit/app/test_banner_examples.cpp:
-//
+// Example, compiled as BannerExample.SessionRecorder in tests/unit/app/test_banner_examples.cpp:
 //   Game game = Game::load_level(level, GameOptions{});
 //   SessionRecorder recorder(path, level, game);  // the header is written now
 //   for (int tick = 0; tick < 120; ++tick) {

@@ -10,8 +10,7 @@
 // exactly those files, in that order, into its renderer's model table
 // (load_scene_resources, game/app/scene_resources.h).
 //
-// Example, compiled as TEST(RenderViewBuilder, BannerExample) in tests/unit/game/test_render_view.cpp:
-//
+// Example, compiled as RenderViewBuilder.BannerExample in tests/unit/game/test_render_view.cpp:
 //   Game game = Game::load_level("levels/duel.json", options);
 //   game.step(InputFrame{});
 //   RenderView view;

@@ -1,6 +1,6 @@
 // The usage examples in the banners of game/app headers, word for word, so an example that no
 // longer matches the code fails to compile or fails here. Each banner names its test, and
-// BannersMatchTheirTests checks that each banner's example is still that test's text.
+// HeaderExamples.MatchTheirTests (tests/unit/core) checks that the banner's lines are its text.
 #include <gtest/gtest.h>
 
 #include <sstream>
@@ -15,39 +15,6 @@
 
 namespace arc {
 namespace {
-
-// The example lines of a header's banner: the "//   " lines after the one that says where
-// the example is compiled, indented as in a test body.
-std::string banner_example(const std::string& header_text) {
-  std::istringstream in(header_text);
-  std::string line, example;
-  bool in_example = false;
-  while (std::getline(in, line)) {
-    if (!in_example) {
-      in_example = line.find("compiled as TEST(") != std::string::npos;
-      if (in_example) std::getline(in, line);  // the blank comment line before the code
-      continue;
-    }
-    if (line.rfind("//   ", 0) != 0) break;
-    example += "  " + line.substr(5) + "\n";
-  }
-  return example;
-}
-
-TEST(BannerExample, BannersMatchTheirTests) {
-  const std::string root = ARCFIRE_SOURCE_DIR;
-  const std::vector<std::pair<std::string, std::string>> banners{
-      {"game/render/render_view_builder.h", "tests/unit/game/test_render_view.cpp"},
-      {"game/app/replay_player.h", "tests/unit/app/test_banner_examples.cpp"},
-      {"game/app/session_recorder.h", "tests/unit/app/test_banner_examples.cpp"},
-      {"game/app/serialization_test.h", "tests/unit/app/test_banner_examples.cpp"}};
-  for (const auto& [header, test] : banners) {
-    const std::string example = banner_example(read_text_file(root + "/" + header));
-    EXPECT_FALSE(example.empty()) << header << " has no example";
-    EXPECT_NE(read_text_file(root + "/" + test).find(example), std::string::npos)
-        << "the example in " << header << " is not the body of its test in " << test << ":\n" << example;
-  }
-}
 
 TEST(BannerExample, ReplayPlayer) {
   testing::internal::CaptureStdout();
