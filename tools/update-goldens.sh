@@ -1,15 +1,21 @@
 #!/usr/bin/env bash
-# Regenerates every golden image (unit-test goldens and replay snapshots). Review the changed
-# PNGs before committing them.
+# The one command that rewrites goldens: every replay script under tests/replays/ (image tests
+# are scene_*.replay scripts) replayed with --update-golden, which rewrites its hash lines,
+# golden/<script>/hashes.txt and its snapshot PNGs. Scripts whose snapshots compare with
+# another script's frames (`snapshots_like`) run last, against the fresh frames. Look at the
+# changed PNGs before committing them.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 "$root/tools/build.sh"
 cd "$root"
-for t in build/test_gfx build/test_app; do
-  [ -x "$t" ] && ARCFIRE_UPDATE_GOLDEN=1 "$t" --gtest_filter='*Golden*'
+shopt -s nullglob
+update() {
+  ./build/arcfire --headless --replay "$1" --update-golden --out "build/replay-out/$(basename "$1" .replay)" || true
+}
+for s in tests/replays/*.replay; do
+  grep -Eq '^[[:space:]]*snapshots_like[[:space:]]' "$s" || update "$s"
 done
 for s in tests/replays/*.replay; do
-  [ -e "$s" ] || continue
-  ./build/arcfire --headless --replay "$s" --update-golden --out "build/replay-out/$(basename "$s" .replay)" || true
+  if grep -Eq '^[[:space:]]*snapshots_like[[:space:]]' "$s"; then update "$s"; fi
 done
 git status --short -- tests

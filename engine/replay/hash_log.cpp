@@ -1,3 +1,4 @@
+// Hash logs: parsing (positioned errors) and writing of golden/<script>/hashes.txt.
 #include "replay/hash_log.h"
 
 #include <charconv>

@@ -58,6 +58,27 @@ struct SourceLine {
   bool operator==(const SourceLine&) const = default;
 };
 
+// `quality NAME`: a preset of assets/settings/quality.json, applied before the `set` lines.
+struct QualityLine {
+  std::string preset;
+  int line = 0, col = 0;  // where the name is written, for "unknown preset" errors
+  bool operator==(const QualityLine&) const = default;
+};
+
+// `set key=value`: one setting, any key `arcfire --list-settings` shows, as `--set` sets it.
+struct SettingLine {
+  std::string key, value;  // checked against core/settings.h when parsed
+  int line = 0, col = 0;
+  bool operator==(const SettingLine&) const = default;
+};
+
+// `tolerance 5/255 99.9%`: how far a snapshot may differ from its golden image.
+struct SnapshotTolerance {
+  int max_channel_diff = 5;   // in 1/255 steps, 0..255
+  double min_percent = 99.9;  // of pixels within max_channel_diff, (0, 100]
+  bool operator==(const SnapshotTolerance&) const = default;
+};
+
 struct Header {
   int version = kFormatVersion;
   std::string level;                // required, relative to the repo root (or absolute)
@@ -71,12 +92,17 @@ struct Header {
   std::optional<uint32_t> particle_budget;    // particles.budget, 1000..4000000
   std::optional<int> lightning_interval;      // particles.lightning_interval, 0..60
   std::optional<int> substeps;                // sim.substeps, 1..16
-  bool same_content(const Header& o) const {
-    return version == o.version && level == o.level && seed == o.seed && tick_rate == o.tick_rate &&
-           difficulty == o.difficulty && build == o.build && snapshot_width == o.snapshot_width &&
-           snapshot_height == o.snapshot_height && particle_budget == o.particle_budget &&
-           lightning_interval == o.lightning_interval && substeps == o.substeps;
-  }
+  // Settings the script runs under, on top of the command line's: the quality preset first,
+  // then the `set` lines in order. Their simulation keys change the game as --set does; the
+  // three keys above win over the preset, and a `set` line may not repeat them.
+  std::optional<QualityLine> quality;
+  std::vector<SettingLine> settings;
+  std::optional<SnapshotTolerance> tolerance;  // absent: image_compare's 5/255 on 99.9 %
+  // `snapshots_like NAME`: snapshots compare with golden/NAME/ (another script's frames, which
+  // this scene must look like) and --update-golden leaves those images alone. "": its own.
+  std::string snapshots_like;
+  // Equal content, ignoring where lines are written.
+  bool same_content(const Header& other) const;
 };
 
 struct InputEvent {

@@ -4,9 +4,11 @@
 #include <charconv>
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 #include "core/error.h"
 #include "core/json.h"
+#include "core/settings.h"
 #include "replay/script.h"
 
 namespace arc::replay {
@@ -134,16 +136,75 @@ constexpr std::array<ScriptCommand, 7> kCommands{ScriptCommand::TargetNext,     
                                                  ScriptCommand::CameraToggle,      ScriptCommand::Pause,
                                                  ScriptCommand::Resume};
 
-bool valid_snapshot_name(const std::string& s) {
+bool valid_name(const std::string& s) {
   return !s.empty() && s.size() <= 64 && std::all_of(s.begin(), s.end(), [](char c) {
            return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-';
          });
 }
 
+// The header keys that pin a simulation setting, and the setting each pins.
+constexpr std::array<std::pair<const char*, const char*>, 3> kPinnedSettings{
+    {{"particle_budget", "particles.budget"}, {"lightning_interval", "particles.lightning_interval"}, {"substeps", "sim.substeps"}}};
+
+// The other spelling of the same setting ("particle_budget" <-> "particles.budget"), or "".
+std::string pinned_twin(const std::string& name) {
+  for (const auto& [header_key, setting] : kPinnedSettings) {
+    if (name == header_key) return setting;
+    if (name == setting) return header_key;
+  }
+  return "";
+}
+
+bool seen_before(const std::vector<std::string>& seen, const std::string& name) {
+  return std::find(seen.begin(), seen.end(), name) != seen.end();
+}
+
+// `set key=value`: the key must be a setting and the value one it allows (core/settings.h).
+void parse_setting(LineParser& lp, Header& h, std::vector<std::string>& seen) {
+  const Token& t = lp.take("setting key=value (e.g. render.soft_edges=linear)");
+  const size_t eq = t.text.find('=');
+  if (eq == std::string::npos || eq == 0)
+    lp.fail(t, "expected key=value as with --set (e.g. set render.soft_edges=linear), got '" + t.text + "'");
+  SettingLine s{t.text.substr(0, eq), t.text.substr(eq + 1), lp.line, t.col};
+  Settings settings = Settings::defaults();
+  const std::vector<SettingDef>& defs = settings.all();
+  const bool known = std::any_of(defs.begin(), defs.end(), [&](const SettingDef& d) { return d.key == s.key; });
+  if (known) s.col = t.col + static_cast<int>(eq) + 1;  // a bad value is reported where it is written
+  settings.set(s.key, s.value, lp.path + ":" + std::to_string(lp.line) + ":" + std::to_string(s.col));
+  if (seen_before(seen, s.key)) lp.fail(t, "setting '" + s.key + "' is set twice");
+  const std::string twin = pinned_twin(s.key);
+  if (seen_before(seen, twin)) lp.fail(t, "setting '" + s.key + "' is already given by the header's '" + twin + "' line");
+  seen.push_back(s.key);
+  h.settings.push_back(s);
+}
+
+// `tolerance N/255 P%`: the largest channel difference and the share of pixels within it.
+SnapshotTolerance parse_tolerance(LineParser& lp) {
+  SnapshotTolerance tol;
+  const Token& diff = lp.take("largest channel difference N/255 (e.g. 5/255)");
+  const size_t slash = diff.text.find('/');
+  if (slash == std::string::npos || diff.text.substr(slash) != "/255")
+    lp.fail(diff, "tolerance must be written N/255 with N in [0, 255] (e.g. 5/255), got '" + diff.text + "'");
+  tol.max_channel_diff = static_cast<int>(integer_in(lp, Token{diff.text.substr(0, slash), diff.col}, "tolerance", 0, 255));
+  const Token& share = lp.take("share of pixels within the tolerance, P% (e.g. 99.9%)");
+  double percent = 0;
+  if (share.text.size() < 2 || share.text.back() != '%' ||
+      !parse_double(share.text.substr(0, share.text.size() - 1), percent) || percent <= 0 || percent > 100)
+    lp.fail(share, "share of pixels must be a percentage in (0, 100] written P% (e.g. 99.9%), got '" + share.text + "'");
+  tol.min_percent = percent;
+  return tol;
+}
+
 void parse_header_line(LineParser& lp, Header& h, std::vector<std::string>& seen) {
   const Token& key = lp.tokens[lp.next++];
-  if (std::find(seen.begin(), seen.end(), key.text) != seen.end())
-    lp.fail(key, "header key '" + key.text + "' appears twice");
+  if (key.text == "set") {
+    parse_setting(lp, h, seen);
+    lp.done("the setting");
+    return;
+  }
+  if (seen_before(seen, key.text)) lp.fail(key, "header key '" + key.text + "' appears twice");
+  if (seen_before(seen, pinned_twin(key.text)))
+    lp.fail(key, "header key '" + key.text + "' repeats the setting of an earlier 'set " + pinned_twin(key.text) + "' line");
   seen.push_back(key.text);
   if (key.text == "level") {
     h.level = lp.take("level path").text;
@@ -168,10 +229,19 @@ void parse_header_line(LineParser& lp, Header& h, std::vector<std::string>& seen
     h.lightning_interval = static_cast<int>(integer_in(lp, lp.take("lightning interval"), "lightning_interval", 0, 60));
   } else if (key.text == "substeps") {
     h.substeps = static_cast<int>(integer_in(lp, lp.take("sub-step count"), "substeps", 1, 16));
+  } else if (key.text == "quality") {
+    const Token& t = lp.take("quality preset name (e.g. low, medium, high or reference)");
+    h.quality = QualityLine{t.text, lp.line, t.col};
+  } else if (key.text == "tolerance") {
+    h.tolerance = parse_tolerance(lp);
+  } else if (key.text == "snapshots_like") {
+    const Token& t = lp.take("the name of the script whose golden images to compare with");
+    if (!valid_name(t.text)) lp.fail(t, "script name must be 1 to 64 of A-Z a-z 0-9 _ -, got '" + t.text + "'");
+    h.snapshots_like = t.text;
   } else {
     lp.fail(key, "unknown header key '" + key.text +
                      "'; allowed: level, seed, tick_rate, difficulty, build, snapshot_size, particle_budget, "
-                     "lightning_interval, substeps, or a tick-stamped line");
+                     "lightning_interval, substeps, quality, set, tolerance, snapshots_like, or a tick-stamped line");
   }
   lp.done(key.text);
 }
@@ -235,6 +305,78 @@ HashCheck parse_hash(LineParser& lp, uint64_t tick, bool full) {
   return h;
 }
 
+// One tick-stamped line after its tick: input, command, check or `end`.
+void parse_stamped_line(LineParser& lp, uint64_t tick, const SourceLine& src, Script& s) {
+  const Token& verb = lp.take("what happens at this tick (press, release, axis, command, expect, snapshot, hash, full_hash, end)");
+  const std::string& v = verb.text;
+  if (v == "press" || v == "release") {
+    InputEvent e;
+    e.tick = tick;
+    e.kind = v == "press" ? InputEvent::Kind::Press : InputEvent::Kind::Release;
+    e.button = choose(lp, lp.take("button name"), "button", kButtons, &button_name);
+    e.src = src;
+    lp.done(v + " " + button_name(e.button));
+    s.inputs.push_back(e);
+  } else if (v == "axis") {
+    InputEvent e;
+    e.tick = tick;
+    e.kind = InputEvent::Kind::Axis;
+    e.axis = choose(lp, lp.take("axis name"), "axis", kAxes, &axis_name);
+    const Token& t = lp.take("axis value in [-1, 1]");
+    double x = number(lp, t, "axis value");
+    if (x < -1.0 || x > 1.0) lp.fail(t, "axis value must be in [-1, 1], got " + t.text);
+    e.value = quantise_axis(x);
+    e.src = src;
+    lp.done("the axis value");
+    s.inputs.push_back(e);
+  } else if (v == "command") {
+    CommandEvent c;
+    c.tick = tick;
+    c.command = choose(lp, lp.take("command name"), "command", kCommands, &command_name);
+    c.src = src;
+    lp.done(std::string("command ") + command_name(c.command));
+    s.commands.push_back(c);
+  } else if (v == "expect") {
+    Expectation e = parse_expect(lp, tick);
+    e.src = src;
+    s.expectations.push_back(std::move(e));
+  } else if (v == "snapshot") {
+    const Token& t = lp.take("snapshot name");
+    if (!valid_name(t.text))
+      lp.fail(t, "snapshot name must be 1 to 64 of A-Z a-z 0-9 _ -, got '" + t.text + "'");
+    for (const SnapshotCheck& o : s.snapshots)
+      if (o.name == t.text) lp.fail(t, "snapshot name '" + t.text + "' is used twice (also line " + std::to_string(o.src.line) + ")");
+    lp.done("the snapshot name");
+    s.snapshots.push_back(SnapshotCheck{tick, t.text, src});
+  } else if (v == "hash" || v == "full_hash") {
+    HashCheck h = parse_hash(lp, tick, v == "full_hash");
+    h.src = src;
+    s.hashes.push_back(h);
+  } else if (v == "end") {
+    lp.done("end");
+    s.end_tick = tick;
+    s.end_src = src;
+  } else {
+    lp.fail(verb, "unknown line '" + v +
+                      "'; allowed: press, release, axis, command, expect, snapshot, hash, full_hash or end");
+  }
+}
+
+// The tick a line is stamped with: absolute, or +N after the previous line's tick.
+uint64_t stamped_tick(LineParser& lp, const Token& first, uint64_t last_tick) {
+  uint64_t tick = 0;
+  if (first.text[0] == '+') {
+    Token delta{first.text.substr(1), first.col + 1};
+    tick = last_tick + integer_in(lp, delta, "relative tick", 0, 100000000);
+  } else {
+    tick = integer_in(lp, first, "tick", 0, 1000000000);
+  }
+  if (tick < last_tick)
+    lp.fail(first, "tick " + std::to_string(tick) + " is before the previous line's tick " +
+                       std::to_string(last_tick) + "; lines must be in tick order");
+  return tick;
+}
+
 }  // namespace
 
 Script parse_script(const std::string& text, const std::string& path) {
@@ -280,70 +422,8 @@ Script parse_script(const std::string& text, const std::string& path) {
     }
     if (s.end_tick) lp.fail(first, "line after 'end' (line " + std::to_string(s.end_src.line) + ")");
     lp.next = 1;
-    uint64_t tick = 0;
-    if (first.text[0] == '+') {
-      Token delta{first.text.substr(1), first.col + 1};
-      tick = last_tick + integer_in(lp, delta, "relative tick", 0, 100000000);
-    } else {
-      tick = integer_in(lp, first, "tick", 0, 1000000000);
-    }
-    if (tick < last_tick)
-      lp.fail(first, "tick " + std::to_string(tick) + " is before the previous line's tick " +
-                         std::to_string(last_tick) + "; lines must be in tick order");
-    last_tick = tick;
-    const Token& verb = lp.take("what happens at this tick (press, release, axis, command, expect, snapshot, hash, full_hash, end)");
-    const std::string& v = verb.text;
-    if (v == "press" || v == "release") {
-      InputEvent e;
-      e.tick = tick;
-      e.kind = v == "press" ? InputEvent::Kind::Press : InputEvent::Kind::Release;
-      e.button = choose(lp, lp.take("button name"), "button", kButtons, &button_name);
-      e.src = src;
-      lp.done(v + " " + button_name(e.button));
-      s.inputs.push_back(e);
-    } else if (v == "axis") {
-      InputEvent e;
-      e.tick = tick;
-      e.kind = InputEvent::Kind::Axis;
-      e.axis = choose(lp, lp.take("axis name"), "axis", kAxes, &axis_name);
-      const Token& t = lp.take("axis value in [-1, 1]");
-      double x = number(lp, t, "axis value");
-      if (x < -1.0 || x > 1.0) lp.fail(t, "axis value must be in [-1, 1], got " + t.text);
-      e.value = quantise_axis(x);
-      e.src = src;
-      lp.done("the axis value");
-      s.inputs.push_back(e);
-    } else if (v == "command") {
-      CommandEvent c;
-      c.tick = tick;
-      c.command = choose(lp, lp.take("command name"), "command", kCommands, &command_name);
-      c.src = src;
-      lp.done(std::string("command ") + command_name(c.command));
-      s.commands.push_back(c);
-    } else if (v == "expect") {
-      Expectation e = parse_expect(lp, tick);
-      e.src = src;
-      s.expectations.push_back(std::move(e));
-    } else if (v == "snapshot") {
-      const Token& t = lp.take("snapshot name");
-      if (!valid_snapshot_name(t.text))
-        lp.fail(t, "snapshot name must be 1 to 64 of A-Z a-z 0-9 _ -, got '" + t.text + "'");
-      for (const SnapshotCheck& o : s.snapshots)
-        if (o.name == t.text) lp.fail(t, "snapshot name '" + t.text + "' is used twice (also line " + std::to_string(o.src.line) + ")");
-      lp.done("the snapshot name");
-      s.snapshots.push_back(SnapshotCheck{tick, t.text, src});
-    } else if (v == "hash" || v == "full_hash") {
-      HashCheck h = parse_hash(lp, tick, v == "full_hash");
-      h.src = src;
-      s.hashes.push_back(h);
-    } else if (v == "end") {
-      lp.done("end");
-      s.end_tick = tick;
-      s.end_src = src;
-    } else {
-      lp.fail(verb, "unknown line '" + v +
-                        "'; allowed: press, release, axis, command, expect, snapshot, hash, full_hash or end");
-    }
+    last_tick = stamped_tick(lp, first, last_tick);
+    parse_stamped_line(lp, last_tick, src, s);
   }
   if (!have_version)
     throw InputError(path + ":1:1: empty script; it starts with 'arcfire-replay " + std::to_string(kFormatVersion) + "'");

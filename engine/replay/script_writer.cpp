@@ -1,6 +1,7 @@
 // Writing replay scripts (whole files and the recorder's single lines), names of inputs and
 // commands, and the axis quantisation shared with live input.
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -83,6 +84,13 @@ std::string number_text(double v) {
   return buf;
 }
 
+// The shortest text that parses back to the same double (99.9 → "99.9").
+std::string shortest_number_text(double v) {
+  char buf[40];
+  auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
+  return ec == std::errc() ? std::string(buf, end) : number_text(v);
+}
+
 std::string range_text(const Range& r) { return number_text(r.min) + ".." + number_text(r.max); }
 
 std::string expectation_line(const Expectation& e) {
@@ -114,6 +122,21 @@ uint64_t Script::last_tick() const {
   for (const auto& e : hashes) t = std::max(t, e.tick);
   for (const auto& e : snapshots) t = std::max(t, e.tick);
   return t;
+}
+
+bool Header::same_content(const Header& o) const {
+  auto same_settings = [](const std::vector<SettingLine>& a, const std::vector<SettingLine>& b) {
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const SettingLine& x, const SettingLine& y) {
+      return x.key == y.key && x.value == y.value;
+    });
+  };
+  const std::optional<std::string> preset = quality ? std::optional(quality->preset) : std::nullopt;
+  const std::optional<std::string> other_preset = o.quality ? std::optional(o.quality->preset) : std::nullopt;
+  return version == o.version && level == o.level && seed == o.seed && tick_rate == o.tick_rate &&
+         difficulty == o.difficulty && build == o.build && snapshot_width == o.snapshot_width &&
+         snapshot_height == o.snapshot_height && particle_budget == o.particle_budget &&
+         lightning_interval == o.lightning_interval && substeps == o.substeps && preset == other_preset &&
+         same_settings(settings, o.settings) && tolerance == o.tolerance && snapshots_like == o.snapshots_like;
 }
 
 bool Script::same_content(const Script& o) const {
@@ -148,6 +171,12 @@ std::string header_text(const Header& h) {
   if (h.particle_budget) s += "particle_budget " + std::to_string(*h.particle_budget) + "\n";
   if (h.lightning_interval) s += "lightning_interval " + std::to_string(*h.lightning_interval) + "\n";
   if (h.substeps) s += "substeps " + std::to_string(*h.substeps) + "\n";
+  if (h.quality) s += "quality " + h.quality->preset + "\n";
+  for (const SettingLine& line : h.settings) s += "set " + line.key + "=" + line.value + "\n";
+  if (h.tolerance)
+    s += "tolerance " + std::to_string(h.tolerance->max_channel_diff) + "/255 " +
+         shortest_number_text(h.tolerance->min_percent) + "%\n";
+  if (!h.snapshots_like.empty()) s += "snapshots_like " + h.snapshots_like + "\n";
   return s;
 }
 

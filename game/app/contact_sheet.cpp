@@ -1,3 +1,4 @@
+// Contact sheets: frames box-filtered down to thumbnails and tiled on one image.
 #include "game/app/contact_sheet.h"
 
 #include <algorithm>

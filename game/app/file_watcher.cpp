@@ -1,3 +1,4 @@
+// File watching by polled modification times, grouped so the window loop knows what to reload.
 #include "game/app/file_watcher.h"
 
 #include <set>

@@ -1,3 +1,4 @@
+// Headless frames: an EGL context, a Renderer with the level's resources, and read-back to an Image.
 #include "game/app/frame_renderer.h"
 
 #include "game/app/scene_resources.h"

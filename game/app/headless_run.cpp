@@ -1,3 +1,4 @@
+// `arcfire --headless` and `--demo`: a level simulated without a window, frames and a contact sheet.
 #include "game/app/headless_run.h"
 
 #include <cstdio>

@@ -1,3 +1,4 @@
+// Bindings loaded from JSON with positioned errors, and live device state turned into InputFrames.
 #include "game/app/input_bindings.h"
 
 #include <algorithm>

@@ -93,10 +93,13 @@ class ReplayPlayer {
   replay::Script script_;
   uint64_t last_tick_;  // the run stops after this tick's checks
   std::string level_path_;
+  Settings settings_;  // the command line's, then the script's quality preset and `set` lines
   GameOptions game_options_;
   Game game_;
   std::unique_ptr<FrameRenderer> renderer_;
   std::string golden_dir_, out_dir_;
+  std::string images_dir_;        // golden PNGs: golden_dir_, or that of the script named by snapshots_like
+  ImageCompareRule compare_rule_;  // the script's tolerance, else image_compare's default
   std::optional<replay::HashLog> golden_log_;
   replay::HashLog log_;
   std::vector<uint64_t> hash_values_;  // per script hash line, for --update-golden
@@ -112,12 +115,20 @@ ReplayPlayer::ReplayPlayer(const ReplayRunOptions& opt, replay::Script script)
       script_(std::move(script)),
       last_tick_(script_.last_tick()),
       level_path_(resolve_script_level(script_, data_root(opt.game))),
-      game_options_(script_game_options(script_, opt.game)),
+      settings_(script_settings(script_, opt.settings, data_root(opt.game))),
+      game_options_(script_game_options(script_, settings_, opt.game)),
       game_(Game::load_level(level_path_, game_options_)) {
   check_expectation_names(script_, game_.world());
   const std::string stem = fs::path(opt.script_path).stem().string();
   golden_dir_ = !opt.golden_dir.empty() ? opt.golden_dir
                                         : (fs::path(opt.script_path).parent_path() / "golden" / stem).string();
+  images_dir_ = script_.header.snapshots_like.empty()
+                    ? golden_dir_
+                    : (fs::path(golden_dir_).parent_path() / script_.header.snapshots_like).string();
+  if (const auto& tolerance = script_.header.tolerance) {
+    compare_rule_.tolerance = tolerance->max_channel_diff;
+    compare_rule_.min_fraction = tolerance->min_percent / 100.0;
+  }
   out_dir_ = !opt.out_dir.empty() ? opt.out_dir : (fs::path("out") / "replay" / stem).string();
   hash_values_.assign(script_.hashes.size(), 0);
   if (!opt.update_golden && fs::exists(log_path())) golden_log_ = replay::parse_hash_log(read_text_file(log_path()), log_path());
@@ -126,7 +137,7 @@ ReplayPlayer::ReplayPlayer(const ReplayRunOptions& opt, replay::Script script)
     FrameRendererDesc desc;
     desc.width = script_.header.snapshot_width;
     desc.height = script_.header.snapshot_height;
-    renderer_ = std::make_unique<FrameRenderer>(desc, opt.settings, game_);
+    renderer_ = std::make_unique<FrameRenderer>(desc, settings_, game_);
   }
 }
 
@@ -251,22 +262,25 @@ void ReplayPlayer::check_snapshot(const replay::SnapshotCheck& s, uint64_t t) {
   if (!renderer_) return;
   Image actual = renderer_->render(game_);
   ++result_.frames_rendered;
-  std::string golden = (fs::path(golden_dir_) / (s.name + ".png")).string();
+  const std::string golden = (fs::path(images_dir_) / (s.name + ".png")).string();
+  const std::string written = (fs::path(out_dir_) / (s.name + ".png")).string();
   make_dir(out_dir_, "--out");
-  save_image((fs::path(out_dir_) / (s.name + ".png")).string(), actual);
-  if (opt_.update_golden) {
-    make_dir(golden_dir_, "golden folder");
+  save_image(written, actual);
+  const bool own_images = script_.header.snapshots_like.empty();
+  if (opt_.update_golden && own_images) {
+    make_dir(images_dir_, "golden folder");
     save_image(golden, actual);
     if (!opt_.quiet) std::printf("updated %s\n", golden.c_str());
     return;
   }
   if (!fs::exists(golden)) {
-    fail(t, s.src, "no golden image " + golden + "; run with --update-golden after checking " +
-                       (fs::path(out_dir_) / (s.name + ".png")).string());
+    fail(t, s.src, "no golden image " + golden + "; run with --update-golden " +
+                       (own_images ? "after checking " + written
+                                   : "on " + script_.header.snapshots_like + ", whose frames this script must match"));
     return;
   }
   Image expected = load_image(golden);
-  ImageDiff d = compare_images(expected, actual);
+  ImageDiff d = compare_images(expected, actual, compare_rule_);
   if (d.passed) {
     pass(t, s.src);
     return;

@@ -6,8 +6,9 @@
 // snapshots are checked, and the cheap state hash of every tick is compared with the golden
 // hash log (golden/<script>/hashes.txt), so a changed simulation is reported at its first
 // diverging tick with a state dump. Snapshots render through FrameRenderer and compare with
-// golden PNGs; only they create a GL context. Exit codes: 0 every check passed, 1 a check
-// failed; a bad script, level or golden folder throws InputError (exit 2) before any tick.
+// golden PNGs (within the script's `tolerance`) under the settings the script names; only
+// snapshots create a GL context. Exit codes: 0 every check passed, 1 a check failed; a bad
+// script, level or golden folder throws InputError (exit 2) before any tick.
 //
 // Example, compiled as BannerExample.ReplayPlayer in tests/unit/app/test_banner_examples.cpp:
 //   ReplayRunOptions options;
@@ -35,8 +36,9 @@ struct ReplayRunOptions {
   bool update_golden = false;   // fill in hash values, rewrite the hash log and golden PNGs
   bool no_render = false;       // skip snapshots: no GL context at all
   GameOptions game;             // budget, sub-steps, root_dir; seed and difficulty come from the script
-  Settings settings = Settings::defaults();  // renderer settings for snapshots
-  std::string golden_dir;       // "" = <script folder>/golden/<script stem>
+  Settings settings = Settings::defaults();  // the script's quality and `set` lines apply on top
+  std::string golden_dir;       // "" = <script folder>/golden/<script stem>; snapshots_like NAME
+                                // reads the PNGs of its sibling folder NAME
   int full_hash_every = 60;     // ticks between full hashes in the hash log
   bool quiet = false;           // no per-check output (benchmarks); failures still printed
   int render_every = 0;         // benchmarks: also render every N-th tick without checking (0 = never)

@@ -1,3 +1,4 @@
+// The models and sprites a level needs, loaded into a Renderer in the order its indices expect.
 #include "game/app/scene_resources.h"
 
 #include <filesystem>

@@ -9,7 +9,6 @@ namespace arc {
 class Renderer;
 class World;
 
-
 void load_scene_resources(Renderer& renderer, const World& world, const std::string& root_dir);
 
 }  // namespace arc

@@ -1,10 +1,13 @@
-// Replay script ↔ Game: input conversion, the level and game options of a script, its feeder.
+// Replay script ↔ Game: input conversion, level and settings of a script, and its feeder.
 #include "game/app/script_feeder.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <vector>
 
 #include "core/error.h"
+#include "core/json.h"
+#include "game/app/app_options.h"
 
 namespace arc {
 
@@ -52,7 +55,23 @@ std::string resolve_script_level(const replay::Script& s, const std::string& roo
                    "' not found (looked in the working folder and in " + root + ")");
 }
 
-GameOptions script_game_options(const replay::Script& s, GameOptions o) {
+Settings script_settings(const replay::Script& s, Settings settings, const std::string& root) {
+  if (s.header.quality) {
+    const replay::QualityLine& q = *s.header.quality;
+    const std::string file = root + "/assets/settings/quality.json";
+    const std::vector<std::string> names = Settings::preset_names(file);
+    if (std::find(names.begin(), names.end(), q.preset) == names.end())
+      throw InputError(s.path + ":" + std::to_string(q.line) + ":" + std::to_string(q.col) + ": unknown quality preset '" +
+                       q.preset + "' in " + file + "; allowed: " + join_allowed(names));
+    settings.apply_preset_file(file, q.preset);
+  }
+  for (const replay::SettingLine& line : s.header.settings)
+    settings.set(line.key, line.value, s.path + ":" + std::to_string(line.line) + ":" + std::to_string(line.col));
+  return settings;
+}
+
+GameOptions script_game_options(const replay::Script& s, const Settings& settings, GameOptions o) {
+  if (s.header.quality || !s.header.settings.empty()) apply_simulation_settings(settings, o);
   if (s.header.particle_budget) o.particle_budget = *s.header.particle_budget;
   if (s.header.lightning_interval) o.lightning_interval = *s.header.lightning_interval;
   if (s.header.substeps) o.substeps = *s.header.substeps;

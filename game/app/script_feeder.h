@@ -2,13 +2,15 @@
 // serialization test and the recorder share.
 //
 // A script (engine/replay) speaks its own plain types; these convert its held input to the
-// game's InputFrame and back, resolve the level it names, build the options its game is loaded
-// with, and step a Game with the script's input and commands tick by tick (ScriptFeeder).
+// game's InputFrame and back, resolve the level it names, gather the settings it runs under
+// and the options its game is loaded with, and step a Game with the script's input and
+// commands tick by tick (ScriptFeeder).
 #pragma once
 #include <cstddef>
 #include <cstdint>
 #include <string>
 
+#include "core/settings.h"
 #include "game/sim/game.h"
 #include "replay/script.h"
 
@@ -25,9 +27,13 @@ std::string data_root(const GameOptions& options);
 // root_dir, so scripts run from any folder. InputError at the level line when neither exists.
 std::string resolve_script_level(const replay::Script& script, const std::string& root_dir);
 
-// The options a script's game is loaded with: `base`, then the header's seed, difficulty and
-// simulation keys.
-GameOptions script_game_options(const replay::Script& script, GameOptions base);
+// The settings a script runs under: `base` (the command line's), then the script's `quality`
+// preset (from root_dir/assets/settings/quality.json), then its `set` lines.
+Settings script_settings(const replay::Script& script, Settings base, const std::string& root_dir);
+
+// The options a script's game is loaded with: `base`, the simulation keys of `settings` when
+// the script sets any settings, then the header's seed, difficulty and simulation keys.
+GameOptions script_game_options(const replay::Script& script, const Settings& settings, GameOptions base);
 
 // Feeds a script's held input and commands to a Game, one step at a time.
 class ScriptFeeder {

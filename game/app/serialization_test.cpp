@@ -11,7 +11,7 @@
 namespace arc {
 
 SerializationTestOptions::SerializationTestOptions(const AppOptions& app)
-    : level_path(app.level), game(app.game), every(app.serialization_test) {
+    : level_path(app.level), game(app.game), settings(app.settings), every(app.serialization_test) {
   if (app.ticks > 0) ticks = app.ticks;
 }
 
@@ -24,7 +24,7 @@ int run_serialization_test(const SerializationTestOptions& opt) {
   if (!opt.script_path.empty()) {
     script = replay::load_script(opt.script_path);
     level = resolve_script_level(*script, data_root(opt.game));
-    game_options = script_game_options(*script, opt.game);
+    game_options = script_game_options(*script, script_settings(*script, opt.settings, data_root(opt.game)), opt.game);
     last = script->last_tick();
   }
   Game original = Game::load_level(level, game_options);

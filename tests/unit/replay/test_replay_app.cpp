@@ -159,6 +159,32 @@ TEST(ReplayApp, UnknownShipIsBadInputAtItsColumn) {
   }
 }
 
+// A script's `set` lines change the simulation as --set does, and its `quality` preset is
+// looked up in assets/settings/quality.json; an unknown preset is bad input at its column.
+TEST(ReplayApp, ScriptSettingsChangeTheSimulationLikeTheHeaderKeys) {
+  fs::path dir = temp_dir("settings");
+  const std::string body = "0 press fire_primary\n0 axis yaw 0.4\n120 end\n";
+  auto final_hash = [&](const std::string& name, const std::string& header) {
+    fs::path file = dir / (name + ".replay");
+    write_file_atomic(file.string(), "arcfire-replay 1\nlevel " + kRange + "\n" + header + body);
+    return play_replay(quiet(file)).final_hash;
+  };
+  const uint64_t plain = final_hash("plain", "");
+  EXPECT_EQ(final_hash("set", "set sim.substeps=2\n"), final_hash("pinned", "substeps 2\n"));
+  EXPECT_NE(final_hash("set", "set sim.substeps=2\n"), plain);
+  EXPECT_EQ(final_hash("render_only", "set render.soft_edges=off\ntolerance 0/255 100%\n"), plain);
+  EXPECT_EQ(final_hash("preset_pinned", "quality reference\nparticle_budget 200000\nsubsteps 1\n"), plain);
+
+  fs::path file = dir / "bad.replay";
+  write_file_atomic(file.string(), "arcfire-replay 1\nlevel " + kRange + "\n  quality ultra\n" + body);
+  try {
+    play_replay(quiet(file));
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(file.string() + ":3:11: unknown quality preset 'ultra'", 0), 0u) << e.what();
+  }
+}
+
 TEST(ReplayApp, SerializationTestPasses) {
   SerializationTestOptions s;
   s.level_path = "levels/duel.json";

@@ -99,6 +99,32 @@ TEST(ReplayParse, EveryLineKind) {
   EXPECT_EQ(s.last_tick(), 120u);
 }
 
+TEST(ReplayParse, SettingsToleranceAndSnapshotsLike) {
+  Script s = parse_script(kHead +
+                              "quality high\n"
+                              "set render.soft_edges=contrast   # any --set key\n"
+                              "  set render.scale=0.5\n"
+                              "tolerance 3/255 99.5%\n"
+                              "snapshots_like gallery-near_1\n"
+                              "5 end\n",
+                          "s.replay");
+  ASSERT_TRUE(s.header.quality.has_value());
+  EXPECT_EQ(s.header.quality->preset, "high");
+  EXPECT_EQ(s.header.quality->line, 3);
+  EXPECT_EQ(s.header.quality->col, 9);
+  ASSERT_EQ(s.header.settings.size(), 2u);
+  EXPECT_EQ(s.header.settings[0].key, "render.soft_edges");
+  EXPECT_EQ(s.header.settings[0].value, "contrast");
+  EXPECT_EQ(s.header.settings[1].key, "render.scale");
+  EXPECT_EQ(s.header.settings[1].value, "0.5");
+  EXPECT_EQ(s.header.settings[1].line, 5);
+  EXPECT_EQ(s.header.settings[1].col, 20);  // the value, where a bad one would be reported
+  ASSERT_TRUE(s.header.tolerance.has_value());
+  EXPECT_EQ(s.header.tolerance->max_channel_diff, 3);
+  EXPECT_EQ(s.header.tolerance->min_percent, 99.5);
+  EXPECT_EQ(s.header.snapshots_like, "gallery-near_1");
+}
+
 TEST(ReplayParse, MissingEndRunsToTheLastStampedTick) {
   Script s = parse_script(kHead + "10 press afterburner\n250 hash 1\n", "cut.replay");
   EXPECT_FALSE(s.end_tick.has_value());
@@ -111,6 +137,10 @@ TEST(ReplayParse, DefaultsWhenHeaderIsMinimal) {
   EXPECT_FALSE(s.header.tick_rate.has_value());
   EXPECT_FALSE(s.header.difficulty.has_value());
   EXPECT_EQ(s.header.snapshot_width, 640);
+  EXPECT_FALSE(s.header.quality.has_value());
+  EXPECT_TRUE(s.header.settings.empty());
+  EXPECT_FALSE(s.header.tolerance.has_value());
+  EXPECT_TRUE(s.header.snapshots_like.empty());
 }
 
 struct BadCase {
@@ -165,7 +195,30 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"snapshot_twice", kHead + "0 snapshot a\n1 snapshot a\n", "s.replay:4:12: snapshot name 'a' is used twice"},
         BadCase{"hash_hex", kHead + "0 hash xyz\n", "s.replay:3:8: hash value must be 1 to 16 hex digits"},
         BadCase{"hash_long", kHead + "0 hash 0123456789abcdef0\n", "s.replay:3:8: hash value must be 1 to 16 hex digits"},
-        BadCase{"after_end", kHead + "10 end\n20 press afterburner\n", "s.replay:4:1: line after 'end' (line 3)"}),
+        BadCase{"after_end", kHead + "10 end\n20 press afterburner\n", "s.replay:4:1: line after 'end' (line 3)"},
+        BadCase{"set_no_value", kHead + "set render.sorting\n", "s.replay:3:5: expected key=value as with --set"},
+        BadCase{"set_missing", kHead + "set\n", "s.replay:3:4: missing setting key=value"},
+        BadCase{"set_unknown_key", kHead + "set render.fuzz=1\n", "s.replay:3:5: unknown setting 'render.fuzz'; known: "},
+        BadCase{"set_bad_value", kHead + "set render.sorting=some\n",
+                "s.replay:3:20: setting 'render.sorting' must be one of off, cluster or full, got 'some'"},
+        BadCase{"set_twice", kHead + "set render.sorting=full\nset render.sorting=off\n",
+                "s.replay:4:5: setting 'render.sorting' is set twice"},
+        BadCase{"set_pinned", kHead + "substeps 2\nset sim.substeps=3\n",
+                "s.replay:4:5: setting 'sim.substeps' is already given by the header's 'substeps' line"},
+        BadCase{"pinned_after_set", kHead + "set particles.budget=5000\nparticle_budget 6000\n",
+                "s.replay:4:1: header key 'particle_budget' repeats the setting of an earlier 'set particles.budget' line"},
+        BadCase{"set_extra", kHead + "set render.scale=1 render.sorting=off\n",
+                "s.replay:3:20: unexpected 'render.sorting=off' after the setting"},
+        BadCase{"quality_missing", kHead + "quality\n", "s.replay:3:8: missing quality preset name"},
+        BadCase{"quality_twice", kHead + "quality low\nquality high\n", "s.replay:4:1: header key 'quality' appears twice"},
+        BadCase{"tolerance_form", kHead + "tolerance 5 99.9%\n", "s.replay:3:11: tolerance must be written N/255"},
+        BadCase{"tolerance_range", kHead + "tolerance 300/255 99.9%\n",
+                "s.replay:3:11: tolerance must be an integer in [0, 255], got '300'"},
+        BadCase{"tolerance_no_percent", kHead + "tolerance 5/255 99.9\n",
+                "s.replay:3:17: share of pixels must be a percentage in (0, 100] written P%"},
+        BadCase{"tolerance_zero", kHead + "tolerance 5/255 0%\n", "s.replay:3:17: share of pixels must be a percentage"},
+        BadCase{"tolerance_missing", kHead + "tolerance 5/255\n", "s.replay:3:16: missing share of pixels"},
+        BadCase{"snapshots_like_name", kHead + "snapshots_like ../x\n", "s.replay:3:16: script name must be 1 to 64"}),
     [](const ::testing::TestParamInfo<BadCase>& i) { return std::string(i.param.name); });
 
 TEST(ReplayParse, MissingFileIsAnInputError) {

@@ -38,6 +38,11 @@ build abc123
 snapshot_size 320 200
 particle_budget 4000
 substeps 3
+quality medium
+set render.soft_edges=linear
+set render.scale=0.75
+tolerance 2/255 99.95%
+snapshots_like other_scene
 0 press fire_primary
 0 axis yaw 0.25
 +10 axis strafe_y -1
@@ -60,12 +65,24 @@ substeps 3
   Script b = parse_script(written, "b.replay");
   EXPECT_TRUE(a.same_content(b)) << written;
   EXPECT_EQ(write_script(b), written);
+  EXPECT_NE(written.find("\nquality medium\nset render.soft_edges=linear\nset render.scale=0.75\n"
+                         "tolerance 2/255 99.95%\nsnapshots_like other_scene\n"),
+            std::string::npos)
+      << written;
 }
 
 TEST(ReplayWrite, ChangedContentIsNotTheSame) {
   Script a = parse_script("arcfire-replay 1\nlevel x\n0 axis yaw 0.25\n1 end\n", "a");
   Script b = parse_script("arcfire-replay 1\nlevel x\n0 axis yaw 0.26\n1 end\n", "b");
   EXPECT_FALSE(a.same_content(b));
+  const std::string head = "arcfire-replay 1\nlevel x\n";
+  EXPECT_FALSE(parse_script(head + "set render.scale=1\n1 end\n", "c")
+                   .same_content(parse_script(head + "set render.scale=0.5\n1 end\n", "d")));
+  EXPECT_FALSE(parse_script(head + "tolerance 5/255 99.9%\n1 end\n", "e")
+                   .same_content(parse_script(head + "tolerance 5/255 99%\n1 end\n", "f")));
+  EXPECT_FALSE(parse_script(head + "quality low\n1 end\n", "g").same_content(parse_script(head + "1 end\n", "h")));
+  EXPECT_TRUE(parse_script(head + "quality low\n1 end\n", "i")
+                  .same_content(parse_script("# moved\n" + head + "\nquality low\n1 end\n", "j")));
 }
 
 TEST(ReplayWrite, RecordedDiffsReplayToTheSameHeldState) {
