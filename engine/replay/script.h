@@ -6,9 +6,10 @@
 // snapshot) and `end`. The full format, with an example of every line, is in
 // tests/replays/README.md. Every malformed line throws InputError "path:line:col: message".
 //
-//   Script s = load_script("tests/replays/duel_course.replay");   // or parse_script(text, path)
-//   for (const InputEvent& e : s.inputs) ...                      // in tick order
-//   std::string text = write_script(s);                            // parse(write(s)) == s
+// Example, compiled as ScriptExample.LoadWalkWrite in tests/unit/replay/test_examples.cpp:
+//   Script s = load_script("tests/replays/range_course.replay");  // or parse_script(text, path)
+//   for (const InputEvent& e : s.inputs) ticks.push_back(e.tick);  // in tick order
+//   std::string text = write_script(s);                           // parse(write(s)) == s
 //
 // Tick semantics: lines stamped T apply to the state after T simulation steps (Game::step
 // calls; a paused step counts although game time stands still). Checks at T look at that

@@ -1,0 +1,32 @@
+// The usage example of engine/replay/script.h's banner as a test (HeaderExamples.MatchTheirTests
+// in tests/unit/core keeps the two the same text).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <vector>
+
+#include "replay/script.h"
+
+namespace arc::replay {
+namespace {
+
+TEST(ScriptExample, LoadWalkWrite) {
+  const std::filesystem::path cwd = std::filesystem::current_path();
+  std::filesystem::current_path(ARCFIRE_SOURCE_DIR);
+  std::vector<uint64_t> ticks;
+
+  Script s = load_script("tests/replays/range_course.replay");  // or parse_script(text, path)
+  for (const InputEvent& e : s.inputs) ticks.push_back(e.tick);  // in tick order
+  std::string text = write_script(s);                           // parse(write(s)) == s
+
+  std::filesystem::current_path(cwd);
+  EXPECT_FALSE(ticks.empty());
+  EXPECT_TRUE(std::is_sorted(ticks.begin(), ticks.end()));
+  const Script again = parse_script(text, s.path);  // the canonical text is a fixed point
+  EXPECT_EQ(again.inputs.size(), s.inputs.size());
+  EXPECT_EQ(write_script(again), text);
+}
+
+}  // namespace
+}  // namespace arc::replay
