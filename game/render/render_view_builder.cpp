@@ -6,7 +6,6 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
 
-#include "game/sim/simulation.h"
 #include "game/sim/world.h"
 
 namespace arc {
