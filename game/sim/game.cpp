@@ -10,6 +10,7 @@
 #include "core/hash.h"
 #include "game/sim/effects.h"
 #include "game/sim/serialize.h"
+#include "game/sim/level_start.h"
 #include "game/sim/simulation.h"
 #include "game/sim/world.h"
 #include "core/fast_hash.h"

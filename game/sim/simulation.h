@@ -1,42 +1,21 @@
-// game/sim/simulation.h — the per-tick rules behind Game::step (internal to game/sim).
+// game/sim/simulation.h — one fixed tick of the rules behind Game::step (internal to game/sim).
 //
-// init_world() builds a World from a validated LevelDef; step_world() advances one fixed tick:
-// commands → AI and player controls → flight → particle owners → particles → beams →
-// projectiles → collisions → deaths → shields/energy → outcome → camera rig.
+// step_world() is the pipeline; each step lives in a file named for its feature:
+//   commands (commands.cpp) → controls from the player, the AI or nobody (ai.cpp) and flight
+//   (flight.cpp) per ship → collisions (collisions.cpp) → beam triggers (beams.cpp) and shots
+//   (projectiles.cpp) → projectile flight → particle owners, level effects (effects.cpp) and the
+//   particle step → exhaust glow → beam hits → projectile hits → deaths (damage.cpp) →
+//   shields and energy (shields.cpp) → outcome (outcome.cpp) → camera rig (camera_rig.cpp).
+// The World at tick 0 comes from init_world (level_start.h).
 #pragma once
 #include <vector>
 
-#include "game/sim/world.h"
+#include "game/sim/input.h"
 
 namespace arc {
 
-// Difficulty parameters (easy, normal, hard), exposed for the tests.
-struct AiTuning {
-  double aim_error;    // radians of aim scatter
-  double reaction_s;   // seconds between decisions
-  double aggression;   // 0..1: fire cone, missile use, how late it evades
-};
-AiTuning ai_tuning(int difficulty);
+class World;
 
-void init_world(World& w, LevelDef level, std::shared_ptr<const EffectLibrary> effects, const GameOptions& options);
 void step_world(World& w, const InputFrame& input, const std::vector<Command>& commands);
-
-// Flight for one ship and one tick from its `controls` (exposed for the flight tests).
-void integrate_flight(Ship& s, double dt);
-// Applies damage at a world point: shield first, then hull; records the attacker.
-void apply_damage(World& w, Ship& target, double amount, const glm::dvec3& point, int attacker);
-// Ray/segment against a sphere: smallest t in [0, 1] of a + t(b − a) on the sphere, or −1.
-double segment_sphere(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& centre, double radius);
-// The beam's first hit along a polyline: ship id (or −1) and distance along the line.
-struct BeamHit {
-  int ship = -1;
-  double distance = -1;
-  glm::dvec3 point{0.0};
-  bool on_shield = false;
-};
-BeamHit trace_beam(const World& w, int shooter, const std::vector<glm::dvec3>& polyline);
-
-glm::dquat orientation_from_degrees(const glm::dvec3& yaw_pitch_roll);
-inline glm::dvec3 forward_of(const glm::dquat& q) { return q * glm::dvec3(0, 0, -1); }
 
 }  // namespace arc

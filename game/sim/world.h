@@ -6,6 +6,7 @@
 // interpolate by alpha without the simulation knowing about frames. Particle owners: ship i is
 // owner i + 1; projectile with serial s is owner kProjectileOwnerBase + s.
 #pragma once
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -23,6 +24,11 @@ namespace arc {
 class EffectLibrary;
 
 constexpr uint32_t kProjectileOwnerBase = 1u << 24;
+inline uint32_t ship_owner(int id) { return static_cast<uint32_t>(id) + 1; }
+inline uint32_t projectile_owner(uint32_t serial) { return kProjectileOwnerBase + serial; }
+
+// The nose direction of an orientation: ship-local −Z.
+inline glm::dvec3 forward_of(const glm::dquat& q) { return q * glm::dvec3(0, 0, -1); }
 
 enum class SecondaryWeapon : uint8_t { Missile = 0, Plasma = 1 };
 enum class AiMode : uint8_t { Attack = 0, Evade = 1, BreakOff = 2 };
@@ -149,5 +155,7 @@ class World {
   bool hostile(const Ship& a, const Ship& b) const { return a.team != b.team; }
   int model_index(const std::string& path) const;
 };
+
+inline int64_t seconds_to_ticks(const World& w, double s) { return static_cast<int64_t>(std::llround(s / w.dt)); }
 
 }  // namespace arc

@@ -12,7 +12,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
 
-#include "game/sim/simulation.h"
+#include "game/sim/world.h"
 #include "test_helpers.h"
 
 namespace arc {

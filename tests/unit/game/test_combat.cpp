@@ -2,7 +2,10 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
-#include "game/sim/simulation.h"
+#include "game/sim/ai.h"
+#include "game/sim/beams.h"
+#include "game/sim/damage.h"
+#include "game/sim/geometry.h"
 #include "test_helpers.h"
 
 namespace arc {

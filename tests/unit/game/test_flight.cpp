@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
-#include "game/sim/simulation.h"
+#include "game/sim/flight.h"
 
 namespace arc {
 namespace {

@@ -3,7 +3,6 @@
 
 #include "core/error.h"
 #include "core/rng.h"
-#include "game/sim/simulation.h"
 #include "game/sim/world.h"
 #include <glm/geometric.hpp>
 #include "test_helpers.h"

@@ -1,0 +1,118 @@
+// game/sim/beams.cpp — the lightning beam: the trigger spends energy and opens one channel per
+// mount, each tick the channels are traced against ships, cut at the first hit and deal damage.
+#include "game/sim/beams.h"
+
+#include <algorithm>
+
+#include "game/sim/damage.h"
+#include "game/sim/effects.h"
+#include "game/sim/geometry.h"
+#include "game/sim/world.h"
+
+namespace arc {
+namespace {
+
+// The beam's path: the lightning channel's polyline clipped to the class's range, or a straight
+// seed line while the channel has no points yet (the tick it was spawned).
+std::vector<glm::dvec3> beam_path(const World& w, const Ship& s, size_t mount) {
+  const double range = s.cls->beam.range;
+  std::vector<glm::dvec3> pts = w.particles->lightning_points(s.beam_channels[mount]);
+  if (pts.size() < 2) {
+    glm::dvec3 origin = s.position + s.orientation * s.cls->beam.mounts[mount];
+    return {origin, origin + forward_of(s.orientation) * range};
+  }
+  double along = 0;
+  for (size_t i = 0; i + 1 < pts.size(); ++i) {
+    const double seg = safe_len(pts[i + 1] - pts[i]);
+    if (along + seg > range) {
+      pts[i + 1] = pts[i] + (pts[i + 1] - pts[i]) * ((range - along) / seg);
+      pts.resize(i + 2);
+      break;
+    }
+    along += seg;
+  }
+  return pts;
+}
+
+}  // namespace
+
+BeamHit trace_beam(const World& w, int shooter, const std::vector<glm::dvec3>& line) {
+  BeamHit best;
+  double along = 0;
+  for (size_t i = 0; i + 1 < line.size(); ++i) {
+    const glm::dvec3 a = line[i], b = line[i + 1];
+    const double seg = safe_len(b - a);
+    double best_t = 2.0;
+    for (const Ship& s : w.ships) {
+      if (!s.alive || s.id == shooter) continue;
+      // Bounding sphere first (the larger of the two), then the sphere that actually stops it.
+      const double outer = std::max(s.cls->shield_radius, s.cls->collision_radius);
+      if (segment_sphere(a, b, s.position, outer) < 0) continue;
+      const bool shield_up = s.shield > 0;
+      double t = segment_sphere(a, b, s.position, shield_up ? s.cls->shield_radius : s.cls->collision_radius);
+      if (t >= 0 && t < best_t) {
+        best_t = t;
+        best.ship = s.id;
+        best.on_shield = shield_up;
+      }
+    }
+    if (best.ship >= 0) {
+      best.point = a + (b - a) * best_t;
+      best.distance = along + seg * best_t;
+      return best;
+    }
+    along += seg;
+  }
+  return best;
+}
+
+void stop_beam(World& w, Ship& s) {
+  for (ClusterHandle ch : s.beam_channels) w.particles->destroy(ch);
+  s.beam_channels.clear();
+  s.beam_hit_distance.clear();
+  s.beam_firing = false;
+  s.beam_target = -1;
+}
+
+void update_beam_trigger(World& w, Ship& s) {
+  const BeamDef& b = s.cls->beam;
+  const bool want = (s.controls.buttons & kFirePrimary) && s.energy >= b.energy_per_second * w.dt;
+  if (!want) {
+    if (s.beam_firing) stop_beam(w, s);
+    return;
+  }
+  s.energy -= b.energy_per_second * w.dt;
+  if (s.beam_firing) return;
+  s.beam_firing = true;
+  for (const glm::dvec3& m : b.mounts)
+    s.beam_channels.push_back(w.particles->spawn_lightning(kFxLightningBeam, ship_owner(s.id), m, {0, 0, -1}));
+  s.beam_hit_distance.assign(s.beam_channels.size(), -1.0);
+}
+
+void resolve_beams(World& w) {
+  for (Ship& s : w.ships) {
+    if (!s.alive || !s.beam_firing) continue;
+    s.beam_target = -1;
+    const size_t n = s.beam_channels.size();
+    for (size_t m = 0; m < n; ++m) {
+      ClusterHandle ch = s.beam_channels[m];
+      BeamHit hit = trace_beam(w, s.id, beam_path(w, s, m));
+      s.beam_hit_distance[m] = hit.distance;
+      w.particles->cut_lightning(ch, hit.ship >= 0 ? hit.distance : s.cls->beam.range);
+      if (hit.ship < 0) continue;
+      Ship& t = w.ships[hit.ship];
+      s.beam_target = hit.ship;
+      if (w.hostile(s, t)) apply_damage(w, t, s.cls->beam.damage_per_second * w.dt / double(n), hit.point, s.id);
+      if ((w.tick + static_cast<int64_t>(m)) % 4 == 0) {
+        SpawnParams p;
+        p.position = hit.point;
+        p.velocity = t.velocity;
+        p.orientation = glm::quatLookAt(safe_norm(hit.point - t.position, glm::dvec3(0, 1, 0)), glm::dvec3(0, 1, 0.001));
+        p.priority = 0;
+        spawn_fx(w, hit.on_shield ? kFxShieldHit : kFxHullSparks, p);
+      }
+    }
+  }
+}
+
+}  // namespace arc

@@ -1,0 +1,59 @@
+// game/sim/commands.cpp — a tick's discrete commands: pause and resume, the camera toggle, the
+// player's target (next, nearest, next hostile) and secondary weapon.
+#include "game/sim/commands.h"
+
+#include "game/sim/world.h"
+
+namespace arc {
+namespace {
+
+int next_target(const World& w, int self, int current, bool hostile_only) {
+  const int n = static_cast<int>(w.ships.size());
+  for (int k = 1; k <= n; ++k) {
+    int id = ((current < 0 ? self : current) + k) % n;
+    const Ship& s = w.ships[id];
+    if (id == self || !s.alive) continue;
+    if (hostile_only && !w.hostile(w.ships[self], s)) continue;
+    return id;
+  }
+  return -1;
+}
+
+int nearest_target(const World& w, int self, bool hostile_only) {
+  int best = -1;
+  double best_d = 0;
+  const Ship& me = w.ships[self];
+  for (const Ship& s : w.ships) {
+    if (s.id == self || !s.alive) continue;
+    if (hostile_only && !w.hostile(me, s)) continue;
+    double d = glm::dot(s.position - me.position, s.position - me.position);
+    if (best < 0 || d < best_d) best = s.id, best_d = d;
+  }
+  return best;
+}
+
+}  // namespace
+
+void apply_commands(World& w, const std::vector<Command>& commands) {
+  for (Command c : commands) {
+    if (c == Command::Pause) w.paused = true;
+    if (c == Command::Resume) w.paused = false;
+    if (w.paused) continue;
+    if (c == Command::CameraToggle && w.camera_mode != CameraMode::Fixed)
+      w.camera_mode = w.camera_mode == CameraMode::Chase ? CameraMode::Cockpit : CameraMode::Chase;
+    if (w.player < 0 || !w.ships[w.player].alive) continue;
+    Ship& p = w.ships[w.player];
+    switch (c) {
+      case Command::TargetNext: p.target = next_target(w, p.id, p.target, false); break;
+      case Command::TargetNearest: p.target = nearest_target(w, p.id, false); break;
+      case Command::TargetNextHostile: p.target = next_target(w, p.id, p.target, true); break;
+      case Command::SwitchWeapon:
+        if (p.cls->missile.present && p.cls->plasma.present)
+          p.secondary = p.secondary == SecondaryWeapon::Missile ? SecondaryWeapon::Plasma : SecondaryWeapon::Missile;
+        break;
+      default: break;
+    }
+  }
+}
+
+}  // namespace arc

@@ -1,0 +1,74 @@
+// game/sim/damage.cpp — damage (shield first, then hull), deaths, explosions and splash damage.
+#include "game/sim/damage.h"
+
+#include <algorithm>
+
+#include "game/sim/beams.h"
+#include "game/sim/effects.h"
+#include "game/sim/geometry.h"
+#include "game/sim/shields.h"
+#include "game/sim/world.h"
+
+namespace arc {
+namespace {
+
+constexpr double kExplosionMemorySeconds = 1.0;
+
+void kill_ship(World& w, Ship& s) {
+  s.alive = false;
+  s.death_tick = w.tick;
+  s.hull = 0;
+  stop_beam(w, s);
+  w.particles->destroy_owner(ship_owner(s.id));
+  s.shield_fx = {};
+  s.exhaust_fx.clear();
+  SpawnParams p;
+  p.position = s.position;
+  p.velocity = s.velocity;
+  p.scale = s.cls->collision_radius / 8.0;
+  p.priority = 2;
+  spawn_fx(w, kFxShipExplosion, p);
+  w.explosions.push_back({s.position, w.tick, s.cls->collision_radius * 6.0});
+  if (s.last_attacker >= 0 && s.last_attacker != s.id) w.ships[s.last_attacker].kills++;
+  if (!w.level.splash) return;
+  for (Ship& o : w.ships) {
+    if (!o.alive) continue;
+    double d = safe_len(o.position - s.position);
+    if (d >= w.level.splash_radius) continue;
+    double falloff = 1.0 - d / w.level.splash_radius;
+    apply_damage(w, o, w.level.splash_damage * falloff, o.position, s.last_attacker);
+  }
+}
+
+}  // namespace
+
+void apply_damage(World& w, Ship& t, double amount, const glm::dvec3& point, int attacker) {
+  if (!t.alive || amount <= 0) return;
+  t.last_hit_tick = w.tick;
+  if (attacker >= 0) t.last_attacker = attacker;
+  double to_shield = std::min(t.shield, amount);
+  t.shield -= to_shield;
+  t.hull -= amount - to_shield;
+  if (to_shield > 0 && !t.shield_fx.clusters.empty()) {
+    if (t.shield_flash_tick != w.tick)
+      for (ClusterHandle ch : t.shield_fx.clusters) w.particles->flash(ch, point, kFlashSeconds);
+    t.shield_flash_tick = w.tick;
+  }
+}
+
+void resolve_deaths(World& w) {
+  // Splash damage can kill more ships; repeat until nothing changes, always in id order.
+  bool again = true;
+  while (again) {
+    again = false;
+    for (Ship& s : w.ships)
+      if (s.alive && s.hull <= 0) kill_ship(w, s), again = true;
+  }
+  for (Ship& s : w.ships)
+    if (s.target >= 0 && !w.ships[s.target].alive) s.target = -1;
+  std::erase_if(w.explosions, [&](const ExplosionEvent& e) {
+    return w.tick - e.tick > seconds_to_ticks(w, kExplosionMemorySeconds);
+  });
+}
+
+}  // namespace arc

@@ -1,0 +1,16 @@
+// game/sim/damage.h — damage and deaths (game/sim/damage.cpp).
+#pragma once
+#include <glm/vec3.hpp>
+
+namespace arc {
+
+class World;
+struct Ship;
+
+// Applies damage at a world point: shield first, then hull; records the attacker.
+void apply_damage(World& w, Ship& target, double amount, const glm::dvec3& point, int attacker);
+// Ships without hull explode (splash damage may take others with them); stale targets and old
+// explosions are cleared.
+void resolve_deaths(World& w);
+
+}  // namespace arc

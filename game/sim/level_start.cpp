@@ -1,0 +1,110 @@
+// game/sim/level_start.cpp — the World at tick 0: settings, the particle world, ships and props
+// from the level, the camera rig, and each ship's shield sphere and engine exhausts.
+#include "game/sim/level_start.h"
+
+#include <algorithm>
+
+#include "core/error.h"
+#include "game/sim/camera_rig.h"
+#include "game/sim/effects.h"
+#include "game/sim/geometry.h"
+#include "game/sim/shields.h"
+#include "game/sim/world.h"
+
+namespace arc {
+namespace {
+
+// A model's index in World::model_paths, added on first use (the renderer loads only these).
+int add_model(World& w, const std::string& path) {
+  for (size_t i = 0; i < w.model_paths.size(); ++i)
+    if (w.model_paths[i] == path) return static_cast<int>(i);
+  w.model_paths.push_back(path);
+  return static_cast<int>(w.model_paths.size() - 1);
+}
+
+void add_ships(World& w) {
+  for (const ShipSpawnDef& d : w.level.ships) {
+    Ship s;
+    s.id = static_cast<int>(w.ships.size());
+    s.name = d.name;
+    s.team = d.team;
+    s.cls = &w.level.classes.at(d.ship_class);
+    s.class_index = static_cast<int>(std::find(w.class_names.begin(), w.class_names.end(), d.ship_class) - w.class_names.begin());
+    s.model = add_model(w, s.cls->model);
+    s.player = d.player;
+    s.ai = d.ai;
+    s.position = s.prev_position = d.position;
+    s.orientation = s.prev_orientation = orientation_from_degrees(d.orientation_deg);
+    s.velocity = d.velocity;
+    s.hull = s.cls->hull;
+    s.shield = s.cls->shield;
+    s.energy = s.cls->energy;
+    if (!s.cls->missile.present && s.cls->plasma.present) s.secondary = SecondaryWeapon::Plasma;
+    if (d.player) w.player = s.id;
+    w.ships.push_back(std::move(s));
+  }
+}
+
+void add_props(World& w) {
+  for (const PropDef& d : w.level.props) {
+    Prop p;
+    p.model = add_model(w, d.model);
+    p.label = d.label;
+    p.position = d.position;
+    p.orientation = orientation_from_degrees(d.orientation_deg);
+    p.scale = d.scale;
+    p.radius = d.radius;
+    w.props.push_back(std::move(p));
+  }
+}
+
+void attach_ship_effects(World& w) {
+  for (Ship& s : w.ships) {
+    // Spawned at full intensity: the burst's particle count is scaled by the intensity of the
+    // first particle step, after which update_shields_and_energy() dims it to what it shows.
+    if (s.cls->shield > 0) spawn_shield(w, s, 4);
+    for (const glm::dvec3& e : s.cls->exhausts) {
+      SpawnParams ep;
+      ep.owner = ship_owner(s.id);
+      ep.position = e;
+      ep.orientation = glm::angleAxis(kPi, glm::dvec3(0, 1, 0));  // exhaust cone points backwards (+Z)
+      ep.scale = s.cls->collision_radius / 8.0;
+      ep.priority = 0;
+      s.exhaust_fx.push_back(spawn_fx(w, kFxEngineExhaust, ep));
+    }
+  }
+}
+
+}  // namespace
+
+void init_world(World& w, LevelDef level, std::shared_ptr<const EffectLibrary> effects, const GameOptions& o) {
+  w.options = o;
+  w.level = std::move(level);
+  w.seed = o.seed_override ? o.seed : w.level.seed;
+  w.difficulty = o.difficulty_override ? static_cast<int>(o.difficulty) : w.level.difficulty;
+  w.dt = 1.0 / w.level.tick_rate;
+  for (const auto& [name, cls] : w.level.classes) w.class_names.push_back(name);
+  w.effects = std::move(effects);
+  ParticleConfig pc;
+  pc.seed = w.seed;
+  pc.budget = o.particle_budget;
+  pc.lightning_interval = o.lightning_interval;
+  pc.tick_seconds = w.dt;
+  w.particles = std::make_unique<ParticleWorld>(pc, w.effects.get());
+  add_ships(w);
+  add_props(w);
+  w.camera_mode = w.level.camera.mode == "cockpit" ? CameraMode::Cockpit
+                  : w.level.camera.mode == "fixed" ? CameraMode::Fixed
+                                                   : CameraMode::Chase;
+  if (int f = w.focus_ship(); f >= 0) w.camera.orientation = w.ships[f].orientation;
+  update_camera(w);
+  w.prev_camera = w.camera;
+  publish_owner_transforms(w);
+  try {
+    attach_ship_effects(w);
+  } catch (const InputError& e) {
+    throw InputError(w.level.path + ": " + e.what());
+  }
+}
+
+}  // namespace arc

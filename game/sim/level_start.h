@@ -1,0 +1,17 @@
+// game/sim/level_start.h — a World built from a level (game/sim/level_start.cpp).
+#pragma once
+#include <memory>
+
+#include "game/sim/defs.h"
+#include "game/sim/game.h"
+
+namespace arc {
+
+class EffectLibrary;
+class World;
+
+// Ships, props, the particle world, the camera rig and the ships' shields and exhausts, from a
+// validated LevelDef. A level naming an effect the library lacks throws InputError.
+void init_world(World& w, LevelDef level, std::shared_ptr<const EffectLibrary> effects, const GameOptions& options);
+
+}  // namespace arc

@@ -1,0 +1,63 @@
+// game/sim/outcome.cpp — victory, defeat or the winning team, by the level's win and lose rules.
+#include "game/sim/outcome.h"
+
+#include <algorithm>
+
+#include "game/sim/world.h"
+
+namespace arc {
+namespace {
+
+void decide(World& w, Outcome o, const std::string& winner) {
+  w.outcome = o;
+  w.winner = winner;
+  w.outcome_tick = w.tick;
+}
+
+std::string first_live_team(const World& w, const std::string& except) {
+  for (const Ship& s : w.ships)
+    if (s.alive && s.team != except) return s.team;
+  return "none";
+}
+
+}  // namespace
+
+void update_outcome(World& w) {
+  if (w.outcome != Outcome::Undecided) return;
+  const LevelDef& L = w.level;
+  const Ship* player = w.player >= 0 ? &w.ships[w.player] : nullptr;
+  const std::string side = player ? player->team : w.ships.front().team;
+  if (L.lose == LoseKind::PlayerDestroyed && player && !player->alive)
+    return decide(w, Outcome::Defeat, first_live_team(w, side));
+  if (L.lose == LoseKind::Protect) {
+    for (const Ship& s : w.ships)
+      if (s.name == L.protect_ship && !s.alive) return decide(w, Outcome::Defeat, first_live_team(w, side));
+  }
+  switch (L.win) {
+    case WinKind::DestroyAllHostiles: {
+      bool any = false, friends = false;
+      for (const Ship& s : w.ships) {
+        any = any || (s.alive && s.team != side);
+        friends = friends || (s.alive && s.team == side);
+      }
+      if (!any) decide(w, player ? Outcome::Victory : Outcome::TeamWon, side);
+      else if (!friends) decide(w, player ? Outcome::Defeat : Outcome::TeamWon, first_live_team(w, side));
+      break;
+    }
+    case WinKind::SurviveTicks:
+      if (w.tick >= L.win_ticks) decide(w, player ? Outcome::Victory : Outcome::TeamWon, side);
+      break;
+    case WinKind::LastTeamStanding: {
+      std::vector<std::string> teams;
+      for (const Ship& s : w.ships)
+        if (s.alive && std::find(teams.begin(), teams.end(), s.team) == teams.end()) teams.push_back(s.team);
+      if (teams.size() > 1) break;
+      std::string winner = teams.empty() ? "none" : teams.front();
+      if (player) decide(w, player->team == winner ? Outcome::Victory : Outcome::Defeat, winner);
+      else decide(w, Outcome::TeamWon, winner);
+      break;
+    }
+  }
+}
+
+}  // namespace arc

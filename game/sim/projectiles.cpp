@@ -1,0 +1,111 @@
+// game/sim/projectiles.cpp — the secondary weapons: missiles (homing, their smoke stays behind)
+// and plasma bolts, from the shot through flight to a hit or expiry.
+#include "game/sim/projectiles.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "game/sim/damage.h"
+#include "game/sim/effects.h"
+#include "game/sim/geometry.h"
+#include "game/sim/world.h"
+
+namespace arc {
+namespace {
+
+void end_projectile(World& w, Projectile& p) {
+  if (p.kind == SecondaryWeapon::Missile) {
+    // The smoke stays behind and fades; the flame goes with the missile.
+    w.particles->release_owner(projectile_owner(p.serial));
+  } else {
+    w.particles->destroy_owner(projectile_owner(p.serial));
+  }
+}
+
+}  // namespace
+
+void fire_secondary(World& w, Ship& s) {
+  s.secondary_cooldown = std::max(0.0, s.secondary_cooldown - w.dt);
+  if (!(s.controls.buttons & kFireSecondary)) return;
+  const bool plasma = s.secondary == SecondaryWeapon::Plasma;
+  const ProjectileWeaponDef& wd = plasma ? s.cls->plasma : s.cls->missile;
+  if (!wd.present || s.secondary_cooldown > 0 || s.energy < wd.energy) return;
+  s.energy -= wd.energy;
+  s.secondary_cooldown = wd.cooldown;
+  const glm::dvec3 hp = wd.hardpoints[s.hardpoint_cycle++ % wd.hardpoints.size()];
+  Projectile p;
+  p.serial = w.next_projectile_serial++;
+  p.kind = s.secondary;
+  p.owner = s.id;
+  p.target = plasma ? -1 : s.target;
+  if (p.target >= 0 && !w.hostile(s, w.ships[p.target])) p.target = -1;
+  p.position = p.prev_position = s.position + s.orientation * hp;
+  p.velocity = s.velocity + forward_of(s.orientation) * wd.speed;
+  p.damage = wd.damage;
+  p.turn_rate = wd.turn_rate * kDeg;
+  p.hit_radius = wd.hit_radius;
+  p.expire_tick = w.tick + std::max<int64_t>(1, seconds_to_ticks(w, wd.lifetime));
+  set_owner(w, projectile_owner(p.serial), p.position, s.orientation, p.velocity);
+  SpawnParams sp;
+  sp.owner = projectile_owner(p.serial);
+  p.trail = spawn_fx(w, plasma ? kFxPlasmaBolt : kFxMissileTrail, sp);
+  w.projectiles.push_back(std::move(p));
+}
+
+void move_projectiles(World& w) {
+  for (Projectile& p : w.projectiles) {
+    p.prev_position = p.position;
+    if (p.kind == SecondaryWeapon::Missile && p.target >= 0 && w.ships[p.target].alive) {
+      const double speed = safe_len(p.velocity);
+      glm::dvec3 dir = safe_norm(p.velocity, glm::dvec3(0, 0, -1));
+      glm::dvec3 want = safe_norm(w.ships[p.target].position - p.position, dir);
+      double angle = std::acos(std::clamp(glm::dot(dir, want), -1.0, 1.0));
+      double step = p.turn_rate * w.dt;
+      if (angle > 1e-9) {
+        glm::dvec3 axis = safe_norm(glm::cross(dir, want), glm::dvec3(0, 1, 0));
+        dir = glm::angleAxis(std::min(angle, step), axis) * dir;
+      }
+      p.velocity = dir * speed;
+    }
+    p.position += p.velocity * w.dt;
+    glm::dquat q = glm::quatLookAt(safe_norm(p.velocity, glm::dvec3(0, 0, -1)), glm::dvec3(0, 1, 0.001));
+    set_owner(w, projectile_owner(p.serial), p.position, q, p.velocity);
+  }
+}
+
+void hit_projectiles(World& w) {
+  size_t keep = 0;
+  for (size_t i = 0; i < w.projectiles.size(); ++i) {
+    Projectile& p = w.projectiles[i];
+    int hit_ship = -1;
+    double best_t = 2.0;
+    bool on_shield = false;
+    for (const Ship& s : w.ships) {
+      if (!s.alive || s.id == p.owner) continue;
+      const bool shield_up = s.shield > 0;
+      double r = (shield_up ? s.cls->shield_radius : s.cls->collision_radius) + p.hit_radius;
+      double t = segment_sphere(p.prev_position, p.position, s.position, r);
+      if (t >= 0 && t < best_t) best_t = t, hit_ship = s.id, on_shield = shield_up;
+    }
+    if (hit_ship >= 0) {
+      Ship& t = w.ships[hit_ship];
+      glm::dvec3 point = p.prev_position + (p.position - p.prev_position) * best_t;
+      SpawnParams sp;
+      sp.position = point;
+      sp.velocity = t.velocity;
+      spawn_fx(w, on_shield ? kFxShieldHit : kFxHullSparks, sp);
+      if (w.hostile(w.ships[p.owner], t)) apply_damage(w, t, p.damage, point, p.owner);
+      end_projectile(w, p);
+      continue;
+    }
+    if (w.tick >= p.expire_tick) {
+      end_projectile(w, p);
+      continue;
+    }
+    if (keep != i) w.projectiles[keep] = std::move(p);
+    ++keep;
+  }
+  w.projectiles.resize(keep);
+}
+
+}  // namespace arc
