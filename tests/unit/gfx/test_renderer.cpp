@@ -715,19 +715,5 @@ TEST(Renderer, BakedSkyMatchesTheExactNebula) {
   EXPECT_GT(coarse, 2.0f * fine) << "a coarser cube map is measurably less exact";
 }
 
-TEST(RadixSort, BackToFrontAndStable) {
-  std::vector<uint32_t> keys = {5, 0x80000000u, 5, 7, 0, 0xFFFFFFFFu, 300, 70000};
-  std::vector<uint32_t> order;
-  radix_sort_back_to_front(keys, order);
-  ASSERT_EQ(order.size(), keys.size());
-  for (size_t i = 1; i < order.size(); ++i) {
-    EXPECT_GE(keys[order[i - 1]], keys[order[i]]);
-    if (keys[order[i - 1]] == keys[order[i]]) {
-      EXPECT_LT(order[i - 1], order[i]);
-    }
-  }
-  EXPECT_EQ(order.front(), 5u);
-}
-
 }  // namespace
 }  // namespace arc
