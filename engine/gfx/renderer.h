@@ -9,12 +9,15 @@
 // renderer.cpp. Depth is reversed-Z with a float buffer when clip control exists, standard
 // otherwise. All positions reach the GPU relative to the camera (double subtraction, then float).
 //
-//   Renderer r({.offscreen = true});
-//   int ship = r.add_model(load_model("assets/models/ship.glb"));
-//   r.set_sprites({load_sprite("assets/sprites/smoke.png")});
-//   r.apply_settings(settings);
-//   r.render(view, 1280, 720);
-//   Image frame = r.read_pixels();
+// example: tests/unit/gfx/test_examples.cpp, RendererExample.DrawsAView
+//   Renderer renderer({.offscreen = true});
+//   int ship = renderer.add_model(load_model(ARCFIRE_SOURCE_DIR "/assets/models/viper.glb"));
+//   RenderView view;
+//   view.meshes.push_back({ship, {0, 0, -20}});
+//   renderer.set_sprites({load_sprite(ARCFIRE_SOURCE_DIR "/assets/textures/sprite_smoke.png")});
+//   renderer.apply_settings(Settings::defaults());
+//   renderer.render(view, 640, 360);
+//   Image frame = renderer.read_pixels();
 #pragma once
 #include <cstdint>
 #include <memory>

@@ -1,6 +1,8 @@
 // Shared pieces of the renderer tests: one EGL context per process, settings, image access.
 // The models, sprites and particles scenes are built from are in tests/scenes/scene_models.h.
 #pragma once
+#include <gtest/gtest.h>
+
 #include <memory>
 #include <string>
 
@@ -20,3 +22,9 @@ float channel(const Image& img, int x, int y, int c);  // 0..1
 
 }  // namespace arc::test
 
+// Skips the test, with the reason, when no EGL context can be made.
+#define REQUIRE_CONTEXT()                                                    \
+  do {                                                                       \
+    std::string why;                                                         \
+    if (!::arc::test::headless(why)) GTEST_SKIP() << "no EGL context: " << why; \
+  } while (0)

@@ -18,12 +18,6 @@ namespace {
 using test::channel;
 using scenes::particle;
 
-#define REQUIRE_CONTEXT()                                 \
-  do {                                                    \
-    std::string why;                                      \
-    if (!test::headless(why)) GTEST_SKIP() << "no EGL context: " << why; \
-  } while (0)
-
 RenderView base_view() {
   RenderView v;
   v.camera.position = {0, 0, 0};
