@@ -1,3 +1,4 @@
+// gfx/cover_boxes.cpp — median splits of a model's triangles into tight boxes (no GL).
 #include "gfx/cover_boxes.h"
 
 #include <algorithm>

@@ -1,6 +1,7 @@
 // Boxes that cover a model's triangles more tightly than its one bounding box: the renderer's
-// soft-edge reach test (renderer.cpp, soft_can_matter) asks whether an opaque surface can lie
-// near a particle, and a fighter's single box is mostly the empty space between its wings.
+// soft-edge reach test (particle_occluders.h, OccluderSet::soft_can_matter) asks whether an
+// opaque surface can lie near a particle, and a fighter's single box is mostly the empty space
+// between its wings.
 // No GL here, so it is tested on its own.
 #pragma once
 #include <vector>
@@ -22,5 +23,8 @@ struct Box3 {
 // or fewer triangles is not split. Empty when there are no triangles; indices out of range
 // are skipped.
 std::vector<Box3> cover_boxes(const std::vector<MeshPrimitive>& prims, int levels);
+
+// cover_boxes() of each model the renderer holds, indexed like MeshInstance::model.
+using ModelCoverBoxes = std::vector<std::vector<Box3>>;
 
 }  // namespace arc

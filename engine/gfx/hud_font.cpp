@@ -1,3 +1,4 @@
+// gfx/hud_font.cpp — HUD quads, lines and text as triangles over Dear ImGui's font atlas.
 #include "gfx/hud_font.h"
 
 #include <cmath>

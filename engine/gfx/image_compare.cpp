@@ -1,3 +1,4 @@
+// gfx/image_compare.cpp — golden-image tolerance rule, summary and failure images (no GL).
 #include "gfx/image_compare.h"
 
 #include <algorithm>

@@ -2,7 +2,20 @@
 //
 // The game (game/render) fills a RenderView from interpolated simulation state; the renderer
 // never sees the game. World positions are double; the renderer subtracts the camera position
-// in double before converting to float.
+// in double before converting to float. Particles arrive already camera-relative, in float.
+//
+// example: tests/unit/gfx/test_examples.cpp, RenderViewExample.DescribesAFrame
+//   RenderView view;
+//   view.camera.position = {0.0, 2.0, 30.0};
+//   view.camera.fov_y_radians = 1.0;
+//   view.meshes.push_back({.model = 0, .position = {0.0, 0.0, 0.0}});  // the first Renderer::add_model()
+//   ParticleInstance spark{};
+//   spark.pos[2] = -30.0f;                   // relative to the camera: 30 units ahead
+//   spark.size = 0.5f;
+//   spark.color[0] = spark.color[3] = 1.0f;  // rgb premultiplied by alpha, then alpha
+//   spark.burn = 1.0f;                       // additive
+//   view.particles.push_back(spark);
+//   view.hud.texts.push_back({8, 8, 1.0f, {1, 1, 1, 1}, "SHIELD 100"});
 #pragma once
 #include <cstdint>
 #include <string>
@@ -24,7 +37,7 @@ struct CameraView {
 };
 
 struct MeshInstance {
-  int model = -1;  // index in the renderer's model table (Renderer::load_model)
+  int model = -1;  // index in the renderer's model table (returned by Renderer::add_model)
   glm::dvec3 position{0.0};
   glm::dquat orientation{1, 0, 0, 0};
   double scale = 1.0;

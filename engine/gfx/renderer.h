@@ -1,27 +1,23 @@
-// gfx/renderer.h — the OpenGL 3.3 renderer: starfield, lit glTF meshes, particles, HUD.
+// gfx/renderer.h — the OpenGL 3.3 renderer: sky, lit glTF meshes, particles, HUD.
 //
 // Needs a current GL context (platform/ makes one: a GLFW window or EGL headless). Each frame
 // draws into an internal scene framebuffer at the window size × render.scale, then resolves it
 // to the window (default framebuffer) or, with RendererDesc::offscreen, to an RGBA8 target that
-// read_pixels() returns.
+// read_pixels() returns. The frame is a fixed sequence of passes, one file pair each (sky_pass,
+// mesh_pass, particle_batch + particle_pass, hud_pass over render_targets, shader_programs and
+// gpu_timers); which pass reads what the previous one wrote is stated once, at the top of
+// renderer.cpp. Depth is reversed-Z with a float buffer when clip control exists, standard
+// otherwise. All positions reach the GPU relative to the camera (double subtraction, then float).
 //
-// Passes per frame (see DESIGN.md "Rendering"):
-//   1. starfield at infinity (procedural, keyed by RenderView::starfield_seed)
-//   2. opaque meshes (directional light + ambient + emissive, tint, flash)
-//   3. depth copy: glBlitFramebuffer of THIS frame's depth into a depth texture, only when a
-//      visible particle uses soft edges
-//   4. particles: one instanced draw, quads built in the vertex shader, controlled-additive
-//      blending (Ilmonen 2006 §4), soft edges (§3, Lorach, Krazanowski), back-to-front radix sort
-//   5. HUD quads, lines and text in pixels
-// Depth is reversed-Z with a float buffer when clip control exists, standard otherwise. All
-// positions reach the GPU relative to the camera (double subtraction, then float).
-//
-//   Renderer r({.offscreen = true});
-//   int ship = r.add_model(load_model("assets/models/ship.glb"));
-//   r.set_sprites({load_sprite("assets/sprites/smoke.png")});
-//   r.apply_settings(settings);
-//   r.render(view, 1280, 720);
-//   Image frame = r.read_pixels();
+// example: tests/unit/gfx/test_examples.cpp, RendererExample.DrawsAView
+//   Renderer renderer({.offscreen = true});
+//   int ship = renderer.add_model(load_model(ARCFIRE_SOURCE_DIR "/assets/models/viper.glb"));
+//   RenderView view;
+//   view.meshes.push_back({ship, {0, 0, -20}});
+//   renderer.set_sprites({load_sprite(ARCFIRE_SOURCE_DIR "/assets/textures/sprite_smoke.png")});
+//   renderer.apply_settings(Settings::defaults());
+//   renderer.render(view, 640, 360);
+//   Image frame = renderer.read_pixels();
 #pragma once
 #include <cstdint>
 #include <memory>
@@ -30,6 +26,7 @@
 
 #include "assets/model.h"
 #include "core/settings.h"
+#include "gfx/render_settings.h"
 #include "gfx/render_view.h"
 
 namespace arc {
@@ -61,21 +58,6 @@ struct FrameStats {
   double particle_gpu_ms = -1; // GL_TIME_ELAPSED of the particle pass of an earlier frame; −1 if unknown
   long long particle_fragments = -1;  // samples the particle draw blended (count_particle_fragments); −1 if not counted
   double particle_pass_gpu_ms = -1;   // GL_TIME_ELAPSED of this frame's particle pass (time_gpu_passes); −1 if not timed
-};
-
-// Depth mode and settings as the renderer applies them (after falling back where unsupported).
-struct RenderSettings {
-  int soft_override = -1;  // −1: each particle's own SoftEdge; otherwise a SoftEdge value for all
-  enum class Sorting { Off, Cluster, Full } sorting = Sorting::Full;
-  bool reversed_z = true;
-  bool infinite_far = true;
-  enum class Filter { Nearest, Linear, Mipmap } filter = Filter::Mipmap;
-  double scale = 1.0;
-  float size_clamp = 0.5f;
-  float near_fade = 2.0f;
-  float contrast_power = 2.0f;
-  bool sky_exact = false;    // the nebula evaluated per pixel every frame, not looked up in a baked cube map
-  int sky_resolution = 256;  // texels along a face of the baked cube map (16..1024)
 };
 
 class Renderer {
@@ -123,9 +105,5 @@ class Renderer {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
-
-// Back-to-front order by 32-bit depth keys (larger distance first), an LSD radix sort in
-// four 8-bit passes; stable, so equal keys keep their input order. Exposed for tests.
-void radix_sort_back_to_front(const std::vector<uint32_t>& keys, std::vector<uint32_t>& order);
 
 }  // namespace arc

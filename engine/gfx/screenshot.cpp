@@ -1,3 +1,4 @@
+// gfx/screenshot.cpp — the window's back buffer read into an Image for F12.
 #include "gfx/screenshot.h"
 
 #include <epoxy/gl.h>

@@ -32,23 +32,12 @@
 #include "core/rng.h"
 #include "gfx/renderer.h"
 #include "platform/platform.h"
+#include "scene_models.h"
 
 namespace arc {
 namespace {
 
 constexpr int kWidth = 1280, kHeight = 720;
-
-ModelData wall(float w, float h) {
-  ModelData m;
-  MeshPrimitive p;
-  p.positions = {{-w / 2, -h / 2, 0}, {w / 2, -h / 2, 0}, {w / 2, h / 2, 0}, {-w / 2, h / 2, 0}};
-  p.normals.assign(4, glm::vec3(0, 0, 1));
-  p.indices = {0, 1, 2, 0, 2, 3};
-  p.material = 0;
-  m.primitives.push_back(p);
-  m.materials.push_back({glm::vec4(0.45f, 0.47f, 0.5f, 1), glm::vec3(0.02f), -1, -1});
-  return m;
-}
 
 // A wall of effects: smoke (alpha), fire (half burn), sparks and beams (additive), every soft
 // method, all within a few units of a wall that fills the screen, some behind it.
@@ -65,21 +54,12 @@ RenderView wall_stress(int wall_model) {
     float cx = -12.0f + 3.4f * effect;
     glm::vec3 pos(cx + float(rng.range(i * 8, -1.6, 1.6)), float(rng.range(i * 8 + 1, -3.0, 6.0)),
                   -6.0f + float(rng.range(i * 8 + 2, -1.2, 3.0)));
-    ParticleInstance p{};
-    glm::vec3 rel = pos - glm::vec3(v.camera.position);
-    p.pos[0] = rel.x;
-    p.pos[1] = rel.y;
-    p.pos[2] = rel.z;
-    p.size = float(rng.range(i * 8 + 3, 0.25, 0.7));
-    float alpha = float(rng.range(i * 8 + 4, 0.3, 0.8));
+    const float size = float(rng.range(i * 8 + 3, 0.25, 0.7));
+    const float alpha = float(rng.range(i * 8 + 4, 0.3, 0.8));
     glm::vec3 rgb = effect < 3 ? glm::vec3(0.5f, 0.5f, 0.55f) : effect < 6 ? glm::vec3(1.0f, 0.55f, 0.2f) : glm::vec3(0.6f, 0.8f, 1.0f);
-    p.color[0] = rgb.r * alpha;
-    p.color[1] = rgb.g * alpha;
-    p.color[2] = rgb.b * alpha;
-    p.color[3] = alpha;
-    p.burn = effect < 3 ? 0.0f : effect < 6 ? 0.5f : 1.0f;
+    const float burn = effect < 3 ? 0.0f : effect < 6 ? 0.5f : 1.0f;
+    ParticleInstance p = scenes::particle(pos - glm::vec3(v.camera.position), size, rgb, alpha, burn, SoftEdge(effect % 5));
     p.sprite = uint16_t(effect < 3 ? 0 : effect < 6 ? 1 : 2);
-    p.soft_edge = uint8_t(effect % 5);
     p.cluster = uint32_t(effect);
     if (effect >= 6) {
       p.billboard = uint8_t(Billboard::AxisLocked);
@@ -323,7 +303,7 @@ ARCFIRE_SCENE(render_particle_gallery) {
               gallery.meshes.size());
   report(measure(r, gallery, env), "");
 
-  RenderView stress = wall_stress(r.add_model(wall(60, 30)));
+  RenderView stress = wall_stress(r.add_model(scenes::wall_model(60, 30, {0.45f, 0.47f, 0.5f, 1}, glm::vec3(0.02f))));
   if (const char* dir = std::getenv("ARCFIRE_GFX_DUMP")) {
     r.render(stress, kWidth, kHeight);
     save_image(std::string(dir) + "/bench_wall_stress.png", r.read_pixels());

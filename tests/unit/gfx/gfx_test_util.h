@@ -1,30 +1,30 @@
-// Shared scene pieces for the renderer tests: one EGL context per process, a wall and box
-// model, a soft round sprite, and particle construction with premultiplied colour.
+// Shared pieces of the renderer tests: one EGL context per process, settings, image access.
+// The models, sprites and particles scenes are built from are in tests/scenes/scene_models.h.
 #pragma once
+#include <gtest/gtest.h>
+
 #include <memory>
 #include <string>
 
 #include "assets/model.h"
 #include "gfx/renderer.h"
 #include "platform/platform.h"
+#include "scene_models.h"
 
 namespace arc::test {
 
 // The process-wide headless context, or nullptr with the reason in `why`.
 HeadlessContext* headless(std::string& why);
 
-// A w×h rectangle in the XY plane facing +Z, centred at the origin; lit only by `emissive`
-// when base is black, which gives tests exactly known background colours.
-ModelData wall_model(float w, float h, glm::vec4 base, glm::vec3 emissive);
-ModelData box_model(glm::vec3 half, glm::vec4 base, glm::vec3 emissive);
-Image soft_sprite(int size);  // premultiplied radial falloff
-
-// Straight rgb and alpha in; stored premultiplied as render_output.h requires.
-ParticleInstance particle(glm::vec3 pos, float size, glm::vec3 rgb, float alpha, float burn,
-                          SoftEdge soft = SoftEdge::Off);
-
 RenderSettings plain_settings();  // no near fade, full sort, given depth mode defaults
 void dump_if_asked(const std::string& name, const Image& img);  // $ARCFIRE_GFX_DUMP/<name>.png
 float channel(const Image& img, int x, int y, int c);  // 0..1
 
 }  // namespace arc::test
+
+// Skips the test, with the reason, when no EGL context can be made.
+#define REQUIRE_CONTEXT()                                                    \
+  do {                                                                       \
+    std::string why;                                                         \
+    if (!::arc::test::headless(why)) GTEST_SKIP() << "no EGL context: " << why; \
+  } while (0)

@@ -1,3 +1,5 @@
+// image_compare: the golden tolerance rule (max channel difference, fraction of pixels), size
+// mismatches and the amplified difference image. No GL context needed.
 #include <gtest/gtest.h>
 
 #include "gfx/image_compare.h"

@@ -16,13 +16,7 @@ namespace arc {
 namespace {
 
 using test::channel;
-using test::particle;
-
-#define REQUIRE_CONTEXT()                                 \
-  do {                                                    \
-    std::string why;                                      \
-    if (!test::headless(why)) GTEST_SKIP() << "no EGL context: " << why; \
-  } while (0)
+using scenes::particle;
 
 RenderView base_view() {
   RenderView v;
@@ -61,8 +55,8 @@ TEST(Renderer, BurnBlendMatchesEquation3) {
   const glm::vec3 bgs[] = {{0.2f, 0.4f, 0.6f}, {0.9f, 0.1f, 0.3f}};
   const glm::vec3 fg(0.8f, 0.5f, 0.1f);
   const float alpha = 0.6f;
-  int wall_models[2] = {r->add_model(test::wall_model(100, 100, {0, 0, 0, 1}, bgs[0])),
-                        r->add_model(test::wall_model(100, 100, {0, 0, 0, 1}, bgs[1]))};
+  int wall_models[2] = {r->add_model(scenes::wall_model(100, 100, {0, 0, 0, 1}, bgs[0])),
+                        r->add_model(scenes::wall_model(100, 100, {0, 0, 0, 1}, bgs[1]))};
   for (int b = 0; b < 2; ++b)
     for (float burn : {0.0f, 0.25f, 0.5f, 1.0f}) {
       RenderView v = base_view();
@@ -95,7 +89,7 @@ struct CutScene {
 CutScene cut_scene(Renderer& r, SoftEdge soft) {
   CutScene s;
   s.view = base_view();
-  int wall = r.add_model(test::wall_model(60, 60, {0, 0, 0, 1}, glm::vec3(0.05f, 0.05f, 0.1f)));
+  int wall = r.add_model(scenes::wall_model(60, 60, {0, 0, 0, 1}, glm::vec3(0.05f, 0.05f, 0.1f)));
   s.view.meshes.push_back({wall, {0, 0, -12}, glm::angleAxis(glm::radians(60.0), glm::dvec3(0, 1, 0))});
   s.view.particles.push_back(particle({0, 0, -12}, 3.0f, glm::vec3(1.0f, 0.8f, 0.5f), 0.9f, 0.0f, soft));
   return s;
@@ -112,7 +106,7 @@ float largest_step_along_row(const Image& img, int y) {
 TEST(Renderer, SoftEdgesRemoveTheHardCut) {
   REQUIRE_CONTEXT();
   auto r = make_renderer();
-  r->set_sprites({test::soft_sprite(64)});
+  r->set_sprites({scenes::soft_sprite(64)});
   CutScene hard = cut_scene(*r, SoftEdge::Off);
   r->render(hard.view, hard.width, hard.height);
   Image hard_img = r->read_pixels();
@@ -157,9 +151,9 @@ RenderView offset_scene(Renderer& r, int wall, int box, glm::dvec3 offset) {
 TEST(Renderer, LargeCoordinatesRenderLikeTheOrigin) {
   REQUIRE_CONTEXT();
   auto r = make_renderer();
-  r->set_sprites({test::soft_sprite(64)});
-  int wall = r->add_model(test::wall_model(80, 80, {0.5f, 0.5f, 0.55f, 1}, glm::vec3(0)));
-  int box = r->add_model(test::box_model({1.5f, 1.0f, 2.5f}, {0.7f, 0.3f, 0.2f, 1}, glm::vec3(0.05f)));
+  r->set_sprites({scenes::soft_sprite(64)});
+  int wall = r->add_model(scenes::wall_model(80, 80, {0.5f, 0.5f, 0.55f, 1}, glm::vec3(0)));
+  int box = r->add_model(scenes::box_model({1.5f, 1.0f, 2.5f}, {0.7f, 0.3f, 0.2f, 1}, glm::vec3(0.05f)));
   r->render(offset_scene(*r, wall, box, glm::dvec3(0)), 320, 180);
   Image a = r->read_pixels();
   r->render(offset_scene(*r, wall, box, glm::dvec3(1e9, -1e9, 1e9)), 320, 180);
@@ -174,8 +168,8 @@ TEST(Renderer, LargeCoordinatesRenderLikeTheOrigin) {
 TEST(Renderer, DegenerateBillboardsGiveFinitePixels) {
   REQUIRE_CONTEXT();
   auto r = make_renderer(true);
-  r->set_sprites({test::soft_sprite(32)});
-  int wall = r->add_model(test::wall_model(50, 50, {0.3f, 0.3f, 0.3f, 1}, glm::vec3(0.1f)));
+  r->set_sprites({scenes::soft_sprite(32)});
+  int wall = r->add_model(scenes::wall_model(50, 50, {0.3f, 0.3f, 0.3f, 1}, glm::vec3(0.1f)));
   RenderView v = base_view();
   v.meshes.push_back({wall, {0, 0, -10}});
   auto at_camera = particle({0, 0, 0}, 1.0f, glm::vec3(1, 0.5, 0.2), 0.8f, 0.3f, SoftEdge::Linear);
@@ -232,9 +226,9 @@ TEST(Renderer, NearFadeDimsOnlyParticlesCloseToTheCamera) {
 TEST(Renderer, ReversedAndStandardDepthAgree) {
   REQUIRE_CONTEXT();
   auto r = make_renderer();
-  r->set_sprites({test::soft_sprite(64)});
-  int wall = r->add_model(test::wall_model(80, 80, {0.5f, 0.5f, 0.55f, 1}, glm::vec3(0)));
-  int box = r->add_model(test::box_model({1.5f, 1.0f, 2.5f}, {0.7f, 0.3f, 0.2f, 1}, glm::vec3(0.05f)));
+  r->set_sprites({scenes::soft_sprite(64)});
+  int wall = r->add_model(scenes::wall_model(80, 80, {0.5f, 0.5f, 0.55f, 1}, glm::vec3(0)));
+  int box = r->add_model(scenes::box_model({1.5f, 1.0f, 2.5f}, {0.7f, 0.3f, 0.2f, 1}, glm::vec3(0.05f)));
   Image images[2];
   for (int i = 0; i < 2; ++i) {
     RenderSettings s = test::plain_settings();
@@ -254,7 +248,7 @@ TEST(Renderer, ReversedAndStandardDepthAgree) {
 TEST(Renderer, SoftEdgesAgreeInEveryDepthMode) {
   REQUIRE_CONTEXT();
   auto r = make_renderer();
-  r->set_sprites({test::soft_sprite(64)});
+  r->set_sprites({scenes::soft_sprite(64)});
   Image ref;
   for (int mode = 0; mode < 4; ++mode) {
     RenderSettings s = test::plain_settings();
@@ -281,7 +275,7 @@ TEST(Renderer, SoftEdgesAgreeInEveryDepthMode) {
 TEST(Renderer, ContrastShortcutsMatchTheGeneralCurve) {
   REQUIRE_CONTEXT();
   auto r = make_renderer();
-  r->set_sprites({test::soft_sprite(64)});
+  r->set_sprites({scenes::soft_sprite(64)});
   auto render_power = [&](float power, SoftEdge method) {
     RenderSettings s = test::plain_settings();
     s.contrast_power = power;
@@ -317,7 +311,7 @@ TEST(Renderer, DepthCopyOnlyWhenASoftParticleIsVisible) {
   v.particles.push_back(particle({0, 0, -6}, 1.0f, glm::vec3(1), 0.5f, 0.0f, SoftEdge::Linear));
   r->render(v, 32, 32);
   EXPECT_FALSE(r->last_stats().depth_copied) << "no opaque surface anywhere: soft edges change nothing";
-  v.meshes.push_back({r->add_model(test::wall_model(40, 40, {0.5f, 0.5f, 0.5f, 1}, glm::vec3(0))), {0, 0, -6.5}});
+  v.meshes.push_back({r->add_model(scenes::wall_model(40, 40, {0.5f, 0.5f, 0.5f, 1}, glm::vec3(0))), {0, 0, -6.5}});
   r->render(v, 32, 32);
   EXPECT_TRUE(r->last_stats().depth_copied) << "the soft particle reaches the wall";
   EXPECT_EQ(r->last_stats().soft_shaded, 1);
@@ -335,8 +329,8 @@ TEST(Renderer, DepthCopyOnlyWhenASoftParticleIsVisible) {
 TEST(Renderer, SoftEdgesSkipParticlesNoSurfaceCanReach) {
   REQUIRE_CONTEXT();
   auto r = make_renderer();
-  r->set_sprites({test::soft_sprite(64)});
-  const int wall = r->add_model(test::wall_model(6, 20, {0.3f, 0.4f, 0.5f, 1}, glm::vec3(0)));
+  r->set_sprites({scenes::soft_sprite(64)});
+  const int wall = r->add_model(scenes::wall_model(6, 20, {0.3f, 0.4f, 0.5f, 1}, glm::vec3(0)));
   RenderView v = base_view();
   v.meshes.push_back({wall, {-3.2, 0, -10}});  // the left half of the view, at depth 10
   auto render = [&](SoftEdge m) {
@@ -346,10 +340,10 @@ TEST(Renderer, SoftEdgesSkipParticlesNoSurfaceCanReach) {
     r->render(v, 96, 64);
     return r->read_pixels();
   };
-  v.meshes.push_back({r->add_model(test::box_model({1, 1, 1}, {0.6f, 0.3f, 0.3f, 1}, glm::vec3(0))), {1.7, 0, -5}});
+  v.meshes.push_back({r->add_model(scenes::box_model({1, 1, 1}, {0.6f, 0.3f, 0.3f, 1}, glm::vec3(0))), {1.7, 0, -5}});
   // One model of two cubes 4 apart (half size 0.5), like a ship's wing tips: its bounding box
   // spans the empty gap between them, its cover boxes do not.
-  ModelData dumbbell = test::box_model({0.5f, 0.5f, 0.5f}, {0.3f, 0.6f, 0.3f, 1}, glm::vec3(0));
+  ModelData dumbbell = scenes::box_model({0.5f, 0.5f, 0.5f}, {0.3f, 0.6f, 0.3f, 1}, glm::vec3(0));
   MeshPrimitive other = dumbbell.primitives[0];
   for (glm::vec3& q : dumbbell.primitives[0].positions) q.x -= 2.0f;
   for (glm::vec3& q : other.positions) q.x += 2.0f;
@@ -456,7 +450,7 @@ TEST(Renderer, KeepsTheNearestParticlesPastTheDrawLimit) {
   // The one left out is the only soft particle, right in front of a wall: with it gone nothing
   // drawn needs the depth copy or the soft program.
   v.particles[0].soft_edge = uint8_t(SoftEdge::Linear);
-  v.meshes.push_back({r.add_model(test::wall_model(40, 40, {0.5f, 0.5f, 0.5f, 1}, glm::vec3(0))), {0, 0, -8.2}});
+  v.meshes.push_back({r.add_model(scenes::wall_model(40, 40, {0.5f, 0.5f, 0.5f, 1}, glm::vec3(0))), {0, 0, -8.2}});
   r.render(v, 64, 64);
   EXPECT_EQ(r.last_stats().over_draw_limit, 1);
   EXPECT_EQ(r.last_stats().soft_shaded, 0);
@@ -485,7 +479,7 @@ TEST(Renderer, CountsBlendedFragmentsAndTimesThePassOnRequest) {
   const double half = 1.0 / (5.0 * std::tan(0.45)) * 32.0;  // quad half-size in pixels
   EXPECT_NEAR(double(r->last_stats().particle_fragments), 4.0 * half * half, 0.1 * 4.0 * half * half);
   EXPECT_GE(r->last_stats().particle_pass_gpu_ms, 0.0);
-  v.meshes.push_back({r->add_model(test::wall_model(40, 40, {0.5f, 0.5f, 0.5f, 1}, glm::vec3(0))), {0, 0, -4}});
+  v.meshes.push_back({r->add_model(scenes::wall_model(40, 40, {0.5f, 0.5f, 0.5f, 1}, glm::vec3(0))), {0, 0, -4}});
   r->render(v, 64, 64);
   EXPECT_EQ(r->last_stats().particle_fragments, 0) << "behind the wall nothing is blended";
   r->count_particle_fragments(false);
@@ -713,20 +707,6 @@ TEST(Renderer, BakedSkyMatchesTheExactNebula) {
   // seam would be off by the nebula's own size.
   EXPECT_LT(fine, 0.5f / 255.0f);
   EXPECT_GT(coarse, 2.0f * fine) << "a coarser cube map is measurably less exact";
-}
-
-TEST(RadixSort, BackToFrontAndStable) {
-  std::vector<uint32_t> keys = {5, 0x80000000u, 5, 7, 0, 0xFFFFFFFFu, 300, 70000};
-  std::vector<uint32_t> order;
-  radix_sort_back_to_front(keys, order);
-  ASSERT_EQ(order.size(), keys.size());
-  for (size_t i = 1; i < order.size(); ++i) {
-    EXPECT_GE(keys[order[i - 1]], keys[order[i]]);
-    if (keys[order[i - 1]] == keys[order[i]]) {
-      EXPECT_LT(order[i - 1], order[i]);
-    }
-  }
-  EXPECT_EQ(order.front(), 5u);
 }
 
 }  // namespace

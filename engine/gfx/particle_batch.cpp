@@ -1,0 +1,141 @@
+// gfx/particle_batch.cpp — culling, soft-edge flags, sorting and the draw limit (no GL).
+#include "gfx/particle_batch.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+
+#include <glm/geometric.hpp>
+
+namespace arc {
+namespace {
+
+// Per-cluster sorting: every particle gets the key of its cluster's mean depth along `forward`.
+void cluster_depth_keys(const std::vector<ParticleInstance>& particles, const glm::vec3& forward,
+                        std::vector<uint32_t>& keys) {
+  std::vector<uint32_t> cluster_ids;
+  for (auto& p : particles) cluster_ids.push_back(p.cluster);
+  std::vector<uint32_t> unique_ids = cluster_ids;
+  std::sort(unique_ids.begin(), unique_ids.end());
+  unique_ids.erase(std::unique(unique_ids.begin(), unique_ids.end()), unique_ids.end());
+  std::vector<double> sum(unique_ids.size(), 0.0);
+  std::vector<int> cnt(unique_ids.size(), 0);
+  std::vector<uint32_t> slot(particles.size());
+  for (size_t i = 0; i < particles.size(); ++i) {
+    slot[i] = uint32_t(std::lower_bound(unique_ids.begin(), unique_ids.end(), cluster_ids[i]) - unique_ids.begin());
+    const float* pp = particles[i].pos;
+    sum[slot[i]] += pp[0] * forward.x + pp[1] * forward.y + pp[2] * forward.z;
+    ++cnt[slot[i]];
+  }
+  for (size_t i = 0; i < particles.size(); ++i) keys[i] = sortable_bits(float(sum[slot[i]] / cnt[slot[i]]));
+}
+
+}  // namespace
+
+uint32_t sortable_bits(float f) {
+  uint32_t u;
+  std::memcpy(&u, &f, 4);
+  return (u & 0x80000000u) ? ~u : (u | 0x80000000u);
+}
+
+void radix_sort_back_to_front(const std::vector<uint32_t>& keys, std::vector<uint32_t>& order) {
+  // Descending keys = ascending of the complement.
+  size_t n = keys.size();
+  std::vector<uint32_t> k(n), k2(n), o2(n);
+  order.resize(n);
+  for (size_t i = 0; i < n; ++i) {
+    k[i] = ~keys[i];
+    order[i] = uint32_t(i);
+  }
+  for (int shift = 0; shift < 32; shift += 8) {
+    std::array<uint32_t, 257> count{};
+    for (size_t i = 0; i < n; ++i) ++count[((k[i] >> shift) & 0xFF) + 1];
+    bool uniform_digit = false;  // all keys share this digit: the pass would be a plain copy
+    for (int b = 1; b <= 256; ++b) uniform_digit = uniform_digit || count[b] == n;
+    if (uniform_digit) continue;
+    for (int b = 0; b < 256; ++b) count[b + 1] += count[b];
+    for (size_t i = 0; i < n; ++i) {
+      uint32_t dst = count[(k[i] >> shift) & 0xFF]++;
+      k2[dst] = k[i];
+      o2[dst] = order[i];
+    }
+    k.swap(k2);
+    order.swap(o2);
+  }
+}
+
+void ParticleBatch::prepare(const RenderView& v, const ViewProjection& vp, const ModelCoverBoxes& model_boxes,
+                            const ParticleBatchOptions& options) {
+  visible = culled_offscreen = over_draw_limit = sorted = soft_shaded = 0;
+  any_soft = any_contrast = false;
+  const glm::vec3 forward = -glm::vec3(glm::transpose(vp.view)[2]);  // camera −Z in world space
+  cull_and_flag(v, vp, forward, model_boxes, options.soft_override);
+  visible = int(particles.size());
+  if (particles.empty()) return;
+  // Pure additive particles need no order; as soon as one is alpha blended, the whole set is
+  // ordered, because an additive glow in front of smoke must not be darkened by it.
+  if (any_ordered_ && options.sorting != RenderSettings::Sorting::Off)
+    sort(options.sorting, forward);
+  // A buffer texture reaches GL_MAX_TEXTURE_BUFFER_SIZE texels (at least 65536, so 16384
+  // particles; 2^27 on llvmpipe and desktop GPUs): beyond that the nearest ones are kept when
+  // sorted (the order is back to front), an arbitrary subset otherwise.
+  if (particles.size() > options.max_particles) {
+    over_draw_limit = int(particles.size() - options.max_particles);
+    particles.erase(particles.begin(), particles.begin() + std::ptrdiff_t(particles.size() - options.max_particles));
+  }
+  // Which program and whether the depth copy is needed, from the particles that are drawn.
+  for (const ParticleInstance& q : particles) {
+    const bool soft = q.soft_edge != 0 && !(q.soft_edge & kSoftClear);
+    soft_shaded += soft;
+    any_soft = any_soft || soft;
+    any_contrast = any_contrast || (soft && q.soft_edge == uint8_t(SoftEdge::Contrast));
+  }
+}
+
+void ParticleBatch::cull_and_flag(const RenderView& v, const ViewProjection& vp, const glm::vec3& fwd,
+                                  const ModelCoverBoxes& model_boxes, int soft_override) {
+  const glm::mat3 to_view(vp.view);
+  const float near = float(v.camera.near_plane);
+  // The four side planes of the view frustum in view space, as unit normals pointing out: a
+  // particle whose quad lies wholly outside one of them is not uploaded. Clusters are culled
+  // whole before this (game/render); this drops the particles of a visible cluster that are off
+  // screen, such as the far ends of a long beam, which would cost vertex work and setup.
+  const float tx = 1.0f / vp.proj[0][0], ty = 1.0f / vp.proj[1][1];
+  occluders_.gather(v, model_boxes, to_view, tx, ty);
+  const glm::vec3 planes[4] = {glm::normalize(glm::vec3(1, 0, tx)), glm::normalize(glm::vec3(-1, 0, tx)),
+                               glm::normalize(glm::vec3(0, 1, ty)), glm::normalize(glm::vec3(0, -1, ty))};
+  particles.clear();
+  keys_.clear();
+  any_ordered_ = false;
+  for (const ParticleInstance& p : v.particles) {
+    bool dark = p.color[0] <= 0 && p.color[1] <= 0 && p.color[2] <= 0 && p.color[3] <= 0;
+    float depth = p.pos[0] * fwd.x + p.pos[1] * fwd.y + p.pos[2] * fwd.z;
+    float axis_len = std::sqrt(p.axis[0] * p.axis[0] + p.axis[1] * p.axis[1] + p.axis[2] * p.axis[2]);
+    float reach = std::max(p.size, 0.0f) + axis_len;
+    if (dark || !(depth > -reach)) continue;  // invisible or wholly behind the camera (NaN fails too)
+    const QuadBounds b = quad_bounds(p, to_view, axis_len);
+    if (glm::dot(planes[0], b.centre) > b.radius || glm::dot(planes[1], b.centre) > b.radius ||
+        glm::dot(planes[2], b.centre) > b.radius || glm::dot(planes[3], b.centre) > b.radius) {
+      ++culled_offscreen;
+      continue;
+    }
+    ParticleInstance q = p;
+    if (soft_override >= 0) q.soft_edge = uint8_t(soft_override);
+    if (q.soft_edge != 0 && !occluders_.soft_can_matter(q, b, near)) q.soft_edge |= kSoftClear;
+    any_ordered_ = any_ordered_ || q.color[3] * (1.0f - q.burn) > 0.0f;
+    particles.push_back(q);
+    keys_.push_back(sortable_bits(depth));
+  }
+}
+
+void ParticleBatch::sort(RenderSettings::Sorting sorting, const glm::vec3& forward) {
+  if (sorting == RenderSettings::Sorting::Cluster) cluster_depth_keys(particles, forward, keys_);
+  radix_sort_back_to_front(keys_, order_);
+  sorted_.resize(particles.size());
+  for (size_t i = 0; i < order_.size(); ++i) sorted_[i] = particles[order_[i]];
+  particles.swap(sorted_);
+  sorted = int(particles.size());
+}
+
+}  // namespace arc

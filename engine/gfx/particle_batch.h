@@ -1,0 +1,64 @@
+// gfx/particle_batch.h — the particle pass's CPU half: what is drawn, in which order (no GL).
+//
+// From the view's particles and the frame's camera, prepare() keeps the visible ones (not dark,
+// not wholly behind the camera, not wholly outside a side of the frustum), applies the global
+// soft-edge override, flags with kSoftClear those no opaque mesh can reach (particle_occluders.h),
+// sorts back to front when any kept particle is alpha blended (DESIGN.md "Rendering": pure
+// additive ones need no order), and drops the farthest beyond the draw limit. The particle pass
+// uploads `particles` as they are and draws them in one call.
+//
+//   ParticleBatch batch;
+//   batch.prepare(view, make_view_projection(view.camera, aspect, true, true), model_boxes, {});
+//   if (batch.any_soft) { /* copy the depth buffer first */ }
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "gfx/cover_boxes.h"
+#include "gfx/particle_occluders.h"
+#include "gfx/render_settings.h"
+#include "gfx/render_view.h"
+#include "gfx/view_projection.h"
+
+namespace arc {
+
+struct ParticleBatchOptions {
+  int soft_override = -1;  // RenderSettings::soft_override
+  RenderSettings::Sorting sorting = RenderSettings::Sorting::Full;
+  size_t max_particles = std::numeric_limits<size_t>::max();  // what one draw can pull
+};
+
+struct ParticleBatch {
+  // Copies of the kept particles in draw order, soft_edge overridden and flagged.
+  std::vector<ParticleInstance> particles;
+  int visible = 0;           // kept before the draw limit (FrameStats::particles_drawn)
+  int culled_offscreen = 0;  // quad wholly outside a side of the frustum
+  int over_draw_limit = 0;   // farthest ones left out beyond max_particles
+  int sorted = 0;            // put in back-to-front order (0 when unsorted)
+  int soft_shaded = 0;       // soft and not kSoftClear: they read the depth copy
+  bool any_soft = false;     // the depth copy is needed
+  bool any_contrast = false; // a soft one uses the contrast curve
+
+  void prepare(const RenderView& view, const ViewProjection& vp, const ModelCoverBoxes& model_boxes,
+               const ParticleBatchOptions& options);
+
+ private:
+  void cull_and_flag(const RenderView& view, const ViewProjection& vp, const glm::vec3& forward,
+                     const ModelCoverBoxes& model_boxes, int soft_override);
+  void sort(RenderSettings::Sorting sorting, const glm::vec3& forward);
+  std::vector<uint32_t> keys_, order_;  // depth keys of `particles`, and the sorted order
+  std::vector<ParticleInstance> sorted_;
+  OccluderSet occluders_;
+  bool any_ordered_ = false;  // some kept particle has alpha·(1 − burn) > 0
+};
+
+// An order-preserving map from float to unsigned: larger floats give larger keys.
+uint32_t sortable_bits(float f);
+
+// Back-to-front order by 32-bit depth keys (larger distance first), an LSD radix sort in
+// four 8-bit passes; stable, so equal keys keep their input order.
+void radix_sort_back_to_front(const std::vector<uint32_t>& keys, std::vector<uint32_t>& order);
+
+}  // namespace arc

@@ -1,0 +1,78 @@
+// gfx/particle_occluders.h — where opaque meshes stand, as the particle batch sees them (no GL).
+//
+// Soft edges change a particle's pixels only where an opaque surface lies within its depth
+// extent. Each frame the part boxes of every visible mesh instance (cover_boxes.h) become
+// Occluders: a view-depth range and a screen rectangle in tangent units. soft_can_matter()
+// asks, conservatively, whether any of them can reach a particle's quad (QuadBounds); a
+// particle none reaches is flagged kSoftClear, skips the depth read and stays bit-identical.
+//
+//   OccluderSet occluders;
+//   occluders.gather(view, model_boxes, to_view, tan_half_x, tan_half_y);
+//   bool soft = occluders.soft_can_matter(particle, quad_bounds(particle, to_view, axis_len), near);
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include <glm/mat3x3.hpp>
+#include <glm/vec3.hpp>
+
+#include "gfx/cover_boxes.h"
+#include "gfx/render_view.h"
+
+namespace arc {
+
+// Set on the uploaded copy of a particle whose soft edges cannot change a pixel: no opaque
+// mesh comes within its depth extent anywhere on its quad. shaders/particle.vert reads it.
+constexpr uint8_t kSoftClear = 0x80;
+
+// Where a particle's quad can be, as shaders/particle.vert builds it: corners lie within
+// `radius` = √(size² + half_long²) of the view-space centre, whatever the billboard (the
+// size clamp there only shrinks it), and the density methods' push along the view ray keeps
+// the footprint. Computed once per particle for culling and the soft-edge reach test.
+struct QuadBounds {
+  glm::vec3 centre;  // view space
+  float size, half_long, radius;
+  bool axis_locked;
+};
+
+// `axis_len` is the length of the particle's axis (used only when it is axis-locked).
+QuadBounds quad_bounds(const ParticleInstance& p, const glm::mat3& to_view, float axis_len);
+
+// An opaque mesh as the particle pass sees it: the view depth range of its box and the box's
+// screen rectangle in tangent units (x/depth, y/depth); infinite when the box crosses the near
+// plane.
+struct Occluder {
+  float nearest, farthest;
+  float x0, y0, x1, y1;
+  // Covers nothing: the identity of include().
+  static Occluder none();
+  void include(const Occluder& o);
+};
+
+// One mesh instance: the union of its part boxes' occluders, and where they are.
+struct OccluderGroup {
+  Occluder bound;
+  size_t first, count;
+};
+
+// The occluders of one frame. Buffers are kept between frames.
+class OccluderSet {
+ public:
+  // Every part box of every mesh instance of `view` that is in front of the near plane and on
+  // screen (tangent half-extents tan_x, tan_y), under the same camera-relative transform the
+  // mesh pass draws with. Instances of unknown models are skipped.
+  void gather(const RenderView& view, const ModelCoverBoxes& model_boxes, const glm::mat3& to_view, float tan_x,
+              float tan_y);
+  // Whether an opaque surface can lie, at some pixel of the particle's quad, within the reach
+  // of its soft edges (see the definition for the exact range).
+  bool soft_can_matter(const ParticleInstance& p, const QuadBounds& q, float near) const;
+  size_t size() const { return occluders_.size(); }
+
+ private:
+  std::vector<Occluder> occluders_;  // one per part box of each visible mesh instance
+  std::vector<OccluderGroup> groups_;
+  Occluder bounds_ = Occluder::none();  // union of all: most particles of a frame fall outside it
+};
+
+}  // namespace arc

@@ -1,0 +1,173 @@
+// gfx/particle_pass.cpp — sprite array, particle buffer texture, index buffer and the draw.
+#include "gfx/particle_pass.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "gfx/texture_filter.h"
+
+namespace arc {
+namespace {
+
+// Contrast power 2 (the default) squares instead of calling pow(); power 1 is the identity
+// curve, the plain soft program.
+const Program& choose_program(const ShaderPrograms& programs, const ParticleBatch& batch, float contrast_power) {
+  if (!batch.any_soft) return programs.particle_hard;
+  if (!batch.any_contrast) return programs.particle_soft;
+  if (contrast_power == 2.0f) return programs.particle_square;
+  if (contrast_power == 1.0f) return programs.particle_soft;
+  return programs.particle_contrast;
+}
+
+}  // namespace
+
+ParticlePass::ParticlePass(size_t draw_limit) {
+  // Particles are pulled by the vertex shader from a buffer texture over the frame's upload;
+  // the VAO holds only the index buffer (two triangles per particle).
+  static_assert(sizeof(ParticleInstance) == 64 && offsetof(ParticleInstance, sprite) == 56 &&
+                    offsetof(ParticleInstance, soft_edge) == 58 && offsetof(ParticleInstance, billboard) == 59,
+                "shaders/particle.vert reads ParticleInstance as four RGBA32UI texels");
+  glGenVertexArrays(1, &vao_);
+  glGenBuffers(1, &vbo_);
+  glGenBuffers(1, &ibo_);
+  glGenTextures(1, &tbo_);
+  glBindBuffer(GL_TEXTURE_BUFFER, vbo_);
+  glBufferData(GL_TEXTURE_BUFFER, sizeof(ParticleInstance), nullptr, GL_STREAM_DRAW);
+  glBindTexture(GL_TEXTURE_BUFFER, tbo_);
+  glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32UI, vbo_);
+  GLint max_texels = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &max_texels);
+  max_particles_per_draw_ = size_t(std::max(max_texels, 4)) / 4;
+  if (draw_limit > 0) max_particles_per_draw_ = std::min(max_particles_per_draw_, draw_limit);
+  Image white;
+  white.width = white.height = 1;
+  white.rgba = {255, 255, 255, 255};
+  white.premultiplied = true;
+  set_sprites({white}, RenderSettings{}.filter);
+}
+
+ParticlePass::~ParticlePass() {
+  glDeleteVertexArrays(1, &vao_);
+  GLuint bufs[] = {vbo_, ibo_};
+  glDeleteBuffers(2, bufs);
+  GLuint tex[] = {tbo_, sprite_tex_};
+  glDeleteTextures(2, tex);
+  if (fragment_query_) glDeleteQueries(1, &fragment_query_);
+}
+
+void ParticlePass::set_sprites(const std::vector<Image>& sprites, RenderSettings::Filter filter) {
+  if (sprites.empty()) throw std::invalid_argument("set_sprites: at least one sprite is needed");
+  int w = 0, h = 0;
+  for (auto& s : sprites) {
+    w = std::max(w, s.width);
+    h = std::max(h, s.height);
+  }
+  if (!sprite_tex_) glGenTextures(1, &sprite_tex_);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, sprite_tex_);
+  glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA8, w, h, GLsizei(sprites.size()), 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  std::vector<uint8_t> resized;
+  for (size_t layer = 0; layer < sprites.size(); ++layer) {
+    const Image& s = sprites[layer];
+    const uint8_t* data = s.rgba.data();
+    if (s.width != w || s.height != h) {
+      // Layers share one size; smaller sprites are stretched by nearest sampling at upload.
+      resized.resize(size_t(w) * h * 4);
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+          std::memcpy(&resized[(size_t(y) * w + x) * 4], &s.rgba[(size_t(y * s.height / h) * s.width + x * s.width / w) * 4], 4);
+      data = resized.data();
+    }
+    glTexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, GLint(layer), w, h, 1, GL_RGBA, GL_UNSIGNED_BYTE, data);
+  }
+  glGenerateMipmap(GL_TEXTURE_2D_ARRAY);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  apply_texture_filter(GL_TEXTURE_2D_ARRAY, filter);
+  sprite_w_ = w;
+  sprite_h_ = h;
+}
+
+void ParticlePass::set_texture_filter(RenderSettings::Filter filter) {
+  glBindTexture(GL_TEXTURE_2D_ARRAY, sprite_tex_);
+  apply_texture_filter(GL_TEXTURE_2D_ARRAY, filter);
+}
+
+void ParticlePass::upload(const std::vector<ParticleInstance>& particles) {
+  glBindBuffer(GL_TEXTURE_BUFFER, vbo_);
+  size_t bytes = particles.size() * sizeof(ParticleInstance);
+  if (bytes > capacity_bytes_) capacity_bytes_ = bytes * 3 / 2;
+  glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(capacity_bytes_), nullptr, GL_STREAM_DRAW);  // new or orphaned
+  glBufferSubData(GL_TEXTURE_BUFFER, 0, GLsizeiptr(bytes), particles.data());
+  uploaded_ = particles.size();
+  glBindVertexArray(vao_);
+  if (particles.size() > index_capacity_) {
+    index_capacity_ = std::max<size_t>(particles.size() * 3 / 2, 1024);
+    std::vector<uint32_t> indices(index_capacity_ * 6);
+    for (size_t i = 0; i < index_capacity_; ++i) {
+      const uint32_t b = uint32_t(i * 4);
+      const uint32_t quad[6] = {b, b + 1, b + 2, b + 2, b + 1, b + 3};
+      std::copy(quad, quad + 6, indices.begin() + std::ptrdiff_t(i * 6));
+    }
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ibo_);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * 4), indices.data(), GL_STATIC_DRAW);
+  }
+}
+
+long long ParticlePass::draw(const ParticleBatch& batch, const ShaderPrograms& programs, const RenderSettings& rs,
+                             const ParticleFrame& frame) {
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(rs.reversed_z ? GL_GREATER : GL_LESS);
+  glDepthMask(GL_FALSE);
+  glEnable(GL_BLEND);
+  glBlendEquation(GL_FUNC_ADD);
+  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  const Program& particle = choose_program(programs, batch, rs.contrast_power);
+  glUseProgram(particle.id);
+  glUniformMatrix4fv(particle.loc("u_view"), 1, GL_FALSE, glm::value_ptr(frame.vp.view));
+  glUniformMatrix4fv(particle.loc("u_proj"), 1, GL_FALSE, glm::value_ptr(frame.vp.proj));
+  glUniform1f(particle.loc("u_tan_half_y"), float(std::tan(frame.fov_y_radians * 0.5)));
+  glUniform1f(particle.loc("u_size_clamp"), rs.size_clamp);
+  glUniform1f(particle.loc("u_near"), frame.near_plane);
+  glUniform1f(particle.loc("u_inv_near_fade"), rs.near_fade > 0.0f ? 1.0f / rs.near_fade : 1e30f);
+  glUniform1f(particle.loc("u_contrast_power"), rs.contrast_power);
+  // view depth = x / (y·depth + z) with the denominator's sign made positive in every mode
+  // (standard depth has depth + B ≤ 0), so the shader guards it with one max().
+  const glm::vec2 linearize = frame.vp.linearize;
+  float lsign = linearize.x >= 0.0f ? 1.0f : -1.0f;
+  glUniform3f(particle.loc("u_linearize"), lsign * linearize.x, lsign, lsign * linearize.y);
+  glUniform2f(particle.loc("u_sprite_texels"), float(sprite_w_), float(sprite_h_));
+  glUniform1f(particle.loc("u_viewport_h"), float(frame.scene_height));
+  glUniform1i(particle.loc("u_sprites"), 0);
+  glUniform1i(particle.loc("u_scene_depth"), 1);
+  glUniform1i(particle.loc("u_particles"), 2);
+  glUniform2f(particle.loc("u_inv_depth_size"), 1.0f / float(frame.scene_width), 1.0f / float(frame.scene_height));
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, sprite_tex_);
+  glActiveTexture(GL_TEXTURE1);
+  glBindTexture(GL_TEXTURE_2D, frame.depth_copy);
+  glActiveTexture(GL_TEXTURE2);
+  glBindTexture(GL_TEXTURE_BUFFER, tbo_);
+  glActiveTexture(GL_TEXTURE0);
+  glBindVertexArray(vao_);
+  if (count_fragments_) {
+    if (!fragment_query_) glGenQueries(1, &fragment_query_);
+    glBeginQuery(GL_SAMPLES_PASSED, fragment_query_);
+  }
+  glDrawElements(GL_TRIANGLES, GLsizei(uploaded_ * 6), GL_UNSIGNED_INT, nullptr);
+  long long fragments = -1;
+  if (count_fragments_) {
+    glEndQuery(GL_SAMPLES_PASSED);
+    GLuint64 samples = 0;
+    glGetQueryObjectui64v(fragment_query_, GL_QUERY_RESULT, &samples);
+    fragments = static_cast<long long>(samples);
+  }
+  glDepthMask(GL_TRUE);
+  glDisable(GL_BLEND);
+  return fragments;
+}
+
+}  // namespace arc

@@ -1,0 +1,72 @@
+// gfx/particle_pass.h — the particle draw: upload of a prepared batch and one instanced draw.
+//
+// Owns the sprite array texture, the buffer texture the vertex shader pulls ParticleInstance
+// from (shaders/particle.vert builds each quad from four RGBA32UI texels), and the index buffer
+// (two triangles per particle). draw() blends with depth test on and depth write off,
+// GL_ONE, GL_ONE_MINUS_SRC_ALPHA (controlled-additive "burn", Ilmonen 2006 §4), with the
+// cheapest program the batch allows: hard edges when no drawn particle is soft, the contrast
+// curve only when one uses it. The CPU half (culling, flags, sorting) is particle_batch.h.
+//
+//   ParticlePass particles(0);
+//   particles.set_sprites({load_sprite("assets/textures/sprite_smoke.png")}, settings.filter);
+//   particles.upload(batch.particles);
+//   if (batch.any_soft) targets.copy_depth();
+//   particles.draw(batch, programs, settings, frame);
+#pragma once
+#include <epoxy/gl.h>
+
+#include <cstddef>
+#include <vector>
+
+#include "assets/model.h"
+#include "gfx/particle_batch.h"
+#include "gfx/render_settings.h"
+#include "gfx/shader_programs.h"
+#include "gfx/view_projection.h"
+
+namespace arc {
+
+// What the particle draw reads from the frame besides the batch.
+struct ParticleFrame {
+  ViewProjection vp;
+  double fov_y_radians = 1.0;
+  float near_plane = 0.5f;
+  GLuint depth_copy = 0;  // RenderTargets::depth_copy(), sampled by the soft programs
+  int scene_width = 1, scene_height = 1;
+};
+
+class ParticlePass {
+ public:
+  // draw_limit: at most this many particles per draw when not 0 (tests reach the limit with
+  // it); the context's GL_MAX_TEXTURE_BUFFER_SIZE / 4 otherwise.
+  explicit ParticlePass(size_t draw_limit);
+  ~ParticlePass();
+  ParticlePass(const ParticlePass&) = delete;
+  ParticlePass& operator=(const ParticlePass&) = delete;
+
+  // Layers of one array texture, all stretched to the largest sprite's size. Starts with one
+  // white layer, so particles draw as squares of their colour before any sprites are set.
+  void set_sprites(const std::vector<Image>& premultiplied_sprites, RenderSettings::Filter filter);
+  void set_texture_filter(RenderSettings::Filter filter);
+  size_t max_particles_per_draw() const { return max_particles_per_draw_; }
+
+  void upload(const std::vector<ParticleInstance>& particles);
+  // Draws what upload() received into the bound framebuffer. Returns the samples blended when
+  // counting fragments (an occlusion query read back at once, so it stalls), else −1.
+  long long draw(const ParticleBatch& batch, const ShaderPrograms& programs, const RenderSettings& settings,
+                 const ParticleFrame& frame);
+  void count_fragments(bool on) { count_fragments_ = on; }
+
+ private:
+  GLuint vao_ = 0, vbo_ = 0, ibo_ = 0, tbo_ = 0;
+  size_t capacity_bytes_ = 0;   // in vbo_
+  size_t index_capacity_ = 0;   // particles ibo_ has indices for
+  size_t uploaded_ = 0;         // particles in vbo_
+  size_t max_particles_per_draw_ = 0;
+  GLuint sprite_tex_ = 0;
+  int sprite_w_ = 1, sprite_h_ = 1;
+  bool count_fragments_ = false;
+  GLuint fragment_query_ = 0;
+};
+
+}  // namespace arc

@@ -1,0 +1,24 @@
+// gfx/render_settings.h — the renderer's runtime settings as it applies them (no GL).
+//
+// Renderer::apply_settings() fills one from the render.* keys of core/settings.h, and
+// Renderer::set_render_settings() takes one directly; both fall back where the context lacks
+// a feature (reversed-Z without clip control) and clamp the ranges. The passes read it.
+#pragma once
+
+namespace arc {
+
+struct RenderSettings {
+  int soft_override = -1;  // −1: each particle's own SoftEdge; otherwise a SoftEdge value for all
+  enum class Sorting { Off, Cluster, Full } sorting = Sorting::Full;
+  bool reversed_z = true;
+  bool infinite_far = true;
+  enum class Filter { Nearest, Linear, Mipmap } filter = Filter::Mipmap;
+  double scale = 1.0;
+  float size_clamp = 0.5f;
+  float near_fade = 2.0f;
+  float contrast_power = 2.0f;
+  bool sky_exact = false;    // the nebula evaluated per pixel every frame, not looked up in a baked cube map
+  int sky_resolution = 256;  // texels along a face of the baked cube map (16..1024)
+};
+
+}  // namespace arc

@@ -1,0 +1,129 @@
+// gfx/render_targets.cpp — scene buffer, depth copy, offscreen target and read-back.
+#include "gfx/render_targets.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+
+namespace arc {
+
+RenderTargets::RenderTargets(bool offscreen, bool float_scene) : offscreen_(offscreen), float_scene_(float_scene) {}
+
+RenderTargets::~RenderTargets() {
+  GLuint tex[] = {scene_color_, copy_depth_, target_color_};
+  glDeleteTextures(3, tex);
+  glDeleteRenderbuffers(1, &scene_depth_);
+  GLuint fbos[] = {scene_fbo_, copy_fbo_, target_fbo_};
+  glDeleteFramebuffers(3, fbos);
+}
+
+void RenderTargets::ensure(int w, int h, double scale) {
+  int sw = std::max(1, int(std::lround(w * scale)));
+  int sh = std::max(1, int(std::lround(h * scale)));
+  if (sw != scene_w_ || sh != scene_h_ || !scene_fbo_) allocate_scene(sw, sh);
+  if (offscreen_ && (w != target_w_ || h != target_h_ || !target_fbo_)) allocate_target(w, h);
+}
+
+void RenderTargets::allocate_scene(int sw, int sh) {
+  scene_w_ = sw;
+  scene_h_ = sh;
+  if (!scene_fbo_) {
+    glGenFramebuffers(1, &scene_fbo_);
+    glGenFramebuffers(1, &copy_fbo_);
+    glGenTextures(1, &scene_color_);
+    glGenRenderbuffers(1, &scene_depth_);
+    glGenTextures(1, &copy_depth_);
+  }
+  glBindTexture(GL_TEXTURE_2D, scene_color_);
+  glTexImage2D(GL_TEXTURE_2D, 0, float_scene_ ? GL_RGBA16F : GL_RGBA8, sw, sh, 0, GL_RGBA,
+               float_scene_ ? GL_FLOAT : GL_UNSIGNED_BYTE, nullptr);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  // Float depth in both modes: reversed-Z needs it, and the copy must match the format.
+  glBindRenderbuffer(GL_RENDERBUFFER, scene_depth_);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, sw, sh);
+  glBindFramebuffer(GL_FRAMEBUFFER, scene_fbo_);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, scene_color_, 0);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, scene_depth_);
+  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    throw std::runtime_error("scene framebuffer incomplete");
+  glBindTexture(GL_TEXTURE_2D, copy_depth_);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT32F, sw, sh, 0, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glBindFramebuffer(GL_FRAMEBUFFER, copy_fbo_);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, copy_depth_, 0);
+  glDrawBuffer(GL_NONE);
+  glReadBuffer(GL_NONE);
+  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    throw std::runtime_error("depth copy framebuffer incomplete");
+}
+
+void RenderTargets::allocate_target(int w, int h) {
+  target_w_ = w;
+  target_h_ = h;
+  if (!target_fbo_) {
+    glGenFramebuffers(1, &target_fbo_);
+    glGenTextures(1, &target_color_);
+  }
+  glBindTexture(GL_TEXTURE_2D, target_color_);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  glBindFramebuffer(GL_FRAMEBUFFER, target_fbo_);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target_color_, 0);
+  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    throw std::runtime_error("offscreen target framebuffer incomplete");
+}
+
+void RenderTargets::bind_scene() const {
+  glBindFramebuffer(GL_FRAMEBUFFER, scene_fbo_);
+  glViewport(0, 0, scene_w_, scene_h_);
+}
+
+void RenderTargets::copy_depth() const {
+  // This frame's depth, never last frame's (Ribeiro: a stale copy flickers as the camera moves).
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, scene_fbo_);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, copy_fbo_);
+  glBlitFramebuffer(0, 0, scene_w_, scene_h_, 0, 0, scene_w_, scene_h_, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  glBindFramebuffer(GL_FRAMEBUFFER, scene_fbo_);
+}
+
+void RenderTargets::resolve(int width, int height) const {
+  GLuint dst = offscreen_ ? target_fbo_ : 0;
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, scene_fbo_);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, dst);
+  glBlitFramebuffer(0, 0, scene_w_, scene_h_, 0, 0, width, height, GL_COLOR_BUFFER_BIT,
+                    (scene_w_ == width && scene_h_ == height) ? GL_NEAREST : GL_LINEAR);
+  glBindFramebuffer(GL_FRAMEBUFFER, dst);
+  glViewport(0, 0, width, height);
+}
+
+Image RenderTargets::read_pixels() const {
+  if (!offscreen_ || !target_fbo_) throw std::logic_error("read_pixels needs an offscreen renderer that has rendered");
+  Image img;
+  img.width = target_w_;
+  img.height = target_h_;
+  img.rgba.resize(size_t(img.width) * img.height * 4);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, target_fbo_);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, img.width, img.height, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
+  flip_rows(img);
+  return img;
+}
+
+std::vector<float> RenderTargets::read_pixels_float() const {
+  if (!scene_fbo_) throw std::logic_error("read_pixels_float before any render");
+  std::vector<float> px(size_t(scene_w_) * scene_h_ * 4);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, scene_fbo_);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, scene_w_, scene_h_, GL_RGBA, GL_FLOAT, px.data());
+  std::vector<float> out(px.size());
+  size_t row = size_t(scene_w_) * 4;
+  for (int y = 0; y < scene_h_; ++y)
+    std::memcpy(&out[size_t(y) * row], &px[size_t(scene_h_ - 1 - y) * row], row * 4);
+  return out;
+}
+
+}  // namespace arc

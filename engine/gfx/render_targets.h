@@ -1,0 +1,62 @@
+// gfx/render_targets.h — the framebuffers a frame draws into, and reading them back.
+//
+// The scene buffer (colour + 32-bit float depth) is the window size × render scale; every
+// pass up to the particles draws into it. The depth copy is a depth texture the particle pass
+// samples for soft edges, filled from THIS frame's depth by copy_depth(). resolve() scales the
+// scene colour into the window (default framebuffer) or, offscreen, into an RGBA8 target of
+// the window size that read_pixels() returns; the HUD then draws there at full size.
+//
+//   RenderTargets targets(/*offscreen=*/true, /*float_scene=*/false);
+//   targets.ensure(1280, 720, 1.0);   // (re)allocates on a size change
+//   targets.bind_scene();             // ... opaque passes ...
+//   targets.copy_depth();             // ... particles sample depth_copy() ...
+//   targets.resolve(1280, 720);       // ... HUD ...
+//   Image frame = targets.read_pixels();
+#pragma once
+#include <epoxy/gl.h>
+
+#include <vector>
+
+#include "assets/model.h"
+
+namespace arc {
+
+class RenderTargets {
+ public:
+  // offscreen: resolve into an RGBA8 target for read_pixels(); float_scene: an RGBA16F scene
+  // buffer, so NaN and infinity survive to read_pixels_float().
+  RenderTargets(bool offscreen, bool float_scene);
+  ~RenderTargets();
+  RenderTargets(const RenderTargets&) = delete;
+  RenderTargets& operator=(const RenderTargets&) = delete;
+
+  // Sizes the scene buffer and depth copy to round(w·scale) × round(h·scale) (at least 1) and
+  // the offscreen target to w × h; throws std::runtime_error when a framebuffer is incomplete.
+  void ensure(int w, int h, double scale);
+  int scene_width() const { return scene_w_; }
+  int scene_height() const { return scene_h_; }
+  bool has_scene() const { return scene_fbo_ != 0; }
+
+  // Binds the scene framebuffer with a viewport over all of it.
+  void bind_scene() const;
+  // Blits the scene's depth into the depth copy, then binds the scene framebuffer again.
+  void copy_depth() const;
+  GLuint depth_copy() const { return copy_depth_; }
+  // Scales the scene colour into the window or the offscreen target (linear filtering unless
+  // the sizes match) and leaves that bound with a width × height viewport.
+  void resolve(int width, int height) const;
+
+  Image read_pixels() const;                    // offscreen only; RGBA8, rows top to bottom
+  std::vector<float> read_pixels_float() const; // the scene buffer as RGBA floats, rows top to bottom
+
+ private:
+  void allocate_scene(int sw, int sh);
+  void allocate_target(int w, int h);
+  bool offscreen_, float_scene_;
+  GLuint scene_fbo_ = 0, scene_color_ = 0, scene_depth_ = 0;
+  GLuint copy_fbo_ = 0, copy_depth_ = 0;
+  GLuint target_fbo_ = 0, target_color_ = 0;
+  int scene_w_ = 0, scene_h_ = 0, target_w_ = 0, target_h_ = 0;
+};
+
+}  // namespace arc

@@ -1,0 +1,140 @@
+// gfx/shader_programs.cpp — compiling and linking the shader folder, all or nothing.
+#include "gfx/shader_programs.h"
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+namespace arc {
+namespace {
+
+std::string read_text(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  if (!f) throw std::runtime_error(path + ": cannot open shader");
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+// The compiler's or linker's log of a shader or program that failed.
+std::string info_log(GLuint id, bool is_program) {
+  char log[4096];
+  if (is_program)
+    glGetProgramInfoLog(id, sizeof log, nullptr, log);
+  else
+    glGetShaderInfoLog(id, sizeof log, nullptr, log);
+  return log;
+}
+
+GLuint compile(GLenum type, const std::string& src, const std::string& name, std::string& err) {
+  GLuint sh = glCreateShader(type);
+  const char* p = src.c_str();
+  glShaderSource(sh, 1, &p, nullptr);
+  glCompileShader(sh);
+  GLint ok = 0;
+  glGetShaderiv(sh, GL_COMPILE_STATUS, &ok);
+  if (ok) return sh;
+  err += name + ": " + info_log(sh, false);
+  glDeleteShader(sh);
+  return 0;
+}
+
+// Builds vert+frag from the shader folder; returns 0 and appends to err on failure.
+// `defines` goes right after the #version line of the fragment shader.
+GLuint build_program(const std::string& dir, const std::string& vs, const std::string& fs, const std::string& defines,
+                     std::string& err) {
+  std::string vsrc, fsrc;
+  try {
+    vsrc = read_text(dir + "/" + vs);
+    fsrc = read_text(dir + "/" + fs);
+  } catch (const std::exception& e) {
+    err += std::string(e.what()) + "\n";
+    return 0;
+  }
+  if (!defines.empty()) {
+    size_t eol = fsrc.find('\n');
+    fsrc.insert(eol == std::string::npos ? fsrc.size() : eol + 1, defines);
+  }
+  GLuint v = compile(GL_VERTEX_SHADER, vsrc, dir + "/" + vs, err);
+  GLuint f = compile(GL_FRAGMENT_SHADER, fsrc, dir + "/" + fs, err);
+  if (!v || !f) {
+    if (v) glDeleteShader(v);
+    if (f) glDeleteShader(f);
+    return 0;
+  }
+  GLuint prog = glCreateProgram();
+  glAttachShader(prog, v);
+  glAttachShader(prog, f);
+  glLinkProgram(prog);
+  glDeleteShader(v);
+  glDeleteShader(f);
+  GLint ok = 0;
+  glGetProgramiv(prog, GL_LINK_STATUS, &ok);
+  if (ok) return prog;
+  err += vs + "+" + fs + " link: " + info_log(prog, true);
+  glDeleteProgram(prog);
+  return 0;
+}
+
+}  // namespace
+
+ShaderPrograms::ShaderPrograms(std::string shader_dir) : dir_(std::move(shader_dir)) {
+  try {
+    build_all();
+  } catch (const std::exception& e) {
+    throw std::runtime_error(std::string("shader build failed: ") + e.what());
+  }
+}
+
+ShaderPrograms::~ShaderPrograms() {
+  for (Program* p : {&sky, &sky_exact, &stars, &mesh, &hud, &particle_hard, &particle_soft, &particle_contrast,
+                     &particle_square})
+    glDeleteProgram(p->id);
+}
+
+std::string ShaderPrograms::reload() {
+  try {
+    build_all();
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return {};
+}
+
+void ShaderPrograms::build_all() {
+  std::string err;
+  struct Spec {
+    Program* p;
+    const char* vs;
+    const char* fs;
+    const char* defines;
+  };
+  const Spec specs[] = {{&sky, "sky.vert", "sky.frag", ""},
+                        {&sky_exact, "sky.vert", "sky_exact.frag", ""},
+                        {&stars, "stars.vert", "stars.frag", ""},
+                        {&mesh, "mesh.vert", "mesh.frag", ""},
+                        {&particle_hard, "particle.vert", "particle.frag", "#define SOFT 0\n#define CONTRAST 0\n"},
+                        {&particle_soft, "particle.vert", "particle.frag", "#define SOFT 1\n#define CONTRAST 0\n"},
+                        {&particle_contrast, "particle.vert", "particle.frag",
+                         "#define SOFT 1\n#define CONTRAST 1\n#define CONTRAST_SQUARE 0\n"},
+                        {&particle_square, "particle.vert", "particle.frag",
+                         "#define SOFT 1\n#define CONTRAST 1\n#define CONTRAST_SQUARE 1\n"},
+                        {&hud, "hud.vert", "hud.frag", ""}};
+  std::vector<GLuint> built;
+  for (auto& s : specs) built.push_back(build_program(dir_, s.vs, s.fs, s.defines, err));
+  bool all = std::all_of(built.begin(), built.end(), [](GLuint id) { return id != 0; });
+  if (!all) {
+    for (GLuint id : built)
+      if (id) glDeleteProgram(id);
+    throw std::runtime_error(err);
+  }
+  for (size_t i = 0; i < built.size(); ++i) {
+    if (specs[i].p->id) glDeleteProgram(specs[i].p->id);
+    specs[i].p->id = built[i];
+  }
+  ++generation_;
+}
+
+}  // namespace arc

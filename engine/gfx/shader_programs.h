@@ -1,0 +1,48 @@
+// gfx/shader_programs.h — every GLSL program of the renderer, built from the shader folder.
+//
+// All programs build together or not at all: reload() compiles the whole folder again and, on
+// any error, keeps the old programs and returns the compiler's text (hot reload while the game
+// runs keeps the last good shaders on screen). generation() counts successful builds, so a pass
+// that bakes something with a shader (the sky's cube map) knows to bake again.
+//
+//   ShaderPrograms programs(ARCFIRE_SOURCE_DIR "/shaders");  // throws when a shader fails
+//   glUseProgram(programs.mesh.id);
+//   glUniform1i(programs.mesh.loc("u_base_tex"), 0);
+//   std::string error = programs.reload();                   // empty on success
+#pragma once
+#include <epoxy/gl.h>
+
+#include <string>
+
+namespace arc {
+
+struct Program {
+  GLuint id = 0;
+  GLint loc(const char* name) const { return glGetUniformLocation(id, name); }
+};
+
+class ShaderPrograms {
+ public:
+  // Throws std::runtime_error("shader build failed: ...") when a program does not build.
+  explicit ShaderPrograms(std::string shader_dir);
+  ~ShaderPrograms();
+  ShaderPrograms(const ShaderPrograms&) = delete;
+  ShaderPrograms& operator=(const ShaderPrograms&) = delete;
+
+  // Rebuilds every program from the folder; on error the old ones stay and the error text is
+  // returned, an empty string means success.
+  std::string reload();
+  int generation() const { return generation_; }
+
+  Program sky, sky_exact, stars, mesh, hud;
+  // particle.vert + particle.frag with SOFT / CONTRAST / CONTRAST_SQUARE defined: hard edges,
+  // linear soft edges, the general contrast curve, and the curve at power 2 (a square).
+  Program particle_hard, particle_soft, particle_contrast, particle_square;
+
+ private:
+  void build_all();  // throws with the compiler's text; leaves the old programs on failure
+  std::string dir_;
+  int generation_ = 0;
+};
+
+}  // namespace arc

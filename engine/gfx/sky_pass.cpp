@@ -1,0 +1,155 @@
+// gfx/sky_pass.cpp — seeded starfield, nebula cube-map bake, and the sky draw.
+#include "gfx/sky_pass.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/mat3x3.hpp>
+
+#include "core/rng.h"
+
+namespace arc {
+namespace {
+
+// Each cube face as sky_exact.frag sees it: columns right, up, back such that a face pixel at
+// (sc, tc) in [−1, 1]² looks along right·sc + up·tc − back, the direction the GL cube map rules
+// (major axis, sc, tc) assign to that texel.
+const glm::mat3 kCubeFaceBasis[6] = {
+    glm::mat3(glm::vec3(0, 0, -1), glm::vec3(0, -1, 0), glm::vec3(-1, 0, 0)),  // +X
+    glm::mat3(glm::vec3(0, 0, 1), glm::vec3(0, -1, 0), glm::vec3(1, 0, 0)),    // −X
+    glm::mat3(glm::vec3(1, 0, 0), glm::vec3(0, 0, 1), glm::vec3(0, -1, 0)),    // +Y
+    glm::mat3(glm::vec3(1, 0, 0), glm::vec3(0, 0, -1), glm::vec3(0, 1, 0)),    // −Y
+    glm::mat3(glm::vec3(1, 0, 0), glm::vec3(0, -1, 0), glm::vec3(0, 0, -1)),   // +Z
+    glm::mat3(glm::vec3(-1, 0, 0), glm::vec3(0, -1, 0), glm::vec3(0, 0, 1)),   // −Z
+};
+
+}  // namespace
+
+SkyPass::SkyPass() {
+  glGenVertexArrays(1, &empty_vao_);
+  glGenVertexArrays(1, &star_vao_);
+  glGenBuffers(1, &star_vbo_);
+}
+
+SkyPass::~SkyPass() {
+  GLuint vaos[] = {empty_vao_, star_vao_};
+  glDeleteVertexArrays(2, vaos);
+  glDeleteBuffers(1, &star_vbo_);
+  glDeleteTextures(1, &cube_);
+  glDeleteFramebuffers(1, &cube_fbo_);
+}
+
+void SkyPass::build_stars(uint64_t seed) {
+  // Seeded stars: a few bright ones, many faint, tints from red dwarfs to blue giants.
+  const int n = 2600;
+  Rng r{seed, 0x57A25, 0};
+  std::vector<float> data;
+  data.reserve(n * 7);
+  for (int i = 0; i < n; ++i) {
+    glm::dvec3 d = r.unit_vector(uint64_t(i));
+    double u = r.uniform(uint64_t(n) * 4 + i);
+    double bright = 0.2 + 0.8 * std::pow(u, 5.0);
+    double t = r.uniform(uint64_t(n) * 5 + i);
+    glm::dvec3 tint = t < 0.2 ? glm::dvec3(1.0, 0.75, 0.6) : t < 0.55 ? glm::dvec3(1.0, 0.95, 0.88)
+                                                          : t < 0.85 ? glm::dvec3(0.9, 0.95, 1.0)
+                                                                     : glm::dvec3(0.7, 0.82, 1.0);
+    float size = float(2.0 + 3.0 * std::pow(u, 4.0));
+    glm::vec3 c = glm::vec3(tint * bright * 1.6);
+    data.insert(data.end(), {float(d.x), float(d.y), float(d.z), size, c.r, c.g, c.b});
+  }
+  lobe_a_ = glm::vec3(r.unit_vector(uint64_t(n) * 6));
+  lobe_b_ = glm::vec3(r.unit_vector(uint64_t(n) * 6 + 1));
+  glBindVertexArray(star_vao_);
+  glBindBuffer(GL_ARRAY_BUFFER, star_vbo_);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * 4), data.data(), GL_STATIC_DRAW);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, 28, nullptr);
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 28, reinterpret_cast<void*>(16));
+  glBindVertexArray(0);
+  star_count_ = n;
+  star_seed_ = seed;
+}
+
+void SkyPass::set_uniforms(const Program& p, const glm::mat3& basis, float tan_x, float tan_y) const {
+  glUniformMatrix3fv(p.loc("u_cam_basis"), 1, GL_FALSE, glm::value_ptr(basis));
+  glUniform2f(p.loc("u_tan_half"), tan_x, tan_y);
+  glUniform3fv(p.loc("u_lobe_a"), 1, glm::value_ptr(lobe_a_));
+  glUniform3fv(p.loc("u_lobe_b"), 1, glm::value_ptr(lobe_b_));
+  glUniform1f(p.loc("u_seed"), float(star_seed_ % 1000));
+}
+
+// The nebula changes only with the level's seed, so it is rendered once into the six faces of
+// a half-float cube map (a face of 256² is 0.35° a texel, the noise's finest feature about 4°)
+// and each frame looks it up. Seamless filtering hides the face edges.
+void SkyPass::bake(const ShaderPrograms& programs, int resolution) {
+  const int n = resolution;
+  if (!cube_) {
+    glGenTextures(1, &cube_);
+    glGenFramebuffers(1, &cube_fbo_);
+  }
+  glBindTexture(GL_TEXTURE_CUBE_MAP, cube_);
+  for (int f = 0; f < 6; ++f)
+    glTexImage2D(GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f), 0, GL_RGBA16F, n, n, 0, GL_RGBA, GL_FLOAT, nullptr);
+  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAX_LEVEL, 0);
+  glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+  GLint fbo = 0, vp[4];
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &fbo);
+  glGetIntegerv(GL_VIEWPORT, vp);
+  glBindFramebuffer(GL_FRAMEBUFFER, cube_fbo_);
+  glViewport(0, 0, n, n);
+  glUseProgram(programs.sky_exact.id);
+  glBindVertexArray(empty_vao_);
+  for (int f = 0; f < 6; ++f) {
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f), cube_, 0);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+      throw std::runtime_error("sky cube map framebuffer incomplete");
+    set_uniforms(programs.sky_exact, kCubeFaceBasis[f], 1.0f, 1.0f);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(fbo));
+  glViewport(vp[0], vp[1], vp[2], vp[3]);
+  cube_size_ = n;
+  cube_seed_ = star_seed_;
+  cube_shader_generation_ = programs.generation();
+}
+
+int SkyPass::draw(const RenderView& v, const ShaderPrograms& programs, const ViewProjection& vp,
+                  const RenderSettings& rs, int scene_h) {
+  if (star_seed_ != v.starfield_seed) build_stars(v.starfield_seed);
+  glDisable(GL_DEPTH_TEST);
+  glDepthMask(GL_FALSE);
+  glDisable(GL_BLEND);
+  if (!rs.sky_exact && (cube_seed_ != star_seed_ || cube_size_ != rs.sky_resolution ||
+                        cube_shader_generation_ != programs.generation()))
+    bake(programs, rs.sky_resolution);
+  const Program& p = rs.sky_exact ? programs.sky_exact : programs.sky;
+  glUseProgram(p.id);
+  double ty = std::tan(v.camera.fov_y_radians * 0.5);
+  set_uniforms(p, vp.camera_basis, float(ty * vp.aspect), float(ty));
+  glUniform1i(p.loc("u_sky"), 0);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_CUBE_MAP, cube_);
+  glBindVertexArray(empty_vao_);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE);
+  glEnable(GL_PROGRAM_POINT_SIZE);
+  glUseProgram(programs.stars.id);
+  glUniformMatrix4fv(programs.stars.loc("u_view_proj"), 1, GL_FALSE, glm::value_ptr(vp.view_proj));
+  glUniform1f(programs.stars.loc("u_pixel_scale"), float(std::max(1.0, scene_h / 720.0)));
+  glBindVertexArray(star_vao_);
+  glDrawArrays(GL_POINTS, 0, star_count_);
+  glDisable(GL_PROGRAM_POINT_SIZE);
+  glDisable(GL_BLEND);
+  return 2;
+}
+
+}  // namespace arc

@@ -1,0 +1,53 @@
+// gfx/sky_pass.h — the background at infinity: nebula and starfield, keyed by the level's seed.
+//
+// First pass of a frame, into the cleared scene buffer with depth off. The nebula is either
+// looked up in a cube map baked once per seed, resolution and shader build (render.sky =
+// baked) or evaluated per pixel (exact, the reference); the stars are points blended on top.
+// Both follow RenderView::starfield_seed, which also orients the nebula's two lobes.
+//
+//   SkyPass sky;
+//   int draw_calls = sky.draw(view, programs, make_view_projection(...), settings, scene_height);
+#pragma once
+#include <epoxy/gl.h>
+
+#include <cstdint>
+
+#include <glm/vec3.hpp>
+
+#include "gfx/render_settings.h"
+#include "gfx/render_view.h"
+#include "gfx/shader_programs.h"
+#include "gfx/view_projection.h"
+
+namespace arc {
+
+class SkyPass {
+ public:
+  SkyPass();
+  ~SkyPass();
+  SkyPass(const SkyPass&) = delete;
+  SkyPass& operator=(const SkyPass&) = delete;
+
+  // Draws into the bound framebuffer; `scene_height` sizes the stars. Returns the draw calls.
+  int draw(const RenderView& view, const ShaderPrograms& programs, const ViewProjection& vp,
+           const RenderSettings& settings, int scene_height);
+
+ private:
+  void build_stars(uint64_t seed);
+  void bake(const ShaderPrograms& programs, int resolution);
+  void set_uniforms(const Program& p, const glm::mat3& basis, float tan_x, float tan_y) const;
+
+  GLuint empty_vao_ = 0;  // the full-screen triangle is made in the vertex shader
+  GLuint star_vao_ = 0, star_vbo_ = 0;
+  int star_count_ = 0;
+  uint64_t star_seed_ = ~0ull;
+  glm::vec3 lobe_a_{1, 0, 0}, lobe_b_{0, 1, 0};
+  // The baked nebula and what it was baked for: made again when the seed, the resolution or
+  // the shaders change.
+  GLuint cube_ = 0, cube_fbo_ = 0;
+  int cube_size_ = 0;
+  uint64_t cube_seed_ = ~0ull;
+  int cube_shader_generation_ = -1;
+};
+
+}  // namespace arc

@@ -1,0 +1,190 @@
+// The particle batch on the CPU, no GL context: culling against the frustum's sides, the
+// back-to-front sort (and its absence for pure additive particles), the draw limit, and the
+// soft-edge flag set only where an opaque mesh is within a particle's reach.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "gfx/particle_batch.h"
+#include "scene_models.h"
+
+namespace arc {
+namespace {
+
+using scenes::particle;
+
+// Camera at the origin looking along −Z, a square view: the horizontal half-angle is the
+// vertical one, 0.45 rad.
+RenderView base_view() {
+  RenderView v;
+  v.camera.fov_y_radians = 0.9;
+  v.camera.near_plane = 0.1;
+  return v;
+}
+
+ParticleBatch prepare(const RenderView& v, const ParticleBatchOptions& options = {}, const ModelCoverBoxes& boxes = {}) {
+  ParticleBatch batch;
+  batch.prepare(v, make_view_projection(v.camera, 1.0, true, true), boxes, options);
+  return batch;
+}
+
+std::vector<float> depths(const ParticleBatch& batch) {
+  std::vector<float> z;
+  for (const ParticleInstance& p : batch.particles) z.push_back(p.pos[2]);
+  return z;
+}
+
+TEST(ParticleBatch, CullsParticlesWhollyOffTheFrustum) {
+  RenderView v = base_view();
+  const float edge = 10.0f * std::tan(0.45f);  // the right edge at depth 10
+  v.particles.push_back(particle({0, 0, -10}, 1.0f, glm::vec3(1), 1.0f, 1.0f));
+  v.particles.push_back(particle({edge + 3.0f, 0, -10}, 1.0f, glm::vec3(1), 1.0f, 1.0f));   // off by 2 quad sizes
+  v.particles.push_back(particle({0, -edge - 3.0f, -10}, 1.0f, glm::vec3(1), 1.0f, 1.0f));  // below
+  v.particles.push_back(particle({edge + 0.5f, 0, -10}, 1.0f, glm::vec3(1), 1.0f, 1.0f));   // reaches in
+  v.particles.push_back(particle({0, 0, 5}, 1.0f, glm::vec3(1), 1.0f, 1.0f));              // behind the camera
+  v.particles.push_back(particle({0, 0, -10}, 1.0f, glm::vec3(0), 0.0f, 1.0f));            // dark: invisible
+  const ParticleBatch batch = prepare(v);
+  EXPECT_EQ(batch.culled_offscreen, 2);
+  ASSERT_EQ(batch.particles.size(), 2u);
+  EXPECT_EQ(batch.visible, 2);
+  EXPECT_EQ(batch.particles[0].pos[0], 0.0f);
+  EXPECT_EQ(batch.particles[1].pos[0], edge + 0.5f);
+}
+
+TEST(ParticleBatch, KeepsAnAxisLockedSegmentThatReachesIntoView) {
+  RenderView v = base_view();
+  const float edge = 10.0f * std::tan(0.45f);
+  ParticleInstance beam = particle({-edge - 2.0f, 0, -10}, 0.3f, glm::vec3(1), 1.0f, 1.0f);
+  beam.billboard = uint8_t(Billboard::AxisLocked);
+  beam.axis[0] = 6.0f;  // centre off the left edge, the segment runs 1 unit into the view
+  v.particles.push_back(beam);
+  EXPECT_EQ(prepare(v).particles.size(), 1u);
+  v.particles[0].axis[0] = 2.0f;  // now it ends 1 unit short of the edge
+  EXPECT_EQ(prepare(v).culled_offscreen, 1);
+}
+
+// Three particles at depths 5, 9 and 7, in that order, all with the same burn.
+RenderView three_at_depths_5_9_7(float burn) {
+  RenderView v = base_view();
+  for (float z : {-5.0f, -9.0f, -7.0f}) v.particles.push_back(particle({0, 0, z}, 1.0f, glm::vec3(1), 0.8f, burn));
+  return v;
+}
+
+TEST(ParticleBatch, SortsAlphaParticlesBackToFront) {
+  const ParticleBatch batch = prepare(three_at_depths_5_9_7(0.0f));
+  EXPECT_EQ(depths(batch), (std::vector<float>{-9.0f, -7.0f, -5.0f}));
+  EXPECT_EQ(batch.sorted, 3);
+}
+
+TEST(ParticleBatch, LeavesPureAdditiveParticlesInTheirOrder) {
+  const ParticleBatch batch = prepare(three_at_depths_5_9_7(1.0f));
+  EXPECT_EQ(depths(batch), (std::vector<float>{-5.0f, -9.0f, -7.0f}));
+  EXPECT_EQ(batch.sorted, 0);
+}
+
+// An additive glow in front of smoke must not be darkened by it: one alpha-blended particle
+// orders the whole set.
+TEST(ParticleBatch, OneAlphaParticleOrdersTheAdditiveOnesToo) {
+  RenderView v = three_at_depths_5_9_7(1.0f);
+  v.particles[2].burn = 0.5f;
+  const ParticleBatch batch = prepare(v);
+  EXPECT_EQ(depths(batch), (std::vector<float>{-9.0f, -7.0f, -5.0f}));
+  ParticleBatchOptions off;
+  off.sorting = RenderSettings::Sorting::Off;
+  EXPECT_EQ(depths(prepare(v, off)), (std::vector<float>{-5.0f, -9.0f, -7.0f}));
+  EXPECT_EQ(prepare(v, off).sorted, 0);
+}
+
+// Cluster 1 = {at 5, at 9}, mean 7; cluster 0 = {at 8}: cluster 0 first, then cluster 1 in
+// its own order.
+TEST(ParticleBatch, ClusterSortingOrdersWholeClustersByMeanDepth) {
+  RenderView v = base_view();
+  v.particles = {particle({0, 0, -5}, 1.0f, glm::vec3(1), 1.0f, 0.0f), particle({0, 0, -9}, 1.0f, glm::vec3(1), 1.0f, 0.0f),
+                 particle({0, 0, -8}, 1.0f, glm::vec3(1), 1.0f, 0.0f)};
+  v.particles[0].cluster = v.particles[1].cluster = 1;
+  ParticleBatchOptions options;
+  options.sorting = RenderSettings::Sorting::Cluster;
+  EXPECT_EQ(depths(prepare(v, options)), (std::vector<float>{-8.0f, -5.0f, -9.0f}));
+}
+
+TEST(ParticleBatch, KeepsTheNearestParticlesPastTheDrawLimit) {
+  RenderView v = base_view();
+  for (float z : {-8.0f, -5.0f, -4.0f}) v.particles.push_back(particle({0, 0, z}, 0.5f, glm::vec3(1), 1.0f, 0.0f));
+  ParticleBatchOptions options;
+  options.max_particles = 2;
+  const ParticleBatch batch = prepare(v, options);
+  EXPECT_EQ(batch.over_draw_limit, 1);
+  EXPECT_EQ(batch.visible, 3);
+  EXPECT_EQ(depths(batch), (std::vector<float>{-5.0f, -4.0f}));
+}
+
+// A wall 6 × 20 covering the left half of the view at depth 10 (model 0). Soft particles of
+// size 0.5 (their depth extent): one just in front of it, one far in front, one beside it on
+// the right half, one hidden behind it, and one near it with soft edges off.
+struct ReachScene {
+  RenderView view = base_view();
+  ModelCoverBoxes boxes;
+  ReachScene() {
+    const ModelData wall = scenes::wall_model(6, 20, {0.3f, 0.4f, 0.5f, 1}, glm::vec3(0));
+    boxes.push_back(cover_boxes(wall.primitives, 3));
+    view.meshes.push_back({0, {-3.2, 0, -10}});
+    view.meshes.push_back({7, {0, 0, -10.2}});  // an unknown model: no occluder
+    for (float z : {-9.8f, -5.0f}) view.particles.push_back(particle({-3, 0, z}, 0.5f, glm::vec3(1), 1.0f, 1.0f, SoftEdge::Linear));
+    view.particles.push_back(particle({3, 0, -10}, 0.5f, glm::vec3(1), 1.0f, 1.0f, SoftEdge::Linear));
+    view.particles.push_back(particle({-3, 0, -12}, 0.5f, glm::vec3(1), 1.0f, 1.0f, SoftEdge::Linear));
+    view.particles.push_back(particle({-3, 0, -9.8f}, 0.5f, glm::vec3(1), 1.0f, 1.0f, SoftEdge::Off));
+  }
+};
+
+TEST(ParticleBatch, FlagsSoftEdgesClearWhereNoMeshIsWithinReach) {
+  ReachScene scene;
+  const ParticleBatch batch = prepare(scene.view, {}, scene.boxes);
+  ASSERT_EQ(batch.particles.size(), 5u);
+  const uint8_t linear = uint8_t(SoftEdge::Linear);
+  EXPECT_EQ(batch.particles[0].soft_edge, linear) << "just in front of the wall: soft";
+  EXPECT_EQ(batch.particles[1].soft_edge, linear | kSoftClear) << "far in front of it";
+  EXPECT_EQ(batch.particles[2].soft_edge, linear | kSoftClear) << "beside it on screen";
+  EXPECT_EQ(batch.particles[3].soft_edge, linear | kSoftClear) << "behind it";
+  EXPECT_EQ(batch.particles[4].soft_edge, 0) << "soft edges off stay off, unflagged";
+  EXPECT_EQ(batch.soft_shaded, 1);
+  EXPECT_TRUE(batch.any_soft);
+  EXPECT_FALSE(batch.any_contrast);
+  EXPECT_FALSE(prepare(scene.view).any_soft) << "no mesh at all: nothing needs the depth copy";
+}
+
+TEST(ParticleBatch, SoftOverrideAppliesToEveryParticle) {
+  ReachScene scene;
+  ParticleBatchOptions options;
+  options.soft_override = int(SoftEdge::Off);
+  const ParticleBatch off = prepare(scene.view, options, scene.boxes);
+  EXPECT_FALSE(off.any_soft);
+  for (const ParticleInstance& p : off.particles) EXPECT_EQ(p.soft_edge, 0);
+  options.soft_override = int(SoftEdge::Contrast);
+  const ParticleBatch contrast = prepare(scene.view, options, scene.boxes);
+  EXPECT_EQ(contrast.soft_shaded, 2) << "the one in front and the one that had soft edges off";
+  EXPECT_TRUE(contrast.any_contrast);
+  EXPECT_EQ(contrast.particles[4].soft_edge, uint8_t(SoftEdge::Contrast));
+}
+
+TEST(RadixSort, BackToFrontAndStable) {
+  std::vector<uint32_t> keys = {5, 0x80000000u, 5, 7, 0, 0xFFFFFFFFu, 300, 70000};
+  std::vector<uint32_t> order;
+  radix_sort_back_to_front(keys, order);
+  ASSERT_EQ(order.size(), keys.size());
+  for (size_t i = 1; i < order.size(); ++i) {
+    EXPECT_GE(keys[order[i - 1]], keys[order[i]]);
+    if (keys[order[i - 1]] == keys[order[i]]) {
+      EXPECT_LT(order[i - 1], order[i]);
+    }
+  }
+  EXPECT_EQ(order.front(), 5u);
+}
+
+TEST(RadixSort, SortableBitsKeepTheOrderOfFloats) {
+  const float values[] = {-1e30f, -2.5f, -0.0f, 0.0f, 1e-30f, 3.0f, 1e30f};
+  for (size_t i = 1; i < std::size(values); ++i) EXPECT_LE(sortable_bits(values[i - 1]), sortable_bits(values[i]));
+  EXPECT_LT(sortable_bits(-2.5f), sortable_bits(3.0f));
+}
+
+}  // namespace
+}  // namespace arc
