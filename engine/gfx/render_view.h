@@ -4,7 +4,7 @@
 // never sees the game. World positions are double; the renderer subtracts the camera position
 // in double before converting to float. Particles arrive already camera-relative, in float.
 //
-// example: tests/unit/gfx/test_examples.cpp, RenderViewExample.DescribesAFrame
+// Example, compiled as RenderViewExample.DescribesAFrame in tests/unit/gfx/test_examples.cpp:
 //   RenderView view;
 //   view.camera.position = {0.0, 2.0, 30.0};
 //   view.camera.fov_y_radians = 1.0;

@@ -9,7 +9,7 @@
 // renderer.cpp. Depth is reversed-Z with a float buffer when clip control exists, standard
 // otherwise. All positions reach the GPU relative to the camera (double subtraction, then float).
 //
-// example: tests/unit/gfx/test_examples.cpp, RendererExample.DrawsAView
+// Example, compiled as RendererExample.DrawsAView in tests/unit/gfx/test_examples.cpp:
 //   Renderer renderer({.offscreen = true});
 //   int ship = renderer.add_model(load_model(ARCFIRE_SOURCE_DIR "/assets/models/viper.glb"));
 //   RenderView view;

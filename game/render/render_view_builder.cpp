@@ -15,6 +15,19 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 glm::dvec3 lerp_pos(const glm::dvec3& a, const glm::dvec3& b, double t) { return a + (b - a) * t; }
 
+// Ships as the mesh pass draws them at `alpha`; collect() places their attached clusters
+// (shield, exhausts, beams) in the same pose, so they sit on the mesh between ticks. Ship ids
+// ascend, so the list is sorted by owner as collect() needs. Projectiles have no mesh and keep
+// their tick pose.
+std::vector<DrawnOwner> drawn_ships(const World& w, double alpha) {
+  std::vector<DrawnOwner> out;
+  for (const Ship& s : w.ships)
+    if (s.alive)
+      out.push_back({ship_owner(s.id), lerp_pos(s.prev_position, s.position, alpha),
+                     glm::normalize(glm::slerp(s.prev_orientation, s.orientation, alpha))});
+  return out;
+}
+
 }  // namespace
 
 const std::vector<std::string>& required_models(const World& world) { return world.model_paths; }
@@ -76,7 +89,7 @@ void build_render_view(const World& w, double alpha, const CameraSettings& cs, c
   pc.fov_y_radians = cam.fov_y_radians;
   pc.aspect = double(width) / double(height);
   pc.near_plane = cam.near_plane;
-  w.particles->collect(pc, out.particles);
+  w.particles->collect(pc, out.particles, drawn_ships(w, alpha));
 
   layout_hud(w, cam, hud, alpha, width, height, out.hud);
 }

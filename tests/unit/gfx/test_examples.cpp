@@ -1,13 +1,9 @@
 // The usage examples in the banners of engine/gfx headers, as tests. Each example runs here
-// between "example begin" and "example end", and HeaderExamples.MatchTheirTests fails when a
-// banner and its test no longer say the same thing, so an example cannot go stale.
+// between "example begin" and "example end", and HeaderExamples.MatchTheirTests (tests/unit/
+// core) fails when a banner's lines are not in its test, so an example cannot go stale.
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <fstream>
-#include <sstream>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "gfx_test_util.h"
@@ -57,48 +53,6 @@ TEST(RenderViewExample, DescribesAFrame) {
   const FrameStats stats = renderer.last_stats();
   EXPECT_EQ(stats.particles_drawn, 1);
   EXPECT_EQ(stats.draw_calls, 5) << "sky (2), the box, the spark, the HUD";
-}
-
-std::vector<std::string> read_lines(const std::string& path) {
-  std::ifstream f(path);
-  std::vector<std::string> lines;
-  for (std::string line; std::getline(f, line);) lines.push_back(line);
-  return lines;
-}
-
-// The lines under "// example: <this file>, <test>" in a header, without their "//   ".
-std::vector<std::string> banner_example(const std::string& header, const std::string& test) {
-  const std::vector<std::string> lines = read_lines(header);
-  std::vector<std::string> example;
-  const std::string marker = "// example: tests/unit/gfx/test_examples.cpp, " + test;
-  auto it = std::find(lines.begin(), lines.end(), marker);
-  if (it == lines.end()) return example;
-  for (++it; it != lines.end() && it->rfind("//   ", 0) == 0; ++it) example.push_back(it->substr(5));
-  return example;
-}
-
-// The lines between "example begin" and "example end" in the body of `test`, unindented.
-std::vector<std::string> test_example(const std::string& test) {
-  const std::vector<std::string> lines = read_lines(ARCFIRE_SOURCE_DIR "/tests/unit/gfx/test_examples.cpp");
-  const std::string suite = test.substr(0, test.find('.')), name = test.substr(test.find('.') + 1);
-  auto it = std::find(lines.begin(), lines.end(), "TEST(" + suite + ", " + name + ") {");
-  std::vector<std::string> example;
-  it = std::find(it, lines.end(), "  // example begin");
-  if (it == lines.end()) return example;
-  for (++it; it != lines.end() && *it != "  // example end"; ++it) example.push_back(it->substr(std::min<size_t>(2, it->size())));
-  return example;
-}
-
-TEST(HeaderExamples, MatchTheirTests) {
-  const std::pair<const char*, const char*> examples[] = {
-      {"engine/gfx/renderer.h", "RendererExample.DrawsAView"},
-      {"engine/gfx/render_view.h", "RenderViewExample.DescribesAFrame"},
-  };
-  for (const auto& [header, test] : examples) {
-    const std::vector<std::string> in_banner = banner_example(std::string(ARCFIRE_SOURCE_DIR "/") + header, test);
-    ASSERT_FALSE(in_banner.empty()) << header << " names no example in " << test;
-    EXPECT_EQ(in_banner, test_example(test)) << header << " and " << test << " differ";
-  }
 }
 
 }  // namespace
