@@ -295,7 +295,8 @@ void WindowSession::draw() {
   hud_.pause_selection = menu_.selection;
   hud_.pause_items.clear();
   for (PauseMenu::Item item : PauseMenu::items(decided))
-    hud_.pause_items.push_back(PauseMenu::label(item, decided, game_options_.difficulty, w.difficulty, recorder_ != nullptr));
+    hud_.pause_items.push_back(
+        PauseMenu::label(item, decided, game_options_.difficulty, w.difficulty, recorder_ != nullptr));
   hud_.error_banner = reload_error_.empty() ? "" : "reload failed: " + reload_error_;
   hud_.notice = window_->time_seconds() < notice_until_ ? notice_ : "";
   const MouseReticle r = input_->reticle();

@@ -72,8 +72,10 @@ std::string fmt(const char* f, double v) {
   return buf;
 }
 
-// HUD sizes follow the window height: 1 at 720 pixels.
+// HUD sizes follow the window height: 1 at 720 pixels. Text never shrinks below the font's
+// own size, where its one-pixel strokes would blur away.
 double height_scale(int height) { return std::max(height / 720.0, 0.5); }
+double text_scale(double at_720, int height) { return std::max(at_720 * height_scale(height), 1.0); }
 constexpr double kGlyphAdvance = 7.0;  // pixels per character at text scale 1 (gfx/hud_font)
 
 std::string outcome_text(const World& w) {
@@ -91,23 +93,25 @@ void hud_outcome(const World& w, int width, int height, HudLayer& h) {
   if (w.outcome == Outcome::Undecided) return;
   const double k = height_scale(height);
   const glm::vec4 c = w.outcome == Outcome::Defeat ? kHudRed : kHudGreen;
-  centred_text(h, width * 0.5, height * 0.3 - (w.paused ? 70 * k : 0.0), 3.0 * k, c, outcome_text(w));
+  centred_text(h, width * 0.5, height * 0.3 - (w.paused ? 70 * k : 0.0), text_scale(3.0, height), c, outcome_text(w));
   if (w.paused || w.player < 0) return;
-  centred_text(h, width * 0.5, height * 0.3 + 48 * k, 1.2 * k, kHudWhite, "Esc: menu (retry, difficulty, quit)");
+  const std::string hint = "Esc: menu (retry, difficulty, quit)";
+  centred_text(h, width * 0.5, height * 0.3 + 48 * k, text_scale(1.2, height), kHudWhite, hint);
 }
 
 void hud_pause_menu(const World& w, const HudState& state, int width, int height, HudLayer& h) {
   if (!w.paused) return;
-  const double k = height_scale(height), item_scale = 1.6 * k, row = 36 * k;
+  const double k = height_scale(height), item_scale = text_scale(1.6, height), row = 22.5 * item_scale;
   quad(h, 0, 0, width, height, {0.0f, 0.0f, 0.05f, 0.55f});
-  if (w.outcome == Outcome::Undecided) centred_text(h, width * 0.5, height * 0.3, 2.5 * k, kHudWhite, "PAUSED");
+  if (w.outcome == Outcome::Undecided)
+    centred_text(h, width * 0.5, height * 0.3, text_scale(2.5, height), kHudWhite, "PAUSED");
   size_t longest = 0;
   for (const std::string& item : state.pause_items) longest = std::max(longest, item.size());
   const double box = longest * kGlyphAdvance * item_scale + 40 * k;
   for (size_t i = 0; i < state.pause_items.size(); ++i) {
     const bool sel = int(i) == state.pause_selection;
     const double y = height * 0.4 + row * i;
-    if (sel) quad(h, width * 0.5 - box * 0.5, y - 6 * k, box, 32 * k, {0.3f, 0.6f, 1.0f, 0.35f});
+    if (sel) quad(h, width * 0.5 - box * 0.5, y - 4 * item_scale, box, 20 * item_scale, {0.3f, 0.6f, 1.0f, 0.35f});
     centred_text(h, width * 0.5, y, item_scale, sel ? kHudYellow : kHudWhite, state.pause_items[i]);
   }
 }
@@ -115,8 +119,8 @@ void hud_pause_menu(const World& w, const HudState& state, int width, int height
 // Text wrapped within the screen's margins on a dark band centred across it, `top` down.
 void text_band(HudLayer& h, const std::string& s, double top, int width, int height, const glm::vec4& back,
                const glm::vec4& colour) {
-  const double k = height_scale(height), scale = 1.2 * k, margin = 24 * k, pad = 8 * k;
-  const double line_height = 16 * k, advance = kGlyphAdvance * scale;
+  const double k = height_scale(height), scale = text_scale(1.2, height), margin = 24 * k, pad = 8 * k;
+  const double line_height = 14 * scale, advance = kGlyphAdvance * scale;
   const size_t chars = size_t(std::max(8.0, (width - 2 * margin - 2 * pad) / advance));
   const std::vector<std::string> lines = wrap_text(s, chars, 6);
   size_t longest = 0;
@@ -176,12 +180,13 @@ void hud_throttle_and_speed(const Ship& me, int height, HudLayer& h) {
   const double reached = std::clamp(speed / std::max(me.cls->max_speed, 1e-9), 0.0, 1.0);
   const double tick_y = top + bar_h - 1 - (bar_h - 2) * reached;
   line(h, x - 4 * k, tick_y, x + bar_w + 4 * k, tick_y, kHudWhite, float(2 * k));
-  text(h, x, top - 16 * k, 1.0 * k, kHudYellow, "THR");
-  text(h, x + bar_w + 8 * k, top, 1.4 * k, kHudWhite, fmt("%.0f m/s", speed));
+  const double label_scale = text_scale(1.0, height), speed_scale = text_scale(1.4, height);
+  text(h, x, top - 16 * label_scale, label_scale, kHudYellow, "THR");
+  text(h, x + bar_w + 8 * k, top, speed_scale, kHudWhite, fmt("%.0f m/s", speed));
   std::string setting = fmt("%.0f%%", set * 100.0);
   if (set < 0) setting = "R " + fmt("%.0f%%", -set * 100.0);
   if (me.afterburner_on) setting += " AB";
-  text(h, x + bar_w + 8 * k, top + 22 * k, 1.2 * k, fill, setting);
+  text(h, x + bar_w + 8 * k, top + 16 * speed_scale, text_scale(1.2, height), fill, setting);
 }
 
 void hud_radar(const World& w, const Ship& me, int width, int height, HudLayer& h) {

@@ -99,8 +99,8 @@ TEST(HudAdditions, ReticleIsDrawnOnlyWhenShown) {
   state.reticle = {true, 0.1, -0.05, 0.25, 0.015};
   const arc::HudLayer h = hud_of(game, state, 1280, 720);
   EXPECT_GT(h.lines.size(), lines + 48);  // the ring, the dead zone, the cursor
-  bool cursor = false;
+  bool cursor = false;  // a stroke of the cross centred 0.1 and -0.05 screen heights off the centre
   for (const arc::HudLine& l : h.lines)
-    cursor |= std::abs((l.x0 + l.x1) * 0.5f - (640.0f + 72.0f)) < 0.5f && std::abs((l.y0 + l.y1) * 0.5f - (360.0f - 36.0f)) < 0.5f;
+    cursor |= std::abs((l.x0 + l.x1) * 0.5f - 712.0f) < 0.5f && std::abs((l.y0 + l.y1) * 0.5f - 324.0f) < 0.5f;
   EXPECT_TRUE(cursor);
 }
