@@ -37,6 +37,24 @@ TEST(Bindings, UnknownActionIsRejected) {
   EXPECT_THROW(arc::load_bindings(p), arc::InputError);
 }
 
+TEST(Bindings, MouseModeAndThrottleRateAreValidated) {
+  std::string p = write_temp("b3.json", "{\n  \"mouse\": { \"mode\": \"trackball\" }\n}\n");
+  try {
+    arc::load_bindings(p);
+    FAIL() << "no error";
+  } catch (const arc::InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(p + ":2:", 0), 0u) << e.what();
+    EXPECT_NE(std::string(e.what()).find("joystick"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(arc::load_bindings(write_temp("b4.json", "{\"throttle\": {\"rate\": 0}}")), arc::InputError);
+  EXPECT_THROW(arc::load_bindings(write_temp("b5.json", "{\"mouse\": {\"sensitivity\": -1}}")), arc::InputError);
+  arc::Bindings b = arc::load_bindings(
+      write_temp("b6.json", "{\"mouse\": {\"mode\": \"joystick\", \"invert_y\": true}, \"throttle\": {\"rate\": 2}}"));
+  EXPECT_EQ(b.mouse_mode, arc::MouseMode::Joystick);
+  EXPECT_TRUE(b.mouse_invert_y);
+  EXPECT_EQ(b.throttle_rate, 2.0);
+}
+
 TEST(LiveInput, KeysBecomeFullAxesAndButtons) {
   arc::LiveInput in(arc::load_bindings(kDefaultBindings));
   arc::InputState s;
