@@ -161,11 +161,10 @@ void hud_reticle(const HudReticle& r, int width, int height, HudLayer& h) {
   line(h, x, y - d, x, y + d, kHudGreen);
 }
 
-// The set throttle as a bar beside the energy bar, a tick at the speed it has reached, and
-// the speed in m/s.
-void hud_throttle_and_speed(const Ship& me, int height, HudLayer& h) {
-  const double k = height_scale(height);
-  const double x = 258 * k, top = height - 110 * k, bar_w = 12 * k, bar_h = 80 * k;
+// The set throttle as a bar at `x`, from `top` to `bottom` beside the own ship's bars, a tick
+// at the speed it has reached, and the speed in m/s.
+void hud_throttle_and_speed(const Ship& me, double x, double top, double bottom, int height, HudLayer& h) {
+  const double k = height_scale(height), bar_w = 12 * k, bar_h = bottom - top;
   const double set = axis_value(me.controls.throttle);
   const double speed = std::sqrt(glm::dot(me.velocity, me.velocity));
   const glm::vec4 fill = set < 0 ? kHudRed : me.afterburner_on ? kHudWhite : kHudYellow;
@@ -273,6 +272,7 @@ void hud_own(const World& w, const Ship& me, const Projector& pr, int width, int
   bar(h, x, y, 220, 12, me.cls->shield > 0 ? me.shield / me.cls->shield : 0.0, kHudBlue, "SHIELD");
   bar(h, x, y + 34, 220, 12, me.hull / me.cls->hull, me.hull < 0.3 * me.cls->hull ? kHudRed : kHudGreen, "HULL");
   bar(h, x, y + 68, 220, 12, me.cls->energy > 0 ? me.energy / me.cls->energy : 0.0, kHudYellow, "ENERGY");
+  hud_throttle_and_speed(me, x + 220 + 14 * height_scale(height), y, y + 68 + 12, height, h);
   const char* weapon = me.secondary == SecondaryWeapon::Plasma ? "PLASMA" : "MISSILES";
   text(h, width - 260, height - 60, 1.2, kHudWhite, std::string("beam + ") + weapon);
   text(h, width - 260, height - 36, 1.2, kHudWhite, "kills " + std::to_string(me.kills));
@@ -314,7 +314,6 @@ void layout_hud(const World& w, const CameraView& cam, const HudState& state, do
       hud_own(w, me, pr, width, height, alpha, h);
       hud_target(w, me, pr, width, height, alpha, h);
       hud_radar(w, me, width, height, h);
-      hud_throttle_and_speed(me, height, h);
     }
   }
   hud_reticle(state.reticle, width, height, h);
