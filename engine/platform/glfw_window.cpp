@@ -1,10 +1,12 @@
 // GLFW window with an OpenGL 3.3 core forward-compatible context. F11 and Alt+Enter toggle
-// fullscreen here so every caller gets it; mouse deltas are raw when the cursor is captured.
+// fullscreen here so every caller gets it; mouse deltas are raw when the cursor is captured;
+// key and mouse-button press events are counted between polls.
 #include <epoxy/gl.h>
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
 #include <cstdlib>
+#include <utility>
 
 #include "platform/platform.h"
 
@@ -39,10 +41,16 @@ class GlfwWindow final : public Window {
     glfwSetInputMode(window_, GLFW_STICKY_KEYS, GLFW_TRUE);
     glfwSetInputMode(window_, GLFW_STICKY_MOUSE_BUTTONS, GLFW_TRUE);
     glfwSetWindowUserPointer(window_, this);
+    // Press events are counted as they arrive, so two taps between two polls are two presses.
     glfwSetKeyCallback(window_, [](GLFWwindow* w, int key, int, int action, int mods) {
       auto* self = static_cast<GlfwWindow*>(glfwGetWindowUserPointer(w));
       if (action != GLFW_PRESS) return;
+      count_press(self->key_presses_, key);
       if (key == GLFW_KEY_F11 || (key == GLFW_KEY_ENTER && (mods & GLFW_MOD_ALT))) self->toggle_fullscreen();
+    });
+    glfwSetMouseButtonCallback(window_, [](GLFWwindow* w, int button, int action, int) {
+      auto* self = static_cast<GlfwWindow*>(glfwGetWindowUserPointer(w));
+      if (action == GLFW_PRESS) count_press(self->mouse_presses_, button);
     });
     if (d.fullscreen) toggle_fullscreen();
     glfwGetCursorPos(window_, &last_x_, &last_y_);
@@ -54,6 +62,8 @@ class GlfwWindow final : public Window {
 
   void poll(InputState& in) override {
     glfwPollEvents();
+    in.key_presses = std::exchange(key_presses_, {});
+    in.mouse_presses = std::exchange(mouse_presses_, {});
     for (int k = GLFW_KEY_SPACE; k <= GLFW_KEY_LAST && k < int(in.keys.size()); ++k)
       in.keys[k] = glfwGetKey(window_, k) == GLFW_PRESS;
     for (int b = 0; b < int(in.mouse_buttons.size()); ++b)
@@ -108,7 +118,14 @@ class GlfwWindow final : public Window {
   double time_seconds() const override { return glfwGetTime(); }
 
  private:
+  template <size_t N>
+  static void count_press(std::array<uint8_t, N>& counts, int code) {
+    if (code >= 0 && size_t(code) < N && counts[size_t(code)] < 255) ++counts[size_t(code)];
+  }
+
   GLFWwindow* window_ = nullptr;
+  std::array<uint8_t, 512> key_presses_{};  // since the last poll, filled by the callbacks
+  std::array<uint8_t, 8> mouse_presses_{};
   double last_x_ = 0, last_y_ = 0;
   int windowed_x_ = 64, windowed_y_ = 64, windowed_w_ = 1280, windowed_h_ = 720;
 };

@@ -8,6 +8,7 @@
 // Creation failures throw arc::PlatformError naming the step that failed.
 #pragma once
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -33,6 +34,9 @@ int gamepad_button_code(std::string_view name);
 struct InputState {
   std::array<bool, 512> keys{};         // GLFW key codes
   std::array<bool, 8> mouse_buttons{};
+  // Press events since the last poll (a key tapped twice within one frame counts 2), saturating.
+  std::array<uint8_t, 512> key_presses{};
+  std::array<uint8_t, 8> mouse_presses{};
   double mouse_dx = 0, mouse_dy = 0;    // pixels moved since last poll
   bool gamepad_present = false;
   std::array<float, 6> gamepad_axes{};  // GLFW_GAMEPAD_AXIS_*

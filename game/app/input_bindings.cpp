@@ -1,4 +1,5 @@
-// Bindings loaded from JSON with positioned errors, and live device state turned into InputFrames.
+// Bindings files to Bindings, and LiveInput: devices to quantised InputFrames, commands and
+// app actions (the mouse-flight modes and the set throttle are described in the header).
 #include "game/app/input_bindings.h"
 
 #include <algorithm>
@@ -47,6 +48,19 @@ double deadzone(double v, double dz) {
   return std::copysign((a - dz) / (1.0 - dz), v);
 }
 
+// Quantises base + mouse + the error owed by the previous tick, and keeps the new error: small
+// per-tick mouse shares then add up to the motion that was made instead of rounding away.
+int8_t quantise_carrying(double base, double mouse, double& carry) {
+  if (mouse == 0.0) {
+    carry = 0.0;
+    return quantise_axis(base);
+  }
+  const double wanted = std::clamp(base + mouse + carry, -1.0, 1.0);
+  const int8_t q = quantise_axis(wanted);
+  carry = wanted - axis_value(q);
+  return q;
+}
+
 }  // namespace
 
 Bindings load_bindings(const std::string& path) {
@@ -59,6 +73,8 @@ Bindings load_bindings(const std::string& path) {
     b.yaw = axis(k, "yaw");
     b.roll = axis(k, "roll");
     b.throttle = axis(k, "throttle");
+    b.throttle_zero = key(k, "throttle_zero");
+    b.throttle_full = key(k, "throttle_full");
     b.strafe_x = axis(k, "strafe_x");
     b.strafe_y = axis(k, "strafe_y");
     b.fire_primary = key(k, "fire_primary");
@@ -78,9 +94,18 @@ Bindings load_bindings(const std::string& path) {
   if (auto mv = root.get("mouse")) {
     JsonObject m = mv->object();
     b.mouse_enabled = m.boolean("enabled", true);
-    b.mouse_sensitivity = m.number("sensitivity", 0.004, 0.0, 1.0);
+    b.mouse_mode = m.choice("mode", "relative", {"relative", "joystick"}) == "joystick" ? MouseMode::Joystick
+                                                                                       : MouseMode::Relative;
+    b.mouse_sensitivity = m.number("sensitivity", b.mouse_sensitivity, 0.001, 10.0);
     b.mouse_invert_y = m.boolean("invert_y", false);
+    b.joystick_radius = m.number("joystick_radius", b.joystick_radius, 0.02, 0.5);
+    b.joystick_deadzone = m.number("joystick_deadzone", b.joystick_deadzone, 0.0, 0.9);
     m.finish();
+  }
+  if (auto tv = root.get("throttle")) {
+    JsonObject t = tv->object();
+    b.throttle_rate = t.number("rate", b.throttle_rate, 0.05, 10.0);
+    t.finish();
   }
   if (auto gv = root.get("gamepad")) {
     JsonObject g = gv->object();
@@ -103,53 +128,129 @@ Bindings load_bindings(const std::string& path) {
   return b;
 }
 
+int presses_between(const InputState& before, const InputState& now, int code) {
+  if (code < 0) return 0;
+  if (code >= kMouseButtonBase) {
+    const size_t b = size_t(code - kMouseButtonBase);
+    if (b >= now.mouse_buttons.size()) return 0;
+    return std::max<int>(now.mouse_presses[b], now.mouse_buttons[b] && !before.mouse_buttons[b] ? 1 : 0);
+  }
+  const size_t k = size_t(code);
+  if (k >= now.keys.size()) return 0;
+  return std::max<int>(now.key_presses[k], now.keys[k] && !before.keys[k] ? 1 : 0);
+}
+
 bool LiveInput::down(const InputState& s, int code) const {
   if (code < 0) return false;
   if (code >= kMouseButtonBase) return s.mouse_buttons[size_t(code - kMouseButtonBase) % s.mouse_buttons.size()];
   return size_t(code) < s.keys.size() && s.keys[size_t(code)];
 }
 
-bool LiveInput::pressed(const InputState& s, int code) const { return down(s, code) && !down(prev_, code); }
-
 void LiveInput::sample(const InputState& s) {
   prev_ = cur_;
   cur_ = s;
   if (b_.mouse_enabled && !first_sample_) {
-    mouse_yaw_ += -s.mouse_dx * b_.mouse_sensitivity;
-    mouse_pitch_ += (b_.mouse_invert_y ? 1.0 : -1.0) * s.mouse_dy * b_.mouse_sensitivity;
+    if (b_.mouse_mode == MouseMode::Joystick) move_joystick(s.mouse_dx, s.mouse_dy);
+    else mouse_dx_ += s.mouse_dx, mouse_dy_ += s.mouse_dy;
   }
   first_sample_ = false;
+  if (presses_between(prev_, s, b_.throttle_zero) > 0) reset_throttle();
+  if (presses_between(prev_, s, b_.throttle_full) > 0) set_throttle_ = 1.0, throttle_held_at_zero_ = false;
+  queue_commands_and_actions(s);
+}
+
+void LiveInput::queue_commands_and_actions(const InputState& s) {
   auto pad_pressed = [&](int button) {
     return button >= 0 && s.gamepad_present && s.gamepad_buttons[size_t(button)] &&
            !(prev_.gamepad_present && prev_.gamepad_buttons[size_t(button)]);
   };
-  auto edge = [&](int key, int button) { return pressed(s, key) || pad_pressed(button); };
-  if (edge(b_.target_next, b_.pad_target_next)) commands_.push_back(Command::TargetNext);
-  if (edge(b_.target_nearest, -1)) commands_.push_back(Command::TargetNearest);
-  if (edge(b_.target_next_hostile, -1)) commands_.push_back(Command::TargetNextHostile);
-  if (edge(b_.switch_weapon, b_.pad_switch_weapon)) commands_.push_back(Command::SwitchWeapon);
-  if (edge(b_.camera, b_.pad_camera)) actions_.push_back(AppAction::ToggleCamera);
-  if (edge(b_.pause, b_.pad_pause)) actions_.push_back(AppAction::TogglePause);
-  if (edge(b_.screenshot, -1)) actions_.push_back(AppAction::Screenshot);
-  if (edge(b_.fps, -1)) actions_.push_back(AppAction::ToggleFps);
+  auto presses = [&](int key, int button) { return presses_between(prev_, s, key) + (pad_pressed(button) ? 1 : 0); };
+  auto command = [&](int n, Command c) { commands_.insert(commands_.end(), size_t(n), c); };
+  auto action = [&](int n, AppAction a) { actions_.insert(actions_.end(), size_t(n), a); };
+  command(presses(b_.target_next, b_.pad_target_next), Command::TargetNext);
+  command(presses(b_.target_nearest, -1), Command::TargetNearest);
+  command(presses(b_.target_next_hostile, -1), Command::TargetNextHostile);
+  command(presses(b_.switch_weapon, b_.pad_switch_weapon), Command::SwitchWeapon);
+  action(presses(b_.camera, b_.pad_camera), AppAction::ToggleCamera);
+  action(presses(b_.pause, b_.pad_pause), AppAction::TogglePause);
+  action(presses(b_.screenshot, -1), AppAction::Screenshot);
+  action(presses(b_.fps, -1), AppAction::ToggleFps);
 }
 
-InputFrame LiveInput::take_frame() {
+// The virtual cursor stays within the radius, so turning back starts at once.
+void LiveInput::move_joystick(double dx, double dy) {
+  const double radius = b_.joystick_radius * screen_height_;
+  joystick_x_ += dx;
+  joystick_y_ += dy;
+  const double len = std::sqrt(joystick_x_ * joystick_x_ + joystick_y_ * joystick_y_);
+  if (len > radius && len > 0) joystick_x_ *= radius / len, joystick_y_ *= radius / len;
+}
+
+// One axis of the virtual joystick: the offset in radii, with the dead zone cut out.
+double LiveInput::joystick_axis(double offset) const {
+  const double radius = b_.joystick_radius * screen_height_;
+  return deadzone(std::clamp(offset / radius, -1.0, 1.0), b_.joystick_deadzone);
+}
+
+void LiveInput::discard_mouse_motion() {
+  mouse_dx_ = mouse_dy_ = 0.0;
+  pitch_carry_ = yaw_carry_ = 0.0;
+  joystick_x_ = joystick_y_ = 0.0;
+  first_sample_ = true;
+}
+
+MouseReticle LiveInput::reticle() const {
+  if (!b_.mouse_enabled || b_.mouse_mode != MouseMode::Joystick) return {};
+  return {true, joystick_x_ / screen_height_, joystick_y_ / screen_height_, b_.joystick_radius,
+          b_.joystick_radius * b_.joystick_deadzone};
+}
+
+// Moves the set throttle at the bound rate; a change that would cross zero stops at zero and
+// waits until the key (or stick) is let go, so slowing to a stop never backs up by accident.
+void LiveInput::advance_throttle(double change) {
+  if (change == 0.0) {
+    throttle_held_at_zero_ = false;
+    return;
+  }
+  if (throttle_held_at_zero_) return;
+  const double next = std::clamp(set_throttle_ + change * b_.throttle_rate * scale_.tick_seconds, -1.0, 1.0);
+  if ((set_throttle_ > 0.0 && next < 0.0) || (set_throttle_ < 0.0 && next > 0.0)) {
+    set_throttle_ = 0.0;
+    throttle_held_at_zero_ = true;
+    return;
+  }
+  set_throttle_ = next;
+}
+
+InputFrame LiveInput::take_frame(int ticks_left) {
   const InputState& s = cur_;
   auto key_axis = [&](const KeyAxis& a) { return (down(s, a.positive) ? 1.0 : 0.0) - (down(s, a.negative) ? 1.0 : 0.0); };
   auto pad = [&](int axis_index) {
     return s.gamepad_present && axis_index >= 0 ? deadzone(s.gamepad_axes[size_t(axis_index)], b_.pad_deadzone) : 0.0;
   };
-  double pad_y = b_.pad_invert_y ? 1.0 : -1.0;
+  const double pad_y = b_.pad_invert_y ? 1.0 : -1.0;
+  const double mouse_y = b_.mouse_invert_y ? 1.0 : -1.0;  // screen y grows downward: up raises the nose
+  double mouse_pitch = 0.0, mouse_yaw = 0.0;
+  if (b_.mouse_mode == MouseMode::Joystick) {
+    mouse_pitch = mouse_y * joystick_axis(joystick_y_);
+    mouse_yaw = joystick_axis(joystick_x_);
+  } else {
+    // This tick's share of the motion, as a fraction of the ship's full turn over one tick.
+    const double dx = mouse_dx_ / std::max(ticks_left, 1), dy = mouse_dy_ / std::max(ticks_left, 1);
+    mouse_dx_ -= dx;
+    mouse_dy_ -= dy;
+    mouse_pitch = mouse_y * dy * b_.mouse_sensitivity / (scale_.pitch_rate_degrees * scale_.tick_seconds);
+    mouse_yaw = dx * b_.mouse_sensitivity / (scale_.yaw_rate_degrees * scale_.tick_seconds);
+  }
   InputFrame f;
-  // Mouse motion is consumed as a rate for this tick, so it quantises like a stick would.
-  f.pitch = quantise_axis(key_axis(b_.pitch) + mouse_pitch_ + pad_y * -pad(b_.pad_pitch));
-  f.yaw = quantise_axis(key_axis(b_.yaw) + mouse_yaw_ - pad(b_.pad_yaw));
-  f.roll = quantise_axis(key_axis(b_.roll) - pad(b_.pad_roll));
-  f.throttle = quantise_axis(key_axis(b_.throttle) - pad(b_.pad_throttle));
+  f.pitch = quantise_carrying(key_axis(b_.pitch) + pad_y * -pad(b_.pad_pitch), mouse_pitch, pitch_carry_);
+  f.yaw = quantise_carrying(key_axis(b_.yaw) + pad(b_.pad_yaw), mouse_yaw, yaw_carry_);
+  if (b_.mouse_mode == MouseMode::Joystick) pitch_carry_ = yaw_carry_ = 0.0;  // a held rate: nothing to carry
+  f.roll = quantise_axis(key_axis(b_.roll) + pad(b_.pad_roll));
+  advance_throttle(std::clamp(key_axis(b_.throttle) - pad(b_.pad_throttle), -1.0, 1.0));
+  f.throttle = quantise_axis(set_throttle_);
   f.strafe_x = quantise_axis(key_axis(b_.strafe_x));
   f.strafe_y = quantise_axis(key_axis(b_.strafe_y));
-  mouse_pitch_ = mouse_yaw_ = 0.0;
   auto btn = [&](int b) { return b >= 0 && s.gamepad_present && s.gamepad_buttons[size_t(b)]; };
   if (down(s, b_.fire_primary) || btn(b_.pad_fire_primary)) f.buttons |= kFirePrimary;
   if (down(s, b_.fire_secondary) || btn(b_.pad_fire_secondary)) f.buttons |= kFireSecondary;

@@ -32,12 +32,26 @@ const char* difficulty_name(Difficulty d) {
   return "normal";
 }
 
-// Pause menu: Resume, Restart, Difficulty (cycles; applies on restart), Quit.
+// The pause menu. After victory or defeat Retry comes first. The AI's difficulty is part of
+// the simulated game, fixed when it starts, so a change says that it waits for the restart.
 struct PauseMenu {
-  enum Item { Resume = 0, Restart = 1, DifficultyItem = 2, Quit = 3 };
+  enum class Item { Resume, Restart, Difficulty, Quit };
   int selection = 0;
-  std::vector<std::string> items(Difficulty d) const {
-    return {"Resume", "Restart", std::string("Difficulty: ") + difficulty_name(d), "Quit"};
+  static std::vector<Item> items(bool decided) {
+    if (decided) return {Item::Restart, Item::Resume, Item::Difficulty, Item::Quit};
+    return {Item::Resume, Item::Restart, Item::Difficulty, Item::Quit};
+  }
+  static std::string label(Item item, bool decided, Difficulty chosen, int playing, bool recording) {
+    const char* restart = decided ? "Retry" : "Restart";
+    switch (item) {
+      case Item::Resume: return "Resume";
+      case Item::Restart: return std::string(restart) + (recording ? " (ends the recording)" : "");
+      case Item::Difficulty:
+        return std::string("Difficulty: ") + difficulty_name(chosen) +
+               (int(chosen) != playing ? std::string(" (applies on ") + (decided ? "retry)" : "restart)") : "");
+      case Item::Quit: return "Quit";
+    }
+    return "";
   }
 };
 
@@ -69,7 +83,8 @@ class WindowSession {
 
  private:
   std::unique_ptr<Renderer> make_renderer() const;
-  void end_recording();
+  void start_game(std::unique_ptr<Game> fresh);
+  void end_recording(const char* why);
   void handle_actions(std::vector<Command>& menu_commands);
   void navigate_pause_menu(std::vector<Command>& menu_commands);
   void reload_changed_files();
@@ -88,6 +103,8 @@ class WindowSession {
   std::vector<Command> pending_;  // menu commands wait for the next tick rather than being lost
   PauseMenu menu_;
   HudState hud_;
+  std::string notice_;        // a line shown on screen until notice_until_ (window time)
+  double notice_until_ = 0;
   RenderView view_;
   bool mouse_captured_ = true;
   bool want_screenshot_ = false;
@@ -106,7 +123,7 @@ WindowSession::~WindowSession() {
 
 void WindowSession::setup() {
   input_.emplace(load_bindings(options_.bindings_path));
-  game_ = std::make_unique<Game>(Game::load_level(options_.level, game_options_));
+  start_game(std::make_unique<Game>(Game::load_level(options_.level, game_options_)));
   WindowDesc wd;
   wd.width = options_.width;
   wd.height = options_.height;
@@ -136,14 +153,36 @@ std::unique_ptr<Renderer> WindowSession::make_renderer() const {
   return r;
 }
 
-// One script describes one uninterrupted session: a restart or a reload ends the recording.
-void WindowSession::end_recording() {
-  if (recorder_) recorder_->finish(*game_);
+// A fresh game: zero throttle, and the flown ship's turn rates for the mouse.
+void WindowSession::start_game(std::unique_ptr<Game> fresh) {
+  game_ = std::move(fresh);
+  input_->reset_throttle();
+  const World& w = game_->world();
+  FlightScale scale;
+  scale.tick_seconds = w.dt;
+  if (w.player >= 0) {
+    scale.pitch_rate_degrees = w.ships[size_t(w.player)].cls->turn_rate[0];
+    scale.yaw_rate_degrees = w.ships[size_t(w.player)].cls->turn_rate[1];
+  }
+  input_->set_flight_scale(scale);
+}
+
+// One script describes one uninterrupted session: a restart or a reload ends the recording,
+// which stays replayable, and the screen says so.
+void WindowSession::end_recording(const char* why) {
+  if (!recorder_) return;
+  recorder_->finish(*game_);
+  notice_ = "Recording stopped (" + std::string(why) + "): " + recorder_->path() + " replays up to here";
+  notice_until_ = window_->time_seconds() + 8.0;
+  std::printf("arcfire: recording %s stopped by the %s; it replays up to tick %llu\n", recorder_->path().c_str(), why,
+              static_cast<unsigned long long>(game_->world().steps));
+  std::fflush(stdout);
   recorder_.reset();
 }
 
 void WindowSession::update(double frame_seconds) {
   window_->poll(devices_);
+  input_->set_screen_height(window_->framebuffer_height());
   input_->sample(devices_);
   std::vector<Command> menu_commands;
   handle_actions(menu_commands);
@@ -178,25 +217,25 @@ void WindowSession::handle_actions(std::vector<Command>& menu_commands) {
   }
 }
 
-// Menu navigation reads the raw keys, edge-triggered against the previous frame's devices.
+// Menu navigation reads the raw keys: every press counts, two taps within a frame too.
 void WindowSession::navigate_pause_menu(std::vector<Command>& menu_commands) {
-  auto hit = [&](int key) { return devices_.keys[size_t(key)] && !previous_devices_.keys[size_t(key)]; };
-  static const int up = key_code("UP"), down = key_code("DOWN");
-  static const int enter = key_code("ENTER"), space = key_code("SPACE");
-  if (hit(up)) menu_.selection = (menu_.selection + 3) % 4;
-  if (hit(down)) menu_.selection = (menu_.selection + 1) % 4;
-  if (!hit(enter) && !hit(space)) return;
-  switch (menu_.selection) {
-    case PauseMenu::Resume: menu_commands.push_back(Command::Resume); break;
-    case PauseMenu::Restart:
-      end_recording();
-      game_ = std::make_unique<Game>(Game::load_level(options_.level, game_options_));
+  auto hits = [&](const char* key) { return presses_between(previous_devices_, devices_, key_code(key)); };
+  const auto items = PauseMenu::items(game_->world().outcome != Outcome::Undecided);
+  const int count = int(items.size());
+  menu_.selection = ((menu_.selection + hits("DOWN") - hits("UP")) % count + count) % count;
+  if (hits("ENTER") + hits("SPACE") == 0) return;
+  switch (items[size_t(menu_.selection)]) {
+    case PauseMenu::Item::Resume: menu_commands.push_back(Command::Resume); break;
+    case PauseMenu::Item::Restart:
+      end_recording("restart");
+      start_game(std::make_unique<Game>(Game::load_level(options_.level, game_options_)));
+      menu_.selection = 0;
       break;
-    case PauseMenu::DifficultyItem:
+    case PauseMenu::Item::Difficulty:
       game_options_.difficulty = Difficulty((int(game_options_.difficulty) + 1) % 3);
       game_options_.difficulty_override = true;
       break;
-    case PauseMenu::Quit: window_->request_close(); break;
+    case PauseMenu::Item::Quit: window_->request_close(); break;
   }
 }
 
@@ -215,8 +254,8 @@ void WindowSession::reload_changed_files() {
           renderer_ = make_renderer();
           load_scene_resources(*renderer_, fresh->world(), game_options_.root_dir);
         }
-        end_recording();
-        game_ = std::move(fresh);
+        end_recording("reload of changed files");
+        start_game(std::move(fresh));
         reload_error_.clear();
         std::printf("arcfire: data changed, level restarted\n");
       } catch (const InputError& e) {
@@ -230,7 +269,7 @@ void WindowSession::reload_changed_files() {
 void WindowSession::step_ticks(double frame_seconds) {
   const int ticks = clock_->advance(frame_seconds);
   for (int i = 0; i < ticks; ++i) {
-    InputFrame frame = input_->take_frame();
+    InputFrame frame = input_->take_frame(ticks - i);
     std::vector<Command> commands = input_->take_commands();
     if (i == 0) {
       commands.insert(commands.end(), pending_.begin(), pending_.end());
@@ -251,21 +290,25 @@ void WindowSession::count_fps(double frame_seconds) {
 }
 
 void WindowSession::draw() {
+  const World& w = game_->world();
+  const bool decided = w.outcome != Outcome::Undecided;
   hud_.pause_selection = menu_.selection;
-  hud_.pause_items = menu_.items(game_options_.difficulty);
-  const int w = window_->framebuffer_width(), h = window_->framebuffer_height();
-  if (w > 0 && h > 0) {
-    build_render_view(game_->world(), clock_->alpha(), CameraSettings{}, hud_, w, h, view_);
-    if (!reload_error_.empty()) {
-      view_.hud.quads.push_back({0.0f, float(h) - 34.0f, float(w), 34.0f, {0.35f, 0.02f, 0.02f, 0.85f}});
-      view_.hud.texts.push_back(
-          {12.0f, float(h) - 26.0f, 1.2f, {1.0f, 0.85f, 0.8f, 1.0f}, "reload failed: " + reload_error_});
-    }
-    renderer_->render(view_, w, h);
+  hud_.pause_items.clear();
+  for (PauseMenu::Item item : PauseMenu::items(decided))
+    hud_.pause_items.push_back(
+        PauseMenu::label(item, decided, game_options_.difficulty, w.difficulty, recorder_ != nullptr));
+  hud_.error_banner = reload_error_.empty() ? "" : "reload failed: " + reload_error_;
+  hud_.notice = window_->time_seconds() < notice_until_ ? notice_ : "";
+  const MouseReticle r = input_->reticle();
+  hud_.reticle = {r.shown && !w.paused, r.x, r.y, r.radius, r.deadzone};
+  const int width = window_->framebuffer_width(), height = window_->framebuffer_height();
+  if (width > 0 && height > 0) {
+    build_render_view(w, clock_->alpha(), CameraSettings{}, hud_, width, height, view_);
+    renderer_->render(view_, width, height);
     if (want_screenshot_) {
       // Read the frame just drawn, before the swap leaves the back buffer undefined.
       std::string path = screenshot_path();
-      save_image(path, read_window_pixels(w, h));
+      save_image(path, read_window_pixels(width, height));
       std::printf("arcfire: screenshot %s\n", path.c_str());
       want_screenshot_ = false;
     }

@@ -72,27 +72,120 @@ std::string fmt(const char* f, double v) {
   return buf;
 }
 
-void hud_outcome_and_menu(const World& w, const HudState& state, int width, int height, HudLayer& h) {
-  if (w.outcome != Outcome::Undecided && !w.paused) {
-    std::string msg = w.outcome == Outcome::Victory  ? "VICTORY"
-                      : w.outcome == Outcome::Defeat ? "DEFEAT"
-                                                     : "TEAM " + w.winner + " WINS";
-    const glm::vec4 c = w.outcome == Outcome::Defeat ? kHudRed : kHudGreen;
-    text(h, width * 0.5 - msg.size() * 12.0, height * 0.3, 3.0, c, msg);
-    if (w.player >= 0) {
-      const std::string hint = "Esc: menu (restart, difficulty, quit)";
-      text(h, width * 0.5 - hint.size() * 4.8, height * 0.3 + 48, 1.2, kHudWhite, hint);
-    }
-  }
+// HUD sizes follow the window height: 1 at 720 pixels. Text never shrinks below the font's
+// own size, where its one-pixel strokes would blur away.
+double height_scale(int height) { return std::max(height / 720.0, 0.5); }
+double text_scale(double at_720, int height) { return std::max(at_720 * height_scale(height), 1.0); }
+constexpr double kGlyphAdvance = 7.0;  // pixels per character at text scale 1 (gfx/hud_font)
+
+std::string outcome_text(const World& w) {
+  return w.outcome == Outcome::Victory  ? "VICTORY"
+         : w.outcome == Outcome::Defeat ? "DEFEAT"
+                                        : "TEAM " + w.winner + " WINS";
+}
+
+void centred_text(HudLayer& h, double cx, double y, double scale, const glm::vec4& c, const std::string& s) {
+  text(h, cx - s.size() * kGlyphAdvance * scale * 0.5, y, scale, c, s);
+}
+
+// Victory or defeat stays on screen; with the menu open it is the menu's title.
+void hud_outcome(const World& w, int width, int height, HudLayer& h) {
+  if (w.outcome == Outcome::Undecided) return;
+  const double k = height_scale(height);
+  const glm::vec4 c = w.outcome == Outcome::Defeat ? kHudRed : kHudGreen;
+  centred_text(h, width * 0.5, height * 0.3 - (w.paused ? 70 * k : 0.0), text_scale(3.0, height), c, outcome_text(w));
+  if (w.paused || w.player < 0) return;
+  const std::string hint = "Esc: menu (retry, difficulty, quit)";
+  centred_text(h, width * 0.5, height * 0.3 + 48 * k, text_scale(1.2, height), kHudWhite, hint);
+}
+
+void hud_pause_menu(const World& w, const HudState& state, int width, int height, HudLayer& h) {
   if (!w.paused) return;
+  const double k = height_scale(height), item_scale = text_scale(1.6, height), row = 22.5 * item_scale;
   quad(h, 0, 0, width, height, {0.0f, 0.0f, 0.05f, 0.55f});
-  text(h, width * 0.5 - 60, height * 0.3, 2.5, kHudWhite, "PAUSED");
+  if (w.outcome == Outcome::Undecided)
+    centred_text(h, width * 0.5, height * 0.3, text_scale(2.5, height), kHudWhite, "PAUSED");
+  size_t longest = 0;
+  for (const std::string& item : state.pause_items) longest = std::max(longest, item.size());
+  const double box = longest * kGlyphAdvance * item_scale + 40 * k;
   for (size_t i = 0; i < state.pause_items.size(); ++i) {
     const bool sel = int(i) == state.pause_selection;
-    const double y = height * 0.4 + 36.0 * i;
-    if (sel) quad(h, width * 0.5 - 130, y - 6, 260, 32, {0.3f, 0.6f, 1.0f, 0.35f});
-    text(h, width * 0.5 - 110, y, 1.6, sel ? kHudYellow : kHudWhite, state.pause_items[i]);
+    const double y = height * 0.4 + row * i;
+    if (sel) quad(h, width * 0.5 - box * 0.5, y - 4 * item_scale, box, 20 * item_scale, {0.3f, 0.6f, 1.0f, 0.35f});
+    centred_text(h, width * 0.5, y, item_scale, sel ? kHudYellow : kHudWhite, state.pause_items[i]);
   }
+}
+
+// Text wrapped within the screen's margins on a dark band centred across it, `top` down.
+void text_band(HudLayer& h, const std::string& s, double top, int width, int height, const glm::vec4& back,
+               const glm::vec4& colour) {
+  const double k = height_scale(height), scale = text_scale(1.2, height), margin = 24 * k, pad = 8 * k;
+  const double line_height = 14 * scale, advance = kGlyphAdvance * scale;
+  const size_t chars = size_t(std::max(8.0, (width - 2 * margin - 2 * pad) / advance));
+  const std::vector<std::string> lines = wrap_text(s, chars, 6);
+  size_t longest = 0;
+  for (const std::string& l : lines) longest = std::max(longest, l.size());
+  const double band_width = longest * advance + 2 * pad, left = (width - band_width) * 0.5;
+  quad(h, left, top, band_width, lines.size() * line_height + 2 * pad, back);
+  for (size_t i = 0; i < lines.size(); ++i) text(h, left + pad, top + pad + i * line_height, scale, colour, lines[i]);
+}
+
+// The notice at the top and the reload error below the target panel, both within the screen
+// and clear of the bars at the bottom.
+void hud_messages(const HudState& state, int width, int height, HudLayer& h) {
+  const double k = height_scale(height);
+  if (!state.notice.empty())
+    text_band(h, state.notice, 40 * k, width, height, {0.05f, 0.1f, 0.2f, 0.8f}, {0.85f, 0.95f, 1.0f, 1.0f});
+  if (!state.error_banner.empty())
+    text_band(h, state.error_banner, 120 * k, width, height, {0.35f, 0.02f, 0.02f, 0.85f}, {1.0f, 0.85f, 0.8f, 1.0f});
+}
+
+// Joystick mode: the dead zone, the full-rate ring and the cursor, around the screen centre.
+void hud_reticle(const HudReticle& r, int width, int height, HudLayer& h) {
+  if (!r.shown) return;
+  const double cx = width * 0.5, cy = height * 0.5;
+  const glm::vec4 ring{0.45f, 1.0f, 0.6f, 0.25f};
+  auto circle = [&](double radius) {
+    constexpr int kSegments = 48;
+    for (int i = 0; i < kSegments; ++i) {
+      const double a0 = 6.283185307179586 * i / kSegments, a1 = 6.283185307179586 * (i + 1) / kSegments;
+      line(h, cx + radius * std::cos(a0), cy + radius * std::sin(a0), cx + radius * std::cos(a1),
+           cy + radius * std::sin(a1), ring, 1.0f);
+    }
+  };
+  circle(r.radius * height);
+  if (r.deadzone > 0) circle(r.deadzone * height);
+  const double x = cx + r.x * height, y = cy + r.y * height, d = 8 * height_scale(height);
+  line(h, cx, cy, x, y, {0.45f, 1.0f, 0.6f, 0.35f}, 1.0f);
+  line(h, x - d, y, x + d, y, kHudGreen);
+  line(h, x, y - d, x, y + d, kHudGreen);
+}
+
+// The set throttle as a bar at `x`, from `top` to `bottom` beside the own ship's bars, a tick
+// at the speed it has reached, and the speed in m/s.
+void hud_throttle_and_speed(const Ship& me, double x, double top, double bottom, int height, HudLayer& h) {
+  const double k = height_scale(height), bar_w = 12 * k, bar_h = bottom - top;
+  const double set = axis_value(me.controls.throttle);
+  const double speed = std::sqrt(glm::dot(me.velocity, me.velocity));
+  const glm::vec4 fill = set < 0 ? kHudRed : me.afterburner_on ? kHudWhite : kHudYellow;
+  quad(h, x, top, bar_w, bar_h, kHudBack);
+  const glm::vec4 frame{0.45f, 1.0f, 0.6f, 0.35f};
+  line(h, x, top, x + bar_w, top, frame, 1.0f);
+  line(h, x, top + bar_h, x + bar_w, top + bar_h, frame, 1.0f);
+  line(h, x, top, x, top + bar_h, frame, 1.0f);
+  line(h, x + bar_w, top, x + bar_w, top + bar_h, frame, 1.0f);
+  const double filled = (bar_h - 2) * std::clamp(std::fabs(set), 0.0, 1.0);
+  quad(h, x + 1, top + bar_h - 1 - filled, bar_w - 2, filled, fill);
+  const double reached = std::clamp(speed / std::max(me.cls->max_speed, 1e-9), 0.0, 1.0);
+  const double tick_y = top + bar_h - 1 - (bar_h - 2) * reached;
+  line(h, x - 4 * k, tick_y, x + bar_w + 4 * k, tick_y, kHudWhite, float(2 * k));
+  const double label_scale = text_scale(1.0, height), speed_scale = text_scale(1.4, height);
+  text(h, x, top - 16 * label_scale, label_scale, kHudYellow, "THR");
+  text(h, x + bar_w + 8 * k, top, speed_scale, kHudWhite, fmt("%.0f m/s", speed));
+  std::string setting = fmt("%.0f%%", set * 100.0);
+  if (set < 0) setting = "R " + fmt("%.0f%%", -set * 100.0);
+  if (me.afterburner_on) setting += " AB";
+  text(h, x + bar_w + 8 * k, top + 16 * speed_scale, text_scale(1.2, height), fill, setting);
 }
 
 void hud_radar(const World& w, const Ship& me, int width, int height, HudLayer& h) {
@@ -179,6 +272,7 @@ void hud_own(const World& w, const Ship& me, const Projector& pr, int width, int
   bar(h, x, y, 220, 12, me.cls->shield > 0 ? me.shield / me.cls->shield : 0.0, kHudBlue, "SHIELD");
   bar(h, x, y + 34, 220, 12, me.hull / me.cls->hull, me.hull < 0.3 * me.cls->hull ? kHudRed : kHudGreen, "HULL");
   bar(h, x, y + 68, 220, 12, me.cls->energy > 0 ? me.energy / me.cls->energy : 0.0, kHudYellow, "ENERGY");
+  hud_throttle_and_speed(me, x + 220 + 14 * height_scale(height), y, y + 68 + 12, height, h);
   const char* weapon = me.secondary == SecondaryWeapon::Plasma ? "PLASMA" : "MISSILES";
   text(h, width - 260, height - 60, 1.2, kHudWhite, std::string("beam + ") + weapon);
   text(h, width - 260, height - 36, 1.2, kHudWhite, "kills " + std::to_string(me.kills));
@@ -222,7 +316,43 @@ void layout_hud(const World& w, const CameraView& cam, const HudState& state, do
       hud_radar(w, me, width, height, h);
     }
   }
-  hud_outcome_and_menu(w, state, width, height, h);
+  hud_reticle(state.reticle, width, height, h);
+  hud_outcome(w, width, height, h);
+  hud_pause_menu(w, state, width, height, h);
+  hud_messages(state, width, height, h);
+}
+
+std::vector<std::string> wrap_text(const std::string& original, size_t max_chars, size_t max_lines) {
+  max_chars = std::max<size_t>(max_chars, 4);
+  std::string text = original;  // line breaks and tabs of the message become spaces
+  std::replace_if(text.begin(), text.end(), [](char c) { return c == '\n' || c == '\t' || c == '\r'; }, ' ');
+  std::vector<std::string> lines;
+  std::string current;
+  size_t i = 0;
+  while (lines.size() < max_lines) {
+    while (i < text.size() && text[i] == ' ') ++i;
+    if (i >= text.size()) break;
+    const size_t end = std::min(text.find(' ', i), text.size());
+    const std::string word = text.substr(i, end - i);
+    const size_t need = current.empty() ? word.size() : current.size() + 1 + word.size();
+    if (need <= max_chars) {
+      current += (current.empty() ? "" : " ") + word;
+      i += word.size();
+    } else if (!current.empty()) {
+      lines.push_back(std::move(current));
+      current.clear();
+    } else {
+      lines.push_back(word.substr(0, max_chars));  // a word longer than a line is cut across lines
+      i += max_chars;
+    }
+  }
+  const bool cut = i < text.size();
+  if (!current.empty() && lines.size() < max_lines) lines.push_back(std::move(current));
+  if (cut && !lines.empty()) {
+    std::string& last = lines.back();
+    last = last.substr(0, std::min(last.size(), max_chars - 3)) + "...";
+  }
+  return lines;
 }
 
 }  // namespace arc

@@ -3,11 +3,14 @@
 // layout_hud() fills a HudLayer (quads, lines and texts, origin top-left) from the World and
 // the frame's camera: the objective and gallery labels; for the ship the camera follows, the
 // crosshair, own shield / hull / energy bars, weapon and kills, the target's brackets or an
-// off-screen arrow, the lead indicator, the target's bars and the radar; victory or defeat; the
-// FPS counter and the pause menu. build_render_view() calls it last, with the frame's camera.
+// off-screen arrow, the lead indicator, the target's bars and the radar; the set throttle and
+// the speed; victory or defeat (kept above the pause menu); the FPS counter, the pause menu,
+// the mouse-joystick reticle, a notice line and the reload-error banner (wrapped to the
+// screen). build_render_view() calls it last, with the frame's camera.
 //
 // HudState is what the app knows and the World does not: whether the HUD and the FPS counter
-// are on, the measured frame rate, and the pause menu's items and selection.
+// are on, the measured frame rate, the pause menu's items and selection, the reticle, and the
+// notice and error texts.
 #pragma once
 #include <string>
 #include <vector>
@@ -18,17 +21,31 @@ namespace arc {
 
 class World;
 
+// The mouse-joystick mode's virtual cursor, in screen heights from the centre (+y down).
+struct HudReticle {
+  bool shown = false;
+  double x = 0, y = 0, radius = 0, deadzone = 0;
+};
+
 struct HudState {
   bool show_hud = true;     // flight HUD, objective and labels (benchmark frames turn it off)
   bool show_fps = false;    // FPS counter (F3)
   double fps = 0;           // shown when show_fps
   int pause_selection = 0;  // highlighted pause-menu item while the game is paused
   std::vector<std::string> pause_items{"Resume", "Restart", "Difficulty: normal", "Quit"};
+  HudReticle reticle;
+  std::string notice;        // one line at the top centre (e.g. "Recording stopped ...")
+  std::string error_banner;  // a failed hot reload, wrapped within the screen below the objective
 };
 
 // Replaces `out` with the HUD for `camera` (interpolated like the meshes, by `alpha` in [0, 1])
 // in a width × height frame.
 void layout_hud(const World& world, const CameraView& camera, const HudState& state, double alpha, int width,
                 int height, HudLayer& out);
+
+// `text` broken at spaces (and inside words longer than a line; its own line breaks count as
+// spaces) into lines of at most `max_chars` characters; at most `max_lines`, the last ending
+// in "..." when text is cut.
+std::vector<std::string> wrap_text(const std::string& text, size_t max_chars, size_t max_lines);
 
 }  // namespace arc
