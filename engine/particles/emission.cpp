@@ -12,23 +12,55 @@ namespace {
 
 double length(const glm::dvec3& v) { return std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z); }
 
+// This tick's particles: the burst, then those of the rate and the spacing. Rate-only emitters
+// spread theirs evenly over the path since the last tick (i + 1) / count; a spacing emitter puts
+// its j-th where the accumulated amount crosses j, at path fraction (j − carried) / gained, so
+// consecutive particles lie `spacing` apart across tick boundaries too.
+struct EmissionPlan {
+  uint64_t burst = 0;
+  uint64_t count = 0;    // burst included
+  double carried = 0.0;  // accumulator before this tick (spacing emitters)
+  double gained = 0.0;   // added to it this tick (spacing emitters; 0 = rate placement)
+
+  double along(uint64_t i) const {
+    if (gained <= 0.0) return double(i + 1) / double(count);
+    if (i < burst) return 1.0;  // where the emitter is now
+    return std::min(1.0, (double(i - burst + 1) - carried) / gained);
+  }
+};
+
+EmissionPlan plan_emission(const ParticleWorldState& w, Cluster& c, uint32_t age, double path_length) {
+  const EmitterDef& ed = c.def->emitter;
+  EmissionPlan plan;
+  if (age == 0 && ed.burst > 0) plan.burst = uint64_t(std::llround(ed.burst * c.intensity));
+  plan.count = plan.burst;
+  const bool in_duration = ed.duration <= 0.0 || double(age) * w.h() < ed.duration;
+  if (!c.emitting || !in_duration) return plan;
+  if (ed.spacing > 0.0) {
+    plan.carried = c.emit_accumulator;
+    plan.gained = ed.rate * w.h() * c.intensity + path_length / ed.spacing * c.intensity;
+    c.emit_accumulator += plan.gained;
+  } else if (ed.rate > 0.0) {
+    c.emit_accumulator += ed.rate * w.h() * c.intensity;
+  } else {
+    return plan;
+  }
+  const double whole = std::floor(c.emit_accumulator);
+  c.emit_accumulator -= whole;
+  plan.count += uint64_t(whole);
+  return plan;
+}
+
 }  // namespace
 
 void emit_particles(ParticleWorldState& w, Cluster& c, uint64_t t, uint32_t age) {
   const ClusterDef& d = *c.def;
   const EmitterDef& ed = d.emitter;
-  uint64_t count = 0;
-  if (age == 0 && ed.burst > 0) count += uint64_t(std::llround(ed.burst * c.intensity));
-  const bool in_duration = ed.duration <= 0.0 || double(age) * w.h() < ed.duration;
-  if (c.emitting && ed.rate > 0.0 && in_duration) {
-    c.emit_accumulator += ed.rate * w.h() * c.intensity;
-    const double whole = std::floor(c.emit_accumulator);
-    c.emit_accumulator -= whole;
-    count += uint64_t(whole);
-  }
   const Pose ep = w.emitter_pose(c);
   const glm::dvec3 from = c.last_emit_position;
   c.last_emit_position = ep.position;
+  const EmissionPlan plan = plan_emission(w, c, age, length(ep.position - from));
+  const uint64_t count = plan.count;
   if (count == 0) return;
   const Rng rng{w.config.seed, c.serial, t};
   const uint32_t limit = w.budget_limit(c.priority);
@@ -53,9 +85,8 @@ void emit_particles(ParticleWorldState& w, Cluster& c, uint64_t t, uint32_t age)
       p0 = s.position * c.scale;
       v0 = s.direction * speed;
     } else {
-      // World space: spread this tick's particles along the emitter's path since last tick.
-      const double along = double(i + 1) / double(count);
-      const glm::dvec3 at = from + (ep.position - from) * along;
+      // World space: laid along the emitter's path since last tick.
+      const glm::dvec3 at = from + (ep.position - from) * plan.along(i);
       p0 = at - c.world_origin + ep.orientation * (s.position * c.scale);
       v0 = ep.orientation * (s.direction * speed) + inherited;
     }

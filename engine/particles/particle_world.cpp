@@ -181,7 +181,8 @@ struct ParticleWorld::Impl : ParticleWorldState {
     }
     emit_particles(*this, c, t, age);
     const EmitterDef& ed = d.emitter;
-    const bool rate_done = !c.emitting || ed.rate <= 0.0 || (ed.duration > 0.0 && double(age + 1) * h() >= ed.duration);
+    const bool rate_done = !c.emitting || (ed.rate <= 0.0 && ed.spacing <= 0.0) ||
+                           (ed.duration > 0.0 && double(age + 1) * h() >= ed.duration);
     if (rate_done && c.pool.count() == 0) release(c);
   }
 
@@ -453,7 +454,7 @@ void ParticleWorld::collect(const ParticleCamera& camera, std::vector<ParticleIn
       w.animate(c, w.tick, w.scratch);
       pool = &w.scratch;
     }
-    append_instances(c, *pool, w.drawn_frame(c, drawn), camera.position, uint32_t(slot + 1), out);
+    append_instances(c, *pool, w.drawn_frame(c, drawn), camera, uint32_t(w.tick - c.spawn_tick), uint32_t(slot + 1), out);
   }
 }
 

@@ -262,6 +262,8 @@ void build_render_view(const World& w, double alpha, const CameraSettings& cs, i
   pc.fov_y_radians = cam.fov_y_radians;
   pc.aspect = double(width) / double(height);
   pc.near_plane = cam.near_plane;
+  if (mode != static_cast<int>(CameraMode::Fixed) && w.focus_ship() >= 0)
+    pc.velocity = (w.camera.position - w.prev_camera.position) / w.dt;
   w.particles->collect(pc, out.particles);
 
   HudLayer& h = out.hud;
