@@ -79,6 +79,7 @@ struct LightningDef {
   double length_jitter = 0.3;        // segment length in seed_length·[1 − j, 1 + j]
   int sizzle_ticks = 3;              // re-evaluate every n ticks (Hadwiger §5.2 "sizzle")
   double width = 1.0;                // half-width of a segment's sprite, m
+  double free_lifetime = 2.0;        // s: life of a channel spawned without an owner (nothing else ends it)
 };
 
 // How a cluster's particles are turned towards the camera ("billboard" in effect files).

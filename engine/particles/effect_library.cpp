@@ -187,6 +187,7 @@ void read_animation(JsonObject o, ClusterDef& c) {
     l.length_jitter = o.number("length_jitter", 0.3, 0.0, 0.9);
     l.sizzle_ticks = int(o.integer("sizzle_ticks", 3, 1, 600));
     l.width = o.number("width", 1.0, 1e-3, kBig);
+    l.free_lifetime = o.number("free_lifetime", l.free_lifetime, 0.01, 3600.0);
     if (l.max_length / (l.seed_length * (1.0 - l.length_jitter)) > 4096.0)
       o.fail_key("max_length", "'max_length' allows more than 4096 segments; raise 'seed_length'");
   }

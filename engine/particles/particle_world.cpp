@@ -23,6 +23,14 @@ constexpr double kFlashCos = 0.6;   // particles within acos(0.6) ≈ 53° of th
 
 double length(const glm::dvec3& v) { return std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z); }
 
+// A cluster's life in seconds, 0 = unlimited. A lightning channel spawned without an owner (a
+// level effect) has nobody to end it, so it lives its definition's free_lifetime at most.
+double cluster_lifetime(const Cluster& c) {
+  const ClusterDef& d = *c.def;
+  if (d.animation != AnimationType::Lightning || c.owner != 0) return d.lifetime;
+  return d.lifetime > 0.0 ? std::min(d.lifetime, d.lightning.free_lifetime) : d.lightning.free_lifetime;
+}
+
 float curve_max(const Curve& c) {
   float m = 0.0f;
   for (const CurveKey& k : c.keys) m = std::max(m, k.value);
@@ -170,7 +178,8 @@ struct ParticleWorld::Impl : ParticleWorldState {
     if (t < c.spawn_tick) return;
     const uint32_t age = uint32_t(t - c.spawn_tick);
     const ClusterDef& d = *c.def;
-    if (d.lifetime > 0.0 && age >= life_ticks(d.lifetime, h())) {
+    const double lifetime = cluster_lifetime(c);
+    if (lifetime > 0.0 && age >= life_ticks(lifetime, h())) {
       release(c);
       return;
     }

@@ -146,6 +146,12 @@ TEST(EffectFiles, VelocityBillboardsAndTheirStretch) {
                "\"billboard\"", "needs a world-space linear cluster");
 }
 
+TEST(EffectFiles, FreeLightningNeedsALifetime) {
+  const std::string text = R"({ "clusters": [ { "sprite": "flare",
+    "animation": { "type": "lightning", "seed_length": 5, "max_length": 100, "free_lifetime": 0 } } ] })";
+  expect_error(text, "0 }", "'free_lifetime' must be in [0.01");
+}
+
 TEST(EffectFiles, MissingFileAndFolder) {
   EffectLibrary lib;
   EXPECT_THROW(lib.load_file("assets/effects/none.json"), InputError);
