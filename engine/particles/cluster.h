@@ -39,7 +39,7 @@ struct Cluster {
   double scale = 1.0;
   double intensity = 1.0;
   int priority = 1;
-  double emit_accumulator = 0.0;        // fractional particles carried to the next tick
+  double emit_accumulator = 0.0;        // fractional particles (of rate and spacing) carried to the next tick
   bool emitting = true;
   uint32_t next_uid = 0;
   glm::dvec3 flash_direction{0.0, 0.0, -1.0};  // cluster frame

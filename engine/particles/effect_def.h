@@ -2,7 +2,8 @@
 //
 // An EffectDef is a composite: several ClusterDefs, each one cluster of particles with one
 // emitter, one animation (Hadwiger 2000 §4.2: linear, sphere, lightning), curves over particle
-// life (size, colour, alpha, burn — Ilmonen 2006 §4), the sprite and the soft-edge method.
+// life (size, colour, alpha, burn — Ilmonen 2006 §4), the sprite, how it is turned (camera-facing
+// or stretched along its motion) and the soft-edge method.
 // Units: metres, seconds, degrees in files (radians here).
 #pragma once
 #include <cstdint>
@@ -36,6 +37,7 @@ struct EmitterDef {
   std::vector<glm::dvec3> triangles;  // mesh: 3 vertices per triangle
   std::vector<double> area_prefix;    // mesh: running sum of triangle areas (area weighting)
   double rate = 0.0;               // particles per second (fractional counts accumulate)
+  double spacing = 0.0;            // m: one more particle per `spacing` of the emitter's path (0 = none)
   uint32_t burst = 0;              // particles at the first tick
   double duration = 0.0;           // seconds of emission; 0 = until stopped
   EmitDirection direction = EmitDirection::Shape;
@@ -77,6 +79,13 @@ struct LightningDef {
   double length_jitter = 0.3;        // segment length in seed_length·[1 − j, 1 + j]
   int sizzle_ticks = 3;              // re-evaluate every n ticks (Hadwiger §5.2 "sizzle")
   double width = 1.0;                // half-width of a segment's sprite, m
+  double free_lifetime = 2.0;        // s: life of a channel spawned without an owner (nothing else ends it)
+};
+
+// How a cluster's particles are turned towards the camera ("billboard" in effect files).
+enum class ClusterBillboard : uint8_t {
+  Camera,    // camera-facing square, turned by the particle's rotation
+  Velocity,  // axis-locked streak along the particle's motion relative to the camera
 };
 
 struct ClusterDef {
@@ -94,6 +103,8 @@ struct ClusterDef {
   Curve alpha = Curve::flat(1.0f);
   Curve burn = Curve::flat(0.0f);    // 0 alpha-blended … 1 additive (Ilmonen §4)
   uint16_t sprite = 0;
+  ClusterBillboard billboard = ClusterBillboard::Camera;
+  double stretch = 0.0;              // velocity billboards: seconds of motion a streak covers
   SoftEdge soft_edge = SoftEdge::Off;
   double soft_extent = 0.0;          // m; 0 = the particle size
   int priority = -1;                 // −1 = the spawn's priority

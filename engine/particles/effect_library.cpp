@@ -13,6 +13,7 @@ namespace {
 
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 constexpr double kBig = 1e6;
+constexpr double kMinSpacing = 0.01;  // m: a trail of finer spacing would spend the budget on one tick
 
 // The shortest rotation taking −Z onto the unit vector `to`.
 glm::dquat rotation_from_forward(const glm::dvec3& to) {
@@ -126,11 +127,16 @@ void read_emitter(JsonObject o, ClusterDef& c) {
     if (!(total > 0.0)) tri.fail("'triangles' must have a total area above zero");
   }
   e.rate = o.number("rate", 0.0, 0.0, 1e7);
+  e.spacing = o.number("spacing", 0.0, 0.0, kBig);
+  if (e.spacing > 0.0 && e.spacing < kMinSpacing)
+    o.fail_key("spacing", "'spacing' must be 0 (none) or at least 0.01 m, got " + std::to_string(e.spacing));
+  if (e.spacing > 0.0 && (c.animation != AnimationType::Linear || c.owner_space))
+    o.fail_key("spacing", "'spacing' needs a world-space linear cluster: particles are laid along the emitter's path");
   e.burst = uint32_t(o.integer("burst", 0, 0, 1000000));
   e.duration = o.number("duration", 0.0, 0.0, 1e6);
   std::string dir = o.choice("direction", "shape", {"shape", "random", "forward"});
   e.direction = dir == "shape" ? EmitDirection::Shape : dir == "random" ? EmitDirection::Random : EmitDirection::Forward;
-  if (e.rate == 0.0 && e.burst == 0) o.fail("emitter must have 'rate' > 0 or 'burst' > 0");
+  if (e.rate == 0.0 && e.burst == 0 && e.spacing == 0.0) o.fail("emitter must have 'rate', 'burst' or 'spacing' > 0");
   o.finish();
 }
 
@@ -181,10 +187,22 @@ void read_animation(JsonObject o, ClusterDef& c) {
     l.length_jitter = o.number("length_jitter", 0.3, 0.0, 0.9);
     l.sizzle_ticks = int(o.integer("sizzle_ticks", 3, 1, 600));
     l.width = o.number("width", 1.0, 1e-3, kBig);
+    l.free_lifetime = o.number("free_lifetime", l.free_lifetime, 0.01, 3600.0);
     if (l.max_length / (l.seed_length * (1.0 - l.length_jitter)) > 4096.0)
       o.fail_key("max_length", "'max_length' allows more than 4096 segments; raise 'seed_length'");
   }
   o.finish();
+}
+
+// "billboard": "camera" (default) or "velocity" with "stretch" in seconds of motion.
+void read_billboard(JsonObject& o, ClusterDef& c) {
+  const bool velocity = o.choice("billboard", "camera", {"camera", "velocity"}) == "velocity";
+  c.billboard = velocity ? ClusterBillboard::Velocity : ClusterBillboard::Camera;
+  if (velocity) {
+    c.stretch = o.number("stretch", 0.03, 0.0, 10.0);
+  } else if (o.has("stretch")) {
+    o.fail_key("stretch", "'stretch' applies to \"billboard\": \"velocity\" only");
+  }
 }
 
 ClusterDef read_cluster(JsonObject o, int index) {
@@ -205,6 +223,7 @@ ClusterDef read_cluster(JsonObject o, int index) {
                 : soft == "average_density" ? SoftEdge::AverageDensity
                                             : SoftEdge::DensityExtent;
   c.soft_extent = o.number("soft_extent", 0.0, 0.0, kBig);
+  read_billboard(o, c);
   c.owner_space = o.choice("space", "world", {"world", "owner"}) == "owner";
   c.lifetime = o.number("lifetime", 0.0, 0.0, 3600.0);
   c.priority = int(o.integer("priority", -1, -1, 100));
@@ -212,6 +231,8 @@ ClusterDef read_cluster(JsonObject o, int index) {
   if (c.animation == AnimationType::Sphere && c.sphere.radius_animation == RadiusAnimation::Contracting &&
       c.lifetime <= 0.0)
     o.fail_key("lifetime", "a contracting sphere needs a cluster 'lifetime' above zero (it shrinks before dying)");
+  if (c.billboard == ClusterBillboard::Velocity && (c.animation != AnimationType::Linear || c.owner_space))
+    o.fail_key("billboard", "\"billboard\": \"velocity\" needs a world-space linear cluster (it streaks along the particles' motion)");
   if (c.animation == AnimationType::Lightning) {
     c.owner_space = true;
     if (o.has("emitter")) o.fail_key("emitter", "a lightning cluster has no emitter: its particles are the channel");

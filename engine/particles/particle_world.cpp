@@ -1,9 +1,9 @@
-// particles/particle_world.cpp — clusters: spawn, attach, step (emit, animate, cull), collect, hash.
+// particles/particle_world.cpp — clusters: spawn, attach, step (emission in emission.cpp, animate, cull),
+// collect, hash.
 #include "particles/particle_world.h"
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <glm/mat3x3.hpp>
 
 #include "core/error.h"
@@ -11,7 +11,7 @@
 #include "core/rng.h"
 #include "particles/cluster.h"
 #include "particles/effect_library.h"
-#include "particles/emitter.h"
+#include "particles/emission.h"
 #include "particles/instance_output.h"
 #include "particles/world_state.h"
 
@@ -23,18 +23,18 @@ constexpr double kFlashCos = 0.6;   // particles within acos(0.6) ≈ 53° of th
 
 double length(const glm::dvec3& v) { return std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z); }
 
-// Clusters whose particles live in a moving frame: owner-space linear, spheres and lightning.
-bool moves_with_frame(const Cluster& c) { return c.def->owner_space || c.def->animation != AnimationType::Linear; }
+// A cluster's life in seconds, 0 = unlimited. A lightning channel spawned without an owner (a
+// level effect) has nobody to end it, so it lives its definition's free_lifetime at most.
+double cluster_lifetime(const Cluster& c) {
+  const ClusterDef& d = *c.def;
+  if (d.animation != AnimationType::Lightning || c.owner != 0) return d.lifetime;
+  return d.lifetime > 0.0 ? std::min(d.lifetime, d.lightning.free_lifetime) : d.lightning.free_lifetime;
+}
 
 float curve_max(const Curve& c) {
   float m = 0.0f;
   for (const CurveKey& k : c.keys) m = std::max(m, k.value);
   return m;
-}
-
-uint32_t life_ticks(double seconds, double h) {
-  if (seconds <= 0.0) return kNeverDies;
-  return uint32_t(std::clamp<double>(std::llround(seconds / h), 1.0, double(kNeverDies / 2)));
 }
 
 }  // namespace
@@ -49,21 +49,6 @@ struct ParticleWorld::Impl : ParticleWorldState {
   }
   const Cluster* find(ClusterHandle hnd) const { return const_cast<Impl*>(this)->find(hnd); }
 
-  Pose owner_pose(uint32_t owner) const {
-    if (owner == 0) return {};
-    auto it = owners.find(owner);
-    if (it == owners.end()) return {};
-    return {it->second.position, it->second.orientation};
-  }
-  glm::dvec3 owner_velocity(const Cluster& c) const {
-    if (c.owner == 0) return c.spawn_velocity;
-    auto it = owners.find(c.owner);
-    return it == owners.end() ? glm::dvec3(0.0) : it->second.velocity;
-  }
-  Pose emitter_pose(const Cluster& c) const {
-    const Pose o = owner_pose(c.owner);
-    return {o.position + o.orientation * c.local_position, o.orientation * c.local_orientation};
-  }
   Pose frame(const Cluster& c) const {
     if (moves_with_frame(c)) return emitter_pose(c);
     return {c.world_origin, glm::dquat(1, 0, 0, 0)};
@@ -75,12 +60,6 @@ struct ParticleWorld::Impl : ParticleWorldState {
                                [](const DrawnOwner& d, uint32_t owner) { return d.owner < owner; });
     if (it == drawn.end() || it->owner != c.owner) return frame(c);
     return {it->position + it->orientation * c.local_position, it->orientation * c.local_orientation};
-  }
-
-  uint32_t budget_limit(int priority) const {
-    // Policy: cosmetic particles (priority 0) are refused once 90% of the budget is live, so
-    // explosions and beams keep the last tenth; everything is refused at the budget.
-    return priority == 0 ? uint32_t(uint64_t(config.budget) * 9 / 10) : config.budget;
   }
 
   int lightning_interval(const Cluster& c) const {
@@ -142,76 +121,6 @@ struct ParticleWorld::Impl : ParticleWorldState {
     free_slots.push_back(uint32_t(&c - slots.data()));
   }
 
-  // ---- emission ---------------------------------------------------------------------------
-
-  void emit(Cluster& c, uint64_t t, uint32_t age) {
-    const ClusterDef& d = *c.def;
-    const EmitterDef& ed = d.emitter;
-    uint64_t count = 0;
-    if (age == 0 && ed.burst > 0) count += uint64_t(std::llround(ed.burst * c.intensity));
-    const bool in_duration = ed.duration <= 0.0 || double(age) * h() < ed.duration;
-    if (c.emitting && ed.rate > 0.0 && in_duration) {
-      c.emit_accumulator += ed.rate * h() * c.intensity;
-      const double whole = std::floor(c.emit_accumulator);
-      c.emit_accumulator -= whole;
-      count += uint64_t(whole);
-    }
-    const Pose ep = emitter_pose(c);
-    const glm::dvec3 from = c.last_emit_position;
-    c.last_emit_position = ep.position;
-    if (count == 0) return;
-    const Rng rng{config.seed, c.serial, t};
-    const uint32_t limit = budget_limit(c.priority);
-    const glm::dvec3 inherited = owner_velocity(c) * d.particles.inherit_velocity;
-    const ParticleInitDef& pd = d.particles;
-    for (uint64_t i = 0; i < count; ++i) {
-      if (live_particles >= limit) {
-        refused += count - i;
-        return;
-      }
-      const uint64_t base = i * 16;
-      const EmitSample s = sample_emitter(ed, rng, base);
-      const double speed = rng.range(base + 8, pd.speed.min, pd.speed.max) * c.scale;
-      const uint32_t life = life_ticks(rng.range(base + 9, pd.lifetime.min, pd.lifetime.max), h());
-      const size_t k = c.pool.count();
-      c.pool.resize(k + 1);
-      glm::dvec3 p0, v0;
-      if (d.animation == AnimationType::Sphere) {
-        p0 = uniform_direction(rng.uniform(base + 13), rng.uniform(base + 14));
-        v0 = glm::dvec3(0.0);
-      } else if (moves_with_frame(c)) {
-        p0 = s.position * c.scale;
-        v0 = s.direction * speed;
-      } else {
-        // World space: spread this tick's particles along the emitter's path since last tick.
-        const double along = double(i + 1) / double(count);
-        const glm::dvec3 at = from + (ep.position - from) * along;
-        p0 = at - c.world_origin + ep.orientation * (s.position * c.scale);
-        v0 = ep.orientation * (s.direction * speed) + inherited;
-      }
-      ParticlePool& pl = c.pool;
-      pl.p0x[k] = pl.px[k] = float(p0.x);
-      pl.p0y[k] = pl.py[k] = float(p0.y);
-      pl.p0z[k] = pl.pz[k] = float(p0.z);
-      pl.vx[k] = float(v0.x);
-      pl.vy[k] = float(v0.y);
-      pl.vz[k] = float(v0.z);
-      if (c.motion) {
-        const uint32_t n = std::min(life, c.motion->last());
-        const double a = length(d.linear.acceleration) * c.scale;
-        pl.reach[k] = float(length(v0) * c.motion->g[n] + a * c.motion->f[n]);
-      }
-      pl.size0[k] = float(rng.range(base + 10, pd.size.min, pd.size.max) * c.scale);
-      pl.rot0[k] = float(rng.range(base + 11, pd.rotation.min, pd.rotation.max));
-      pl.spin[k] = float(rng.range(base + 12, pd.spin.min, pd.spin.max));
-      pl.birth[k] = age;
-      pl.death[k] = life == kNeverDies ? kNeverDies : age + life;
-      pl.uid[k] = c.next_uid++;
-      pl.sprite[k] = d.sprite;
-      ++live_particles;
-    }
-  }
-
   // ---- lightning --------------------------------------------------------------------------
 
   void rebuild_lightning(Cluster& c, uint64_t t) {
@@ -269,7 +178,8 @@ struct ParticleWorld::Impl : ParticleWorldState {
     if (t < c.spawn_tick) return;
     const uint32_t age = uint32_t(t - c.spawn_tick);
     const ClusterDef& d = *c.def;
-    if (d.lifetime > 0.0 && age >= life_ticks(d.lifetime, h())) {
+    const double lifetime = cluster_lifetime(c);
+    if (lifetime > 0.0 && age >= life_ticks(lifetime, h())) {
       release(c);
       return;
     }
@@ -278,9 +188,10 @@ struct ParticleWorld::Impl : ParticleWorldState {
       rebuild_lightning(c, t);
       return;
     }
-    emit(c, t, age);
+    emit_particles(*this, c, t, age);
     const EmitterDef& ed = d.emitter;
-    const bool rate_done = !c.emitting || ed.rate <= 0.0 || (ed.duration > 0.0 && double(age + 1) * h() >= ed.duration);
+    const bool rate_done = !c.emitting || (ed.rate <= 0.0 && ed.spacing <= 0.0) ||
+                           (ed.duration > 0.0 && double(age + 1) * h() >= ed.duration);
     if (rate_done && c.pool.count() == 0) release(c);
   }
 
@@ -552,7 +463,7 @@ void ParticleWorld::collect(const ParticleCamera& camera, std::vector<ParticleIn
       w.animate(c, w.tick, w.scratch);
       pool = &w.scratch;
     }
-    append_instances(c, *pool, w.drawn_frame(c, drawn), camera.position, uint32_t(slot + 1), out);
+    append_instances(c, *pool, w.drawn_frame(c, drawn), camera, uint32_t(w.tick - c.spawn_tick), uint32_t(slot + 1), out);
   }
 }
 

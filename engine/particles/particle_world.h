@@ -97,6 +97,7 @@ struct ParticleCamera {
   double fov_y_radians = 1.0;
   double aspect = 16.0 / 9.0;
   double near_plane = 0.5;
+  glm::dvec3 velocity{0.0};  // m/s: velocity-stretched particles streak along their motion relative to it
 };
 
 class ParticleWorld {

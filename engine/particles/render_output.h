@@ -25,7 +25,8 @@ enum class Billboard : uint8_t {
 struct ParticleInstance {
   float pos[3];     // centre, camera-relative world units
   float size;       // half-width, world units
-  float axis[3];    // AxisLocked: full segment vector (world units); CameraFacing: unused
+  float axis[3];    // AxisLocked: full segment vector (world units): a lightning segment, or a
+                    // streak's velocity × stretch; CameraFacing: unused
   float rotation;   // radians around the view axis (CameraFacing)
   float color[4];   // rgb premultiplied by alpha (Ilmonen eq. 5: fgc = rgb·alpha), then alpha
   float burn;       // 0 = alpha blended, 1 = additive

@@ -4,8 +4,11 @@
 // (particle_serialize.cpp) can read and replace the whole state without seeing the rest of
 // the implementation. Everything here is simulation state except `effects` (the immutable
 // library the clusters' definitions live in) and `motion_tables` (a cache: each table is a
-// pure function of its key).
+// pure function of its key). The queries on it (owner and emitter poses, budget limits) are
+// shared by the world and the emission code (emission.cpp).
 #pragma once
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -17,6 +20,15 @@
 #include "particles/particle_world.h"
 
 namespace arc {
+
+// Clusters whose particles live in a moving frame: owner-space linear, spheres and lightning.
+inline bool moves_with_frame(const Cluster& c) { return c.def->owner_space || c.def->animation != AnimationType::Linear; }
+
+// A duration in whole ticks (at least one); 0 s or less is kNeverDies.
+inline uint32_t life_ticks(double seconds, double h) {
+  if (seconds <= 0.0) return kNeverDies;
+  return uint32_t(std::clamp<double>(std::llround(seconds / h), 1.0, double(kNeverDies / 2)));
+}
 
 struct ParticleWorldState {
   ParticleConfig config;
@@ -32,6 +44,28 @@ struct ParticleWorldState {
   uint32_t skipped = 0;
 
   double h() const { return config.tick_seconds; }
+
+  Pose owner_pose(uint32_t owner) const {
+    if (owner == 0) return {};
+    auto it = owners.find(owner);
+    if (it == owners.end()) return {};
+    return {it->second.position, it->second.orientation};
+  }
+  glm::dvec3 owner_velocity(const Cluster& c) const {
+    if (c.owner == 0) return c.spawn_velocity;
+    auto it = owners.find(c.owner);
+    return it == owners.end() ? glm::dvec3(0.0) : it->second.velocity;
+  }
+  Pose emitter_pose(const Cluster& c) const {
+    const Pose o = owner_pose(c.owner);
+    return {o.position + o.orientation * c.local_position, o.orientation * c.local_orientation};
+  }
+
+  uint32_t budget_limit(int priority) const {
+    // Policy: cosmetic particles (priority 0) are refused once 90% of the budget is live, so
+    // explosions and beams keep the last tenth; everything is refused at the budget.
+    return priority == 0 ? uint32_t(uint64_t(config.budget) * 9 / 10) : config.budget;
+  }
 
   // The motion table of a linear cluster definition, shared by every cluster with the same key.
   std::shared_ptr<const MotionTable> motion_table(const ClusterDef& d) {

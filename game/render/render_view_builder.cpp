@@ -89,6 +89,8 @@ void build_render_view(const World& w, double alpha, const CameraSettings& cs, c
   pc.fov_y_radians = cam.fov_y_radians;
   pc.aspect = double(width) / double(height);
   pc.near_plane = cam.near_plane;
+  if (mode != CameraMode::Fixed && w.focus_ship() >= 0)
+    pc.velocity = (w.camera.position - w.prev_camera.position) / w.dt;  // sparks streak relative to the eye
   w.particles->collect(pc, out.particles, drawn_ships(w, alpha));
 
   layout_hud(w, cam, hud, alpha, width, height, out.hud);

@@ -122,8 +122,34 @@ TEST(EffectFiles, MeshNeedsWholeTriangles) {
                "3 vertices [x, y, z] per triangle");
 }
 
-TEST(EffectFiles, EmitterNeedsRateOrBurst) {
-  expect_error(with("\"burst\": 3", "\"rate\": 0"), "{ \"shape\"", "'rate' > 0 or 'burst' > 0");
+TEST(EffectFiles, EmitterNeedsRateBurstOrSpacing) {
+  expect_error(with("\"burst\": 3", "\"rate\": 0"), "{ \"shape\"", "'rate', 'burst' or 'spacing' > 0");
+}
+
+TEST(EffectFiles, SpacingIsForWorldSpaceLinearClustersAndNotTooFine) {
+  expect_error(with("\"burst\": 3", "\"spacing\": 0.001"), "\"spacing\"", "at least 0.01 m");
+  expect_error(with("\"burst\": 3", "\"spacing\": -1"), "-1", "must be in [0,");
+  const std::string owner_space = R"({ "clusters": [ { "sprite": "smoke", "space": "owner", "animation": { "type": "linear" },
+    "emitter": { "spacing": 1 }, "particles": { "lifetime": 1 } } ] })";
+  expect_error(owner_space, "\"spacing\"", "needs a world-space linear cluster");
+}
+
+TEST(EffectFiles, VelocityBillboardsAndTheirStretch) {
+  EXPECT_EQ(load_error(with("\"sprite\": \"spark\",", "\"sprite\": \"spark\", \"billboard\": \"velocity\", \"stretch\": 0.02,")), "");
+  expect_error(with("\"sprite\": \"spark\",", "\"sprite\": \"spark\", \"billboard\": \"sideways\","), "\"sideways\"",
+               "\"camera\" or \"velocity\"");
+  expect_error(with("\"sprite\": \"spark\",", "\"sprite\": \"spark\", \"stretch\": 0.02,"), "\"stretch\"",
+               "applies to \"billboard\": \"velocity\" only");
+  expect_error(with("\"sprite\": \"spark\",", "\"sprite\": \"spark\", \"billboard\": \"velocity\", \"stretch\": -1,"), "-1",
+               "must be in [0, 10]");
+  expect_error(with("\"sprite\": \"spark\",", "\"sprite\": \"spark\", \"billboard\": \"velocity\", \"space\": \"owner\","),
+               "\"billboard\"", "needs a world-space linear cluster");
+}
+
+TEST(EffectFiles, FreeLightningNeedsALifetime) {
+  const std::string text = R"({ "clusters": [ { "sprite": "flare",
+    "animation": { "type": "lightning", "seed_length": 5, "max_length": 100, "free_lifetime": 0 } } ] })";
+  expect_error(text, "0 }", "'free_lifetime' must be in [0.01");
 }
 
 TEST(EffectFiles, MissingFileAndFolder) {

@@ -1,4 +1,5 @@
-// ParticleWorld: attachment, owner destruction, skip-and-catch-up equality, budget, output, copies.
+// ParticleWorld: attachment, owner destruction, skip-and-catch-up equality, budget, output, copies,
+// free lightning channels that end.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -350,6 +351,22 @@ TEST(World, ReleasingAnOwnerLetsItsWorldSpaceTrailFadeAndDropsTheRest) {
   }
   EXPECT_FALSE(w.alive(trail.clusters[0]));  // empty and not emitting: released
   EXPECT_EQ(w.stats().live_particles, 0u);
+}
+
+// A channel spawned as a free effect (a level effect with repeat_ticks) has nobody to end it:
+// it lives its "free_lifetime" (2 s by default); a channel on an owner lives until destroyed.
+TEST(World, AFreeLightningChannelEndsAfterItsFreeLifetime) {
+  ParticleWorld w(ParticleConfig{.seed = 5}, &library());
+  w.set_owner_transform(1, OwnerTransform{});
+  const EffectHandle free_bolt = w.spawn("beam", SpawnParams{});
+  const ClusterHandle held = w.spawn_lightning("beam", 1, {0, 0, 0}, {0, 0, -1});
+  for (uint64_t t = 1; t <= 120; ++t) w.step(t, looking_at_origin());
+  EXPECT_TRUE(w.alive(free_bolt.clusters.at(0)));
+  w.step(121, looking_at_origin());  // 120 ticks (2 s) after its first
+  EXPECT_FALSE(w.alive(free_bolt.clusters.at(0)));
+  for (uint64_t t = 122; t <= 1200; ++t) w.step(t, looking_at_origin());
+  EXPECT_TRUE(w.alive(held));
+  EXPECT_EQ(w.stats().live_clusters, 1u);
 }
 
 }  // namespace arc
