@@ -7,34 +7,20 @@
 # Exits 77 (ctest: skipped) when xvfb-run or xdotool is missing; it installs nothing.
 set -u
 arcfire="$(realpath "$1")"; out="$2"
-for tool in xvfb-run xdotool; do
-  if ! command -v "$tool" >/dev/null; then
-    echo "record_restart: $tool is not installed; skipping (apt-get install xdotool xvfb)"
-    exit 77
-  fi
-done
+source "$(dirname "$0")/live_window.sh"
+require_tools record_restart
 rm -rf "$out"; mkdir -p "$out"
 rec="$out/restarted_session.replay"
 
-xvfb-run -a -s "-screen 0 1280x720x24" bash -c '
-  arcfire="$1"; rec="$2"; log="$3"
-  "$arcfire" --level tests/replays/levels/range.json --record "$rec" --size 640x360 >"$log" 2>&1 &
-  pid=$!
-  win=$(timeout 30 xdotool search --sync --onlyvisible --name "Arcfire" | head -n 1)
-  if [ -z "$win" ]; then echo "record_restart: no Arcfire window appeared"; kill $pid; cat "$log"; exit 1; fi
-  xdotool windowactivate --sync "$win" 2>/dev/null || xdotool windowfocus --sync "$win"
-  sleep 1
-  # Default bindings: W throttle up, T next target, Escape menu; the menu is Resume, Restart, ...
+# Default bindings: W throttle up, T next target, Escape menu; the menu is Resume, Restart, ...
+play_recorded record_restart "$arcfire" "$rec" "$out/game.log" '
   xdotool keydown w; sleep 1.2; xdotool keyup w
   xdotool key t;     sleep 1.2
   xdotool key Escape; sleep 0.5
   xdotool key Down;   sleep 0.3
   xdotool key Return; sleep 0.5
   xdotool keydown w; sleep 1.0; xdotool keyup w
-  sleep 0.5
-  kill -TERM $pid; wait $pid
-  exit 0
-' _ "$arcfire" "$rec" "$out/game.log" || exit 1
+  sleep 0.5' || exit 1
 
 cat "$out/game.log"
 [ -s "$rec" ] || { echo "record_restart: no recording at $rec"; exit 1; }
