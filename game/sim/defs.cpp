@@ -153,7 +153,7 @@ LevelDef parse_level_doc(std::shared_ptr<const JsonDoc> doc, const std::string& 
       std::string file = (std::filesystem::path(root_dir) / "assets/ships" / (d.ship_class + ".json")).string();
       if (!std::filesystem::exists(file))
         cls.fail("ship class '" + d.ship_class + "' not found: no file " + file);
-      L.classes.emplace(d.ship_class, load_ship_class(file, d.ship_class));
+      L.classes.emplace(d.ship_class, std::make_shared<const ShipClassDef>(load_ship_class(file, d.ship_class)));
     }
     L.ships.push_back(std::move(d));
   }
