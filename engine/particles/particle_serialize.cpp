@@ -1,17 +1,12 @@
-// particles/particle_serialize.cpp — ParticleWorld snapshots and the cheap per-tick hash.
+// particles/particle_serialize.cpp — ParticleWorld snapshots and hashes.
 //
 // Format (version 1), inside the frame of core/snapshot_io.h, all little-endian:
 //   config: seed u64, budget u32, cull_distance f64, lightning_interval i32, tick_seconds f64
 //   counters: tick u64, next_serial u64, live_particles u32, refused u64, skipped u32
 //   owners: count u32, then (id u32, position 3×f64, orientation 4×f64, velocity 3×f64)
-//   slots: count u32, then per slot generation u32, alive u8, and for a live cluster:
-//     serial u64, effect name, cluster index u32, cluster name (checked), spawn_tick u64,
-//     owner u32, local position and orientation, world origin, spawn velocity, last emit
-//     position, scale, intensity, priority i32, emit accumulator, emitting, next_uid u32,
-//     flash direction, flash tick u64, flash ticks u32,
-//     lightning: origin, direction, points (count u32 + 3×f64 each), epoch u64, cut f64,
-//     animated_tick u64, culled u8, bound centre, bound radius,
-//     pool: count u32 then every SoA array in ParticlePool order
+//   slots: count u32, then each cluster slot's fields in the order of its field visitor
+//     (particles/world_state.h); a particle pool is its count u32 and every SoA array in
+//     ParticlePool order
 //   free list: count u32, then slot indices u32
 // Definitions are named, never pointed to: a snapshot loads into any world whose effect
 // library has the same effects (cluster names are checked).
@@ -25,6 +20,7 @@
 #include "particles/effect_library.h"
 #include "particles/particle_world.h"
 #include "core/snapshot_io.h"
+#include "core/state_fields.h"
 #include "particles/world_state.h"
 
 namespace arc {
@@ -41,114 +37,18 @@ void for_each_array(Pool& p, F&& f) {
   f(p.birth), f(p.death), f(p.uid), f(p.sprite), f(p.flags);
 }
 
-void write_cluster(snapshot::Writer& out, const Cluster& c) {
-  out.u64(c.serial);
-  out.str(c.effect->name);
-  out.u32(c.def_index);
-  out.str(c.def->name);
-  out.u64(c.spawn_tick);
-  out.u32(c.owner);
-  out.vec3(c.local_position);
-  out.quat(c.local_orientation);
-  out.vec3(c.world_origin);
-  out.vec3(c.spawn_velocity);
-  out.vec3(c.last_emit_position);
-  out.f64(c.scale);
-  out.f64(c.intensity);
-  out.i32(c.priority);
-  out.f64(c.emit_accumulator);
-  out.boolean(c.emitting);
-  out.u32(c.next_uid);
-  out.vec3(c.flash_direction);
-  out.u64(c.flash_tick);
-  out.u32(c.flash_ticks);
-  out.vec3(c.lightning.origin);
-  out.vec3(c.lightning.direction);
-  out.u32(uint32_t(c.lightning.points.size()));
-  for (const glm::dvec3& p : c.lightning.points) out.vec3(p);
-  out.u64(c.lightning.epoch);
-  out.f64(c.lightning.cut);
-  out.u64(c.animated_tick);
-  out.boolean(c.culled);
-  out.vec3(c.bound_center);
-  out.f64(c.bound_radius);
-  out.u32(uint32_t(c.pool.count()));
-  for_each_array(c.pool, [&out](const auto& v) { out.array(v); });
-}
-
-void read_cluster(snapshot::Reader& in, ParticleWorldState& w, Cluster& c, size_t slot) {
-  auto where = [slot] { return "cluster slot " + std::to_string(slot) + ": "; };
-  c.serial = in.u64();
-  if (c.serial == 0 || c.serial >= w.next_serial)
-    in.fail(where() + "serial " + std::to_string(c.serial) + " is outside 1.." + std::to_string(w.next_serial - 1));
-  const std::string effect = in.str();
-  if (!w.effects || !w.effects->has(effect)) in.fail(where() + "effect '" + effect + "' is not in this build's effect library");
-  c.effect = &w.effects->get(effect);
-  c.def_index = in.u32();
-  if (c.def_index >= c.effect->clusters.size())
-    in.fail(where() + "effect '" + effect + "' has " + std::to_string(c.effect->clusters.size()) + " clusters, the snapshot names cluster " +
-            std::to_string(c.def_index));
-  c.def = &c.effect->clusters[c.def_index];
-  const std::string def_name = in.str();
-  if (def_name != c.def->name)
-    in.fail(where() + "cluster " + std::to_string(c.def_index) + " of effect '" + effect + "' is '" + c.def->name +
-            "' in this build, '" + def_name + "' in the snapshot");
-  if (c.def->animation == AnimationType::Linear) c.motion = w.motion_table(*c.def);
-  c.spawn_tick = in.u64();
-  c.owner = in.u32();
-  c.local_position = in.vec3();
-  c.local_orientation = in.quat();
-  c.world_origin = in.vec3();
-  c.spawn_velocity = in.vec3();
-  c.last_emit_position = in.vec3();
-  c.scale = in.f64();
-  c.intensity = in.f64();
-  c.priority = in.i32();
-  c.emit_accumulator = in.f64();
-  c.emitting = in.boolean();
-  c.next_uid = in.u32();
-  c.flash_direction = in.vec3();
-  c.flash_tick = in.u64();
-  c.flash_ticks = in.u32();
-  c.lightning.origin = in.vec3();
-  c.lightning.direction = in.vec3();
-  const size_t points = in.count(24, "lightning point count");
-  c.lightning.points.resize(points);
-  for (glm::dvec3& p : c.lightning.points) p = in.vec3();
-  c.lightning.epoch = in.u64();
-  c.lightning.cut = in.f64();
-  c.animated_tick = in.u64();
-  c.culled = in.boolean();
-  c.bound_center = in.vec3();
-  c.bound_radius = in.f64();
-  const size_t n = in.count(95, "particle count");
-  for_each_array(c.pool, [&in, n](auto& v) { in.array(v, n); });
-  const bool lightning = c.def->animation == AnimationType::Lightning;
-  // Values the engine divides by, loops on or counts with: a channel is built by adding
-  // segments of seed_length·scale until max_length·scale, an emitter emits intensity·rate.
-  if (!(c.scale > 0.0) || !std::isfinite(c.scale)) in.fail(where() + "scale " + std::to_string(c.scale) + " is not a positive number");
-  if (!(c.intensity >= 0.0) || !std::isfinite(c.intensity))
-    in.fail(where() + "intensity " + std::to_string(c.intensity) + " is not a number >= 0");
-  if (!(c.emit_accumulator >= 0.0 && c.emit_accumulator < 1.0))
-    in.fail(where() + "emitter accumulator " + std::to_string(c.emit_accumulator) + " is outside [0, 1)");
-  if (std::isnan(c.lightning.cut)) in.fail(where() + "lightning cut is not a number");
-  if (c.spawn_tick > w.tick + 1)
-    in.fail(where() + "spawn tick " + std::to_string(c.spawn_tick) + " is after the world's tick " + std::to_string(w.tick) + " + 1");
-  // The invariants the engine indexes by: a channel has a polyline with a segment per particle.
-  if (lightning && (points < 2 || n > points - 1))
-    in.fail(where() + "lightning channel with " + std::to_string(points) + " points and " + std::to_string(n) + " particles");
-  for (size_t i = 0; i < n; ++i) {
-    if (c.pool.sprite[i] != c.def->sprite)
-      in.fail(where() + "particle " + std::to_string(i) + " has sprite " + std::to_string(c.pool.sprite[i]) + ", its definition " +
-              std::to_string(c.def->sprite));
-    if (c.pool.flags[i] & ~uint8_t(kParticleHidden))
-      in.fail(where() + "particle " + std::to_string(i) + " has unknown flags " + std::to_string(c.pool.flags[i]));
-  }
-}
-
 }  // namespace
 
-void hash_pool(const ParticlePool& pool, StateHasher& h) {
+// ---------------------------------------------------------------- leaf encodings
+
+// Found by the field visitors' hashing and writing (argument-dependent lookup, hence namespace
+// arc rather than an unnamed namespace); read back by ClusterReading below.
+template <class Hasher>
+static void hash_leaf(Hasher& h, const EffectDef* effect) {
+  h.add_str(effect->name);
+}
+// Every particle: words through a local FastHasher, several times faster than StateHasher.
+static void hash_leaf(StateHasher& h, const ParticlePool& pool) {
   FastHasher f;
   f.add_u64(pool.count());
   for_each_array(pool, [&f](const auto& v) {
@@ -159,6 +59,106 @@ void hash_pool(const ParticlePool& pool, StateHasher& h) {
   });
   h.add_u64(f.value());
 }
+static void write_leaf(snapshot::Writer& out, const EffectDef* effect) { out.str(effect->name); }
+static void write_leaf(snapshot::Writer& out, const ClusterDef* def) { out.str(def->name); }
+static void write_leaf(snapshot::Writer& out, const ParticlePool& pool) {
+  out.u32(uint32_t(pool.count()));
+  for_each_array(pool, [&out](const auto& v) { out.array(v); });
+}
+
+namespace {
+
+// Reads a cluster slot (fields::FieldReader's context): definitions by name from this world's
+// library, the particle pool, and the checks the engine's indexing and arithmetic rely on.
+struct ClusterReading {
+  ParticleWorldState& w;
+  Cluster* cluster = nullptr;
+  size_t slot = 0;
+
+  std::string where() const { return "cluster slot " + std::to_string(slot) + ": "; }
+
+  void read_leaf(snapshot::Reader& in, const char*, const EffectDef*& effect) {
+    const std::string name = in.str();
+    if (!w.effects || !w.effects->has(name)) in.fail(where() + "effect '" + name + "' is not in this build's effect library");
+    effect = &w.effects->get(name);
+  }
+  void read_leaf(snapshot::Reader& in, const char*, const ClusterDef*& def) {
+    const Cluster& c = *cluster;
+    if (c.def_index >= c.effect->clusters.size())
+      in.fail(where() + "effect '" + c.effect->name + "' has " + std::to_string(c.effect->clusters.size()) +
+              " clusters, the snapshot names cluster " + std::to_string(c.def_index));
+    def = &c.effect->clusters[c.def_index];
+    const std::string name = in.str();
+    if (name != def->name)
+      in.fail(where() + "cluster " + std::to_string(c.def_index) + " of effect '" + c.effect->name + "' is '" + def->name +
+              "' in this build, '" + name + "' in the snapshot");
+  }
+  void read_leaf(snapshot::Reader& in, const char*, ParticlePool& pool) {
+    const size_t n = in.count(95, "particle count");
+    for_each_array(pool, [&in, n](auto& v) { in.array(v, n); });
+  }
+  void after_read(snapshot::Reader& in, Cluster& c) {
+    if (!c.alive) return;
+    if (c.serial == 0 || c.serial >= w.next_serial)
+      in.fail(where() + "serial " + std::to_string(c.serial) + " is outside 1.." + std::to_string(w.next_serial - 1));
+    if (c.def->animation == AnimationType::Linear) c.motion = w.motion_table(*c.def);
+    check_values(in, c);
+    check_particles(in, c);
+  }
+  // Values the engine divides by, loops on or counts with: a channel is built by adding
+  // segments of seed_length·scale until max_length·scale, an emitter emits intensity·rate.
+  void check_values(snapshot::Reader& in, const Cluster& c) const {
+    if (!(c.scale > 0.0) || !std::isfinite(c.scale)) in.fail(where() + "scale " + std::to_string(c.scale) + " is not a positive number");
+    if (!(c.intensity >= 0.0) || !std::isfinite(c.intensity))
+      in.fail(where() + "intensity " + std::to_string(c.intensity) + " is not a number >= 0");
+    if (!(c.emit_accumulator >= 0.0 && c.emit_accumulator < 1.0))
+      in.fail(where() + "emitter accumulator " + std::to_string(c.emit_accumulator) + " is outside [0, 1)");
+    if (std::isnan(c.lightning.cut)) in.fail(where() + "lightning cut is not a number");
+    if (c.spawn_tick > w.tick + 1)
+      in.fail(where() + "spawn tick " + std::to_string(c.spawn_tick) + " is after the world's tick " + std::to_string(w.tick) + " + 1");
+  }
+  // The invariants the engine indexes by: a channel has a polyline with a segment per particle.
+  void check_particles(snapshot::Reader& in, const Cluster& c) const {
+    const size_t points = c.lightning.points.size(), n = c.pool.count();
+    if (c.def->animation == AnimationType::Lightning && (points < 2 || n > points - 1))
+      in.fail(where() + "lightning channel with " + std::to_string(points) + " points and " + std::to_string(n) + " particles");
+    for (size_t i = 0; i < n; ++i) {
+      if (c.pool.sprite[i] != c.def->sprite)
+        in.fail(where() + "particle " + std::to_string(i) + " has sprite " + std::to_string(c.pool.sprite[i]) + ", its definition " +
+                std::to_string(c.def->sprite));
+      if (c.pool.flags[i] & ~uint8_t(kParticleHidden))
+        in.fail(where() + "particle " + std::to_string(i) + " has unknown flags " + std::to_string(c.pool.flags[i]));
+    }
+  }
+};
+
+// The world's counters, owner transforms and slot table, then every cluster slot: the words
+// both hashes take, then those of hash pass `Pass` (summary or full). Hasher is FastHasher or
+// StateHasher.
+template <int Pass, class Hasher>
+void hash_world_state(const ParticleWorldState& w, Hasher& h) {
+  h.add_u64(w.tick);
+  h.add_u64(w.next_serial);
+  h.add_u64(w.live_particles);
+  h.add_u64(w.refused);
+  h.add_u64(w.skipped);
+  h.add_u64(w.owners.size());
+  for (const auto& [id, t] : w.owners) {
+    h.add_u64(id);
+    h.add_vec(t.position);
+    h.add_quat(t.orientation);
+    h.add_vec(t.velocity);
+  }
+  h.add_u64(w.slots.size());
+  h.add_u64(w.free_slots.size());
+  for (uint32_t s : w.free_slots) h.add_u64(s);
+  for (const Cluster& c : w.slots) {
+    fields::hash_pass<kClusterHashPass>(h, c);
+    fields::hash_pass<Pass>(h, c);
+  }
+}
+
+}  // namespace
 
 std::vector<uint8_t> ParticleWorld::save() const {
   const ParticleWorldState& w = ParticleWorldAccess::state(*this);
@@ -181,11 +181,7 @@ std::vector<uint8_t> ParticleWorld::save() const {
     out.vec3(t.velocity);
   }
   out.u32(uint32_t(w.slots.size()));
-  for (const Cluster& c : w.slots) {
-    out.u32(c.generation);
-    out.boolean(c.alive);
-    if (c.alive) write_cluster(out, c);
-  }
+  for (const Cluster& c : w.slots) fields::write_value(out, c);
   out.u32(uint32_t(w.free_slots.size()));
   for (uint32_t s : w.free_slots) out.u32(s);
   return out.framed(kMagic, kVersion);
@@ -229,16 +225,15 @@ void ParticleWorld::load(const uint8_t* data, size_t size) {
   w.slots.resize(slots);
   uint64_t particles = 0;
   size_t dead = 0;
+  ClusterReading reading{w};
+  fields::FieldReader<ClusterReading> reader(in, reading);
   for (size_t s = 0; s < slots; ++s) {
     Cluster& c = w.slots[s];
-    c.generation = in.u32();
-    c.alive = in.boolean();
-    if (!c.alive) {
-      ++dead;
-      continue;
-    }
-    read_cluster(in, w, c, s);
-    particles += c.pool.count();
+    reading.cluster = &c;
+    reading.slot = s;
+    reader.read("cluster", c);
+    if (c.alive) particles += c.pool.count();
+    else ++dead;
   }
   if (particles != w.live_particles)
     in.fail("live particle count " + std::to_string(w.live_particles) + " differs from the " + std::to_string(particles) +
@@ -258,10 +253,13 @@ void ParticleWorld::load(const uint8_t* data, size_t size) {
   live = std::move(w);
 }
 
-void ParticleWorld::hash_summary(FastHasher& out) const {
+// Flattened, so the local hasher stays in registers through every cluster's words.
+[[gnu::flatten]] void ParticleWorld::hash_summary(FastHasher& out) const {
   FastHasher h;  // local: kept in registers (fast_hash.h)
-  hash_world_state(ParticleWorldAccess::state(*this), h, [&](const Cluster& c) { h.add_u64(c.pool.count()); });
+  hash_world_state<kSummaryHashPass>(ParticleWorldAccess::state(*this), h);
   out.add_u64(h.value());
 }
+
+void ParticleWorld::hash(StateHasher& h) const { hash_world_state<kFullHashPass>(ParticleWorldAccess::state(*this), h); }
 
 }  // namespace arc

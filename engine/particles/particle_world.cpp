@@ -7,7 +7,6 @@
 #include <glm/mat3x3.hpp>
 
 #include "core/error.h"
-#include "core/hash.h"
 #include "core/rng.h"
 #include "particles/cluster.h"
 #include "particles/effect_library.h"
@@ -474,15 +473,6 @@ ParticleStats ParticleWorld::stats() const {
   s.refused_particles = impl_->refused;
   s.skipped_clusters = impl_->skipped;
   return s;
-}
-
-void ParticleWorld::hash(StateHasher& h) const {
-  hash_world_state(*impl_, h, [&](const Cluster& c) {
-    for (const glm::dvec3& p : c.lightning.points) h.add_vec(p);
-    h.add_vec(c.bound_center);
-    h.add_f64(c.bound_radius);
-    hash_pool(c.pool, h);
-  });
 }
 
 uint64_t ParticleWorld::tick() const { return impl_->tick; }

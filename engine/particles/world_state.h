@@ -1,11 +1,12 @@
 // particles/world_state.h — the dynamic state of a ParticleWorld as plain data (internal).
 //
-// ParticleWorld::Impl (particle_world.cpp) derives from this struct, so the snapshot code
-// (particle_serialize.cpp) can read and replace the whole state without seeing the rest of
+// ParticleWorld::Impl (particle_world.cpp) derives from this struct, so the snapshot and hash
+// code (particle_serialize.cpp) can read and replace the whole state without seeing the rest of
 // the implementation. Everything here is simulation state except `effects` (the immutable
 // library the clusters' definitions live in) and `motion_tables` (a cache: each table is a
 // pure function of its key). The queries on it (owner and emitter poses, budget limits) are
-// shared by the world and the emission code (emission.cpp).
+// shared by the world and the emission code (emission.cpp). A cluster's fields are listed once,
+// by its field visitor below.
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -18,6 +19,7 @@
 #include "particles/animation.h"
 #include "particles/cluster.h"
 #include "particles/particle_world.h"
+#include "core/state_fields.h"
 
 namespace arc {
 
@@ -78,63 +80,66 @@ struct ParticleWorldState {
   }
 };
 
-// The world's counters, owner transforms and slot table, then for every live cluster all that
-// its particles are a closed-form function of (RNG stream, definition, age origin, frame,
-// emitter state, counters). Shared by the full hash (ParticleWorld::hash, which adds the
-// lightning polylines, bounds and every particle) and the per-tick summary
-// (ParticleWorld::hash_summary, which adds the particle counts); Hasher is StateHasher or
-// FastHasher. `per_cluster(c)` runs after each live cluster's fields.
-template <class Hasher, class PerCluster>
-void hash_world_state(const ParticleWorldState& w, Hasher& h, PerCluster&& per_cluster) {
-  h.add_u64(w.tick);
-  h.add_u64(w.next_serial);
-  h.add_u64(w.live_particles);
-  h.add_u64(w.refused);
-  h.add_u64(w.skipped);
-  h.add_u64(w.owners.size());
-  for (const auto& [id, t] : w.owners) {
-    h.add_u64(id);
-    h.add_vec(t.position);
-    h.add_quat(t.orientation);
-    h.add_vec(t.velocity);
-  }
-  h.add_u64(w.slots.size());
-  h.add_u64(w.free_slots.size());
-  for (uint32_t s : w.free_slots) h.add_u64(s);
-  for (const Cluster& c : w.slots) {
-    h.add_u64((uint64_t(c.generation) << 1) | uint64_t(c.alive));
-    if (!c.alive) continue;
-    h.add_u64(c.serial);
-    h.add_str(c.effect->name);
-    h.add_u64(c.def_index);
-    h.add_u64(c.spawn_tick);
-    h.add_u64(c.owner);
-    h.add_vec(c.local_position);
-    h.add_quat(c.local_orientation);
-    h.add_vec(c.world_origin);
-    h.add_vec(c.spawn_velocity);
-    h.add_vec(c.last_emit_position);
-    h.add_f64(c.scale);
-    h.add_f64(c.intensity);
-    h.add_i64(c.priority);
-    h.add_u64((uint64_t(c.next_uid) << 1) | uint64_t(c.emitting));
-    h.add_f64(c.emit_accumulator);
-    h.add_u64(c.flash_tick);
-    h.add_u64(c.flash_ticks);
-    h.add_vec(c.flash_direction);
-    h.add_u64(c.lightning.epoch);
-    h.add_f64(c.lightning.cut);
-    h.add_vec(c.lightning.origin);
-    h.add_vec(c.lightning.direction);
-    h.add_u64(c.lightning.points.size());
-    h.add_u64((c.animated_tick << 1) | uint64_t(c.culled));
-    per_cluster(c);
-  }
+// Where the particle world's hashes take a cluster's fields: words both hashes take, then the
+// words only the per-tick summary (ParticleWorld::hash_summary) or only the full hash
+// (ParticleWorld::hash) adds. Word numbers are frozen: replays store these hashes.
+inline constexpr int kClusterHashPass = 0;
+inline constexpr int kSummaryHashPass = 1;
+inline constexpr int kFullHashPass = 2;
+template <int W, fields::HashAs As = fields::HashAs::value>
+inline constexpr fields::HashAt<kClusterHashPass, W, As> cluster_hash;
+template <int W, fields::HashAs As = fields::HashAs::value>
+inline constexpr fields::HashAt<kSummaryHashPass, W, As> summary_only_hash;
+template <int W, fields::HashAs As = fields::HashAs::value>
+inline constexpr fields::HashAt<kFullHashPass, W, As> full_only_hash;
+
+template <fields::MaybeConst<LightningChannel> L, class V>
+void visit_fields(L& l, V&& v) {
+  v("origin", l.origin, fields::saved, cluster_hash<2>);
+  v("direction", l.direction, fields::saved, cluster_hash<3>);
+  v("points", l.points, fields::saved, cluster_hash<4, fields::HashAs::count>, full_only_hash<0>);
+  v("epoch", l.epoch, fields::saved, cluster_hash<0>);
+  v("cut", l.cut, fields::saved, cluster_hash<1>);
 }
 
-// Every particle of a pool folded into `h` (the full hash); particle_serialize.cpp. Words go
-// through a local FastHasher (core/fast_hash.h), several times faster than StateHasher.
-void hash_pool(const ParticlePool& pool, StateHasher& h);
+// A cluster slot in snapshot order: a free slot keeps only its generation. Everything a live
+// cluster's particles are a closed-form function of (RNG stream, definition, age origin, frame,
+// emitter state, counters) is in both hashes; the full hash adds the lightning polyline, the
+// bounds and every particle. Definitions are saved by name: a snapshot loads into any world
+// whose effect library has the same effects.
+template <fields::MaybeConst<Cluster> C, class V>
+void visit_fields(C& c, V&& v) {
+  v("generation", c.generation, fields::saved, cluster_hash<0, fields::HashAs::high_bits>);
+  v("alive", c.alive, fields::saved, cluster_hash<0, fields::HashAs::low_bit>);
+  if (!c.alive) return;
+  v("serial", c.serial, fields::saved, cluster_hash<1>);
+  v("effect", c.effect, fields::saved, cluster_hash<2>);
+  v("def_index", c.def_index, fields::saved, cluster_hash<3>);
+  v("def", c.def, fields::saved, fields::unhashed);            // its name, checked on load
+  v("motion", c.motion, fields::not_saved, fields::unhashed);  // a table shared by definition and tick length
+  v("spawn_tick", c.spawn_tick, fields::saved, cluster_hash<4>);
+  v("owner", c.owner, fields::saved, cluster_hash<5>);
+  v("local_position", c.local_position, fields::saved, cluster_hash<6>);
+  v("local_orientation", c.local_orientation, fields::saved, cluster_hash<7>);
+  v("world_origin", c.world_origin, fields::saved, cluster_hash<8>);
+  v("spawn_velocity", c.spawn_velocity, fields::saved, cluster_hash<9>);
+  v("last_emit_position", c.last_emit_position, fields::saved, cluster_hash<10>);
+  v("scale", c.scale, fields::saved, cluster_hash<11>);
+  v("intensity", c.intensity, fields::saved, cluster_hash<12>);
+  v("priority", c.priority, fields::saved, cluster_hash<13>);
+  v("emit_accumulator", c.emit_accumulator, fields::saved, cluster_hash<15>);
+  v("emitting", c.emitting, fields::saved, cluster_hash<14, fields::HashAs::low_bit>);
+  v("next_uid", c.next_uid, fields::saved, cluster_hash<14, fields::HashAs::high_bits>);
+  v("flash_direction", c.flash_direction, fields::saved, cluster_hash<18>);
+  v("flash_tick", c.flash_tick, fields::saved, cluster_hash<16>);
+  v("flash_ticks", c.flash_ticks, fields::saved, cluster_hash<17>);
+  v("lightning", c.lightning, fields::saved, cluster_hash<19>, full_only_hash<0>);
+  v("animated_tick", c.animated_tick, fields::saved, cluster_hash<20, fields::HashAs::high_bits>);
+  v("culled", c.culled, fields::saved, cluster_hash<20, fields::HashAs::low_bit>);
+  v("bound_center", c.bound_center, fields::saved, full_only_hash<1>);
+  v("bound_radius", c.bound_radius, fields::saved, full_only_hash<2>);
+  v("pool", c.pool, fields::saved, summary_only_hash<0, fields::HashAs::count>, full_only_hash<3>);
+}
 
 // The snapshot code's way in (a friend of ParticleWorld); defined in particle_world.cpp.
 struct ParticleWorldAccess {

@@ -95,17 +95,9 @@ ShipClassDef load_ship_class(const std::string& path, const std::string& name) {
   return c;
 }
 
-LevelDef parse_level_doc(std::shared_ptr<const JsonDoc> doc, const std::string& root_dir, const EffectLibrary* fx) {
-  JsonObject r = root_of(doc);
-  LevelDef L;
-  L.path = doc->path();
-  L.name = r.require_string("name");
-  L.seed = static_cast<uint64_t>(r.integer("seed", 1, 0, 0xFFFFFFFFll));
-  L.tick_rate = static_cast<int>(r.integer("tick_rate", 60, 10, 480));
-  std::string diff = r.choice("difficulty", "normal", {"easy", "normal", "hard"});
-  L.difficulty = diff == "easy" ? 0 : diff == "normal" ? 1 : 2;
-  L.objective = r.require_string("objective");
+namespace {
 
+void parse_rules(JsonObject& r, LevelDef& L) {
   JsonObject win = r.require_object("win");
   std::string wk = win.choice("type", "destroy_all_hostiles",
                               {"destroy_all_hostiles", "survive_ticks", "last_team_standing"});
@@ -127,8 +119,20 @@ LevelDef parse_level_doc(std::shared_ptr<const JsonDoc> doc, const std::string& 
     L.splash_damage = o.number("damage", 40.0, 0.0, kHuge);
     o.finish();
   }
+}
 
-  std::optional<JsonValue> protect_pos;
+// Loads the class a ship names the first time a ship of the level names it.
+void load_class_of(LevelDef& L, const ShipSpawnDef& d, const JsonValue& cls, const std::string& root_dir) {
+  if (L.classes.count(d.ship_class)) return;
+  if (d.ship_class.empty() || d.ship_class.find_first_of("/\\.") != std::string::npos)
+    cls.fail("'class' must be a ship class name (a file stem in assets/ships/), got \"" + d.ship_class + "\"");
+  std::string file = (std::filesystem::path(root_dir) / "assets/ships" / (d.ship_class + ".json")).string();
+  if (!std::filesystem::exists(file))
+    cls.fail("ship class '" + d.ship_class + "' not found: no file " + file);
+  L.classes.emplace(d.ship_class, std::make_shared<const ShipClassDef>(load_ship_class(file, d.ship_class)));
+}
+
+void parse_ships(JsonObject& r, LevelDef& L, const std::string& root_dir) {
   bool have_player = false;
   for (JsonObject s : r.objects("ships")) {
     ShipSpawnDef d;
@@ -147,18 +151,13 @@ LevelDef parse_level_doc(std::shared_ptr<const JsonDoc> doc, const std::string& 
     s.finish();
     for (const ShipSpawnDef& other : L.ships)
       if (other.name == d.name) s.fail_key("name", "ship name '" + d.name + "' is used twice");
-    if (!L.classes.count(d.ship_class)) {
-      if (d.ship_class.empty() || d.ship_class.find_first_of("/\\.") != std::string::npos)
-        cls.fail("'class' must be a ship class name (a file stem in assets/ships/), got \"" + d.ship_class + "\"");
-      std::string file = (std::filesystem::path(root_dir) / "assets/ships" / (d.ship_class + ".json")).string();
-      if (!std::filesystem::exists(file))
-        cls.fail("ship class '" + d.ship_class + "' not found: no file " + file);
-      L.classes.emplace(d.ship_class, load_ship_class(file, d.ship_class));
-    }
+    load_class_of(L, d, cls, root_dir);
     L.ships.push_back(std::move(d));
   }
   if (L.ships.empty()) r.fail_key(r.has("ships") ? "ships" : "name", "a level needs at least one ship in 'ships'");
+}
 
+void parse_props(JsonObject& r, LevelDef& L) {
   for (JsonObject p : r.objects("props")) {
     PropDef d;
     d.model = p.require_string("model");
@@ -170,6 +169,9 @@ LevelDef parse_level_doc(std::shared_ptr<const JsonDoc> doc, const std::string& 
     p.finish();
     L.props.push_back(std::move(d));
   }
+}
+
+void parse_effects(JsonObject& r, LevelDef& L, const EffectLibrary* fx) {
   for (JsonObject e : r.objects("effects")) {
     EffectSpawnDef d;
     JsonValue name = e.require("effect");
@@ -186,6 +188,9 @@ LevelDef parse_level_doc(std::shared_ptr<const JsonDoc> doc, const std::string& 
     e.finish();
     L.effects.push_back(std::move(d));
   }
+}
+
+void parse_camera(JsonObject& r, LevelDef& L) {
   if (auto c = r.get("camera")) {
     JsonObject o = c->object();
     L.camera.mode = o.choice("mode", "chase", {"chase", "cockpit", "fixed"});
@@ -194,14 +199,36 @@ LevelDef parse_level_doc(std::shared_ptr<const JsonDoc> doc, const std::string& 
     L.camera.fov_deg = o.number("fov", 60.0, 10.0, 150.0);
     o.finish();
   }
-  if (L.lose == LoseKind::Protect) {
-    bool found = false;
-    for (const ShipSpawnDef& s : L.ships) found = found || s.name == L.protect_ship;
-    if (!found) {
-      JsonObject lose2 = r.require_object("lose");
-      lose2.fail_key("ship", "'ship' names no ship of this level: \"" + L.protect_ship + "\"");
-    }
+}
+
+void check_protected_ship(JsonObject& r, const LevelDef& L) {
+  if (L.lose != LoseKind::Protect) return;
+  bool found = false;
+  for (const ShipSpawnDef& s : L.ships) found = found || s.name == L.protect_ship;
+  if (!found) {
+    JsonObject lose2 = r.require_object("lose");
+    lose2.fail_key("ship", "'ship' names no ship of this level: \"" + L.protect_ship + "\"");
   }
+}
+
+}  // namespace
+
+LevelDef parse_level_doc(std::shared_ptr<const JsonDoc> doc, const std::string& root_dir, const EffectLibrary* fx) {
+  JsonObject r = root_of(doc);
+  LevelDef L;
+  L.path = doc->path();
+  L.name = r.require_string("name");
+  L.seed = static_cast<uint64_t>(r.integer("seed", 1, 0, 0xFFFFFFFFll));
+  L.tick_rate = static_cast<int>(r.integer("tick_rate", 60, 10, 480));
+  std::string diff = r.choice("difficulty", "normal", {"easy", "normal", "hard"});
+  L.difficulty = diff == "easy" ? 0 : diff == "normal" ? 1 : 2;
+  L.objective = r.require_string("objective");
+  parse_rules(r, L);
+  parse_ships(r, L, root_dir);
+  parse_props(r, L);
+  parse_effects(r, L, fx);
+  parse_camera(r, L);
+  check_protected_ship(r, L);
   r.finish();
   return L;
 }

@@ -9,6 +9,7 @@
 #pragma once
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 #include <glm/vec3.hpp>
@@ -63,6 +64,7 @@ struct ShipClassDef {
 
 // Gunner: holds still and fires every weapon straight ahead in bursts (the effect gallery).
 enum class AiKind : uint8_t { None = 0, Fighter = 1, Gunner = 2 };
+constexpr AiKind last_enumerator(AiKind) { return AiKind::Gunner; }
 
 struct ShipSpawnDef {
   std::string name;
@@ -121,7 +123,9 @@ struct LevelDef {
   std::vector<PropDef> props;
   std::vector<EffectSpawnDef> effects;
   CameraHintDef camera;
-  std::map<std::string, ShipClassDef> classes;  // every class the ships name, by name
+  // Every class the ships name, by name. Shared and immutable: a copied World's ships point at
+  // the same definitions.
+  std::map<std::string, std::shared_ptr<const ShipClassDef>> classes;
 };
 
 class EffectLibrary;

@@ -1,54 +1,26 @@
+// game/sim/game.cpp — Game: level loading, stepping, the per-tick hash, the state dump and the
+// summary; snapshots are in serialize.cpp, the rules of a tick in simulation.cpp.
 #include "game/sim/game.h"
 
 #include <array>
 #include <bit>
-#include <cstring>
+#include <optional>
+#include <ostream>
 #include <sstream>
 #include <nlohmann/json.hpp>
 
-#include "core/error.h"
 #include "core/hash.h"
 #include "game/sim/effects.h"
-#include "game/sim/serialize.h"
 #include "game/sim/level_start.h"
+#include "game/sim/serialize.h"
 #include "game/sim/simulation.h"
 #include "game/sim/world.h"
 #include "core/fast_hash.h"
+#include "core/state_fields.h"
 
 namespace arc {
 
 // ---------------------------------------------------------------- World
-
-World& World::operator=(const World& o) {
-  if (this == &o) return *this;
-  level = o.level;
-  class_names = o.class_names;
-  model_paths = o.model_paths;
-  ships = o.ships;
-  projectiles = o.projectiles;
-  props = o.props;
-  explosions = o.explosions;
-  effects = o.effects;
-  particles = o.particles ? std::make_unique<ParticleWorld>(*o.particles) : nullptr;
-  seed = o.seed;
-  difficulty = o.difficulty;
-  tick = o.tick;
-  dt = o.dt;
-  next_projectile_serial = o.next_projectile_serial;
-  paused = o.paused;
-  player = o.player;
-  outcome = o.outcome;
-  winner = o.winner;
-  outcome_tick = o.outcome_tick;
-  camera_mode = o.camera_mode;
-  camera = o.camera;
-  prev_camera = o.prev_camera;
-  options = o.options;
-  steps = o.steps;
-  // Ship classes live in this World's own level copy.
-  for (Ship& s : ships) s.cls = &level.classes.at(class_names[s.class_index]);
-  return *this;
-}
 
 int World::focus_ship() const {
   if (player >= 0) return player;
@@ -97,100 +69,43 @@ bool Game::paused() const { return world_->paused; }
 const World& Game::world() const { return *world_; }
 World& Game::world_mut() { return *world_; }
 
-namespace {
+// ---------------------------------------------------------------- hash and dump leaves
 
-void hash_clusters(FastHasher& h, const EffectHandle& e) {
+// Leaf types' hash words and dump text, found by fields::hash_value and fields::dump_value
+// (argument-dependent lookup, hence namespace arc rather than an unnamed namespace).
+static_assert(sizeof(InputFrame) == 8, "a field added to InputFrame needs its hash, snapshot and dump encodings");
+
+// The six axes in one word, then the buttons.
+static void hash_leaf(FastHasher& h, const InputFrame& f) {
+  h.add_u64(std::bit_cast<uint64_t>(std::array<int8_t, 8>{f.pitch, f.yaw, f.roll, f.throttle, f.strafe_x, f.strafe_y, 0, 0}));
+  h.add_u64(f.buttons);
+}
+static void hash_leaf(FastHasher& h, ClusterHandle c) { h.add_u64((uint64_t(c.index) << 32) | c.generation); }
+static void hash_leaf(FastHasher& h, const EffectHandle& e) {
   h.add_u64(e.clusters.size());
-  for (ClusterHandle c : e.clusters) h.add_u64((uint64_t(c.index) << 32) | c.generation);
+  for (ClusterHandle c : e.clusters) hash_leaf(h, c);
+}
+// Per-cluster summaries: particle state is a closed-form function of them (full_hash() hashes
+// every particle as well).
+static void hash_leaf(FastHasher& h, const std::optional<ParticleWorld>& p) { p->hash_summary(h); }
+
+static void dump_leaf(std::ostream& o, const InputFrame& f) {
+  o << "(p" << int(f.pitch) << " y" << int(f.yaw) << " r" << int(f.roll) << " t" << int(f.throttle) << " x"
+    << int(f.strafe_x) << " z" << int(f.strafe_y) << " b" << f.buttons << ')';
+}
+static void dump_leaf(std::ostream& o, ClusterHandle c) { o << c.index << ':' << c.generation; }
+static void dump_leaf(std::ostream& o, const EffectHandle& e) {
+  o << '[';
+  for (ClusterHandle c : e.clusters) o << ' ' << c.index << ':' << c.generation;
+  o << " ]";
+}
+static void dump_leaf(std::ostream& o, const ShipClassDef* c) { o << c->name; }
+static void dump_leaf(std::ostream& o, const std::optional<ParticleWorld>& p) {
+  const ParticleStats st = p->stats();
+  o << "(live " << st.live_particles << " clusters " << st.live_clusters << " refused " << st.refused_particles << ')';
 }
 
-// The cheap per-tick hash (Game::hash()): FastHasher, so it costs a small part of a step.
-uint64_t hash_core(const World& w) {
-  FastHasher h;  // local: kept in registers (core/fast_hash.h)
-  h.add_i64(w.tick);
-  h.add_u64(w.seed);
-  h.add_i64(w.difficulty);
-  h.add_bool(w.paused);
-  h.add_u64(static_cast<uint64_t>(w.outcome));
-  h.add_str(w.winner);
-  h.add_i64(w.outcome_tick);
-  h.add_u64(w.next_projectile_serial);
-  for (const Ship& s : w.ships) {
-    h.add_i64(s.id);
-    h.add_bool(s.alive);
-    h.add_vec(s.position);
-    h.add_vec(s.velocity);
-    h.add_vec(s.angular_velocity);
-    h.add_quat(s.orientation);
-    h.add_f64(s.hull);
-    h.add_f64(s.shield);
-    h.add_f64(s.energy);
-    h.add_i64(s.last_hit_tick);
-    h.add_i64(s.last_attacker);
-    h.add_i64(s.kills);
-    h.add_i64(s.target);
-    h.add_u64(std::bit_cast<uint64_t>(std::array<int8_t, 8>{s.controls.pitch, s.controls.yaw, s.controls.roll,
-                                                            s.controls.throttle, s.controls.strafe_x,
-                                                            s.controls.strafe_y, 0, 0}));
-    h.add_u64(s.controls.buttons);
-    h.add_bool(s.afterburner_on);
-    h.add_u64(static_cast<uint64_t>(s.secondary));
-    h.add_f64(s.secondary_cooldown);
-    h.add_u64(s.hardpoint_cycle);
-    h.add_bool(s.beam_firing);
-    h.add_i64(s.beam_target);
-    for (double d : s.beam_hit_distance) h.add_f64(d);
-    const AiState& ai = s.ai_state;
-    h.add_u64(static_cast<uint64_t>(ai.mode));
-    h.add_i64(ai.target);
-    h.add_i64(ai.mode_until);
-    h.add_i64(ai.next_think);
-    h.add_vec(ai.aim_error);
-    h.add_vec(ai.evade_dir);
-  }
-  for (const Projectile& p : w.projectiles) {
-    h.add_u64(p.serial);
-    h.add_u64(static_cast<uint64_t>(p.kind));
-    h.add_i64(p.owner);
-    h.add_i64(p.target);
-    h.add_vec(p.position);
-    h.add_vec(p.velocity);
-    h.add_i64(p.expire_tick);
-  }
-  // Presentation state (previous transforms, flashes, attached effects' handles, explosions,
-  // the camera rig, which decides particle culling).
-  for (const Ship& s : w.ships) {
-    h.add_vec(s.prev_position);
-    h.add_quat(s.prev_orientation);
-    h.add_i64(s.shield_flash_tick);
-    h.add_i64(s.death_tick);
-    h.add_f64(s.shown_shield_intensity);
-    h.add_f64(s.shown_exhaust_intensity);
-    h.add_i64(s.shield_density);
-    h.add_i64(s.shield_spawn_tick);
-    hash_clusters(h, s.shield_fx);
-    for (const EffectHandle& e : s.exhaust_fx) hash_clusters(h, e);
-    for (ClusterHandle c : s.beam_channels) h.add_u64((uint64_t(c.index) << 32) | c.generation);
-  }
-  for (const Projectile& p : w.projectiles) {
-    h.add_vec(p.prev_position);
-    hash_clusters(h, p.trail);
-  }
-  for (const ExplosionEvent& e : w.explosions) {
-    h.add_vec(e.position);
-    h.add_i64(e.tick);
-    h.add_f64(e.radius);
-  }
-  h.add_u64(static_cast<uint64_t>(w.camera_mode));
-  h.add_vec(w.camera.position);
-  h.add_quat(w.camera.orientation);
-  h.add_vec(w.prev_camera.position);
-  h.add_quat(w.prev_camera.orientation);
-  // Per-cluster summaries: particle state is a closed-form function of them (full_hash()
-  // hashes every particle as well).
-  w.particles->hash_summary(h);
-  return h.value();
-}
+namespace {
 
 const char* outcome_name(Outcome o) {
   switch (o) {
@@ -203,7 +118,15 @@ const char* outcome_name(Outcome o) {
 
 }  // namespace
 
-uint64_t Game::hash() const { return hash_core(*world_); }
+// The cheap per-tick hash: FastHasher, so it costs a small part of a step. The order of its
+// words is the visitors' (game/sim/world.h), frozen by the hashes replays store. Flattened, so
+// the hasher stays in registers through every ship's words.
+[[gnu::flatten]] uint64_t Game::hash() const {
+  FastHasher h;  // local: kept in registers (core/fast_hash.h)
+  fields::hash_pass<kStateHashPass>(h, *world_);
+  fields::hash_pass<kPresentationHashPass>(h, *world_);
+  return h.value();
+}
 
 uint64_t Game::full_hash() const {
   StateHasher h;
@@ -214,29 +137,10 @@ uint64_t Game::full_hash() const {
 }
 
 std::string Game::state_dump() const {
-  const World& w = *world_;
   std::ostringstream o;
   o.precision(17);
-  o << "tick " << w.tick << " steps " << w.steps << " paused " << w.paused << " outcome " << outcome_name(w.outcome)
-    << " winner " << (w.winner.empty() ? "-" : w.winner) << "\n";
-  for (const Ship& s : w.ships) {
-    o << "ship " << s.id << " " << s.name << " team " << s.team << " class " << s.cls->name << " alive " << s.alive
-      << " hull " << s.hull << " shield " << s.shield << " energy " << s.energy << " kills " << s.kills << "\n"
-      << "  pos " << s.position.x << " " << s.position.y << " " << s.position.z << " vel " << s.velocity.x << " "
-      << s.velocity.y << " " << s.velocity.z << "\n"
-      << "  rot " << s.orientation.w << " " << s.orientation.x << " " << s.orientation.y << " " << s.orientation.z
-      << " angvel " << s.angular_velocity.x << " " << s.angular_velocity.y << " " << s.angular_velocity.z << "\n"
-      << "  controls p" << int(s.controls.pitch) << " y" << int(s.controls.yaw) << " r" << int(s.controls.roll) << " t"
-      << int(s.controls.throttle) << " b" << s.controls.buttons << " target " << s.target << " beam "
-      << s.beam_firing << "->" << s.beam_target << " secondary " << int(s.secondary) << " cooldown "
-      << s.secondary_cooldown << " ai mode " << int(s.ai_state.mode) << " target " << s.ai_state.target << "\n";
-  }
-  for (const Projectile& p : w.projectiles)
-    o << "projectile " << p.serial << " kind " << int(p.kind) << " owner " << p.owner << " target " << p.target
-      << " pos " << p.position.x << " " << p.position.y << " " << p.position.z << "\n";
-  ParticleStats st = w.particles->stats();
-  o << "particles " << st.live_particles << " clusters " << st.live_clusters << " refused " << st.refused_particles
-    << "\n";
+  fields::dump_fields(o, *world_);
+  o << "\n";
   return o.str();
 }
 

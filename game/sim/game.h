@@ -20,6 +20,7 @@ namespace arc {
 class World;  // game/sim/world.h: ships, projectiles, particle world, level state
 
 enum class Difficulty : uint8_t { Easy = 0, Normal = 1, Hard = 2 };
+constexpr Difficulty last_enumerator(Difficulty) { return Difficulty::Hard; }
 
 struct GameOptions {
   Difficulty difficulty = Difficulty::Normal;

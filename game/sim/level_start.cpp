@@ -2,7 +2,7 @@
 // from the level, the camera rig, and each ship's shield sphere and engine exhausts.
 #include "game/sim/level_start.h"
 
-#include <algorithm>
+#include <string>
 
 #include "core/error.h"
 #include "game/sim/camera_rig.h"
@@ -28,8 +28,7 @@ void add_ships(World& w) {
     s.id = static_cast<int>(w.ships.size());
     s.name = d.name;
     s.team = d.team;
-    s.cls = &w.level.classes.at(d.ship_class);
-    s.class_index = static_cast<int>(std::find(w.class_names.begin(), w.class_names.end(), d.ship_class) - w.class_names.begin());
+    s.cls = w.level.classes.at(d.ship_class).get();
     s.model = add_model(w, s.cls->model);
     s.player = d.player;
     s.ai = d.ai;
@@ -83,14 +82,13 @@ void init_world(World& w, LevelDef level, std::shared_ptr<const EffectLibrary> e
   w.seed = o.seed_override ? o.seed : w.level.seed;
   w.difficulty = o.difficulty_override ? static_cast<int>(o.difficulty) : w.level.difficulty;
   w.dt = 1.0 / w.level.tick_rate;
-  for (const auto& [name, cls] : w.level.classes) w.class_names.push_back(name);
   w.effects = std::move(effects);
   ParticleConfig pc;
   pc.seed = w.seed;
   pc.budget = o.particle_budget;
   pc.lightning_interval = o.lightning_interval;
   pc.tick_seconds = w.dt;
-  w.particles = std::make_unique<ParticleWorld>(pc, w.effects.get());
+  w.particles.emplace(pc, w.effects.get());
   add_ships(w);
   add_props(w);
   w.camera_mode = w.level.camera.mode == "cockpit" ? CameraMode::Cockpit

@@ -9,8 +9,11 @@
 // overwrites the dynamic state, checking that the snapshot belongs to that level.
 //
 // Format: core/snapshot_io.h's frame (magic "ARCSNAP1", version, size, checksum), then
-// little-endian fields in the order of serialize.cpp. A truncated, corrupt or foreign
-// snapshot throws InputError("snapshot: ...").
+// little-endian: the settings header (level name, tick rate, seed, difficulty, particle budget,
+// lightning interval, sub-steps), then every saved field of the World in the order of the
+// field visitors in game/sim/world.h (a list is its u32 length and its entries), the particle
+// world's snapshot last. A truncated, corrupt or foreign snapshot throws
+// InputError("snapshot: ...").
 //
 //   std::vector<uint8_t> bytes = save_world(w);
 //   GameOptions o = snapshot_options(bytes, base);     // the level is loaded with these

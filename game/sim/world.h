@@ -4,11 +4,19 @@
 // in a vector in id order (id = index), dead ships stay with alive = false so ids never move.
 // Each ship keeps its previous tick's transform beside the current one, so the renderer can
 // interpolate by alpha without the simulation knowing about frames. Particle owners: ship i is
-// owner i + 1; projectile with serial s is owner kProjectileOwnerBase + s.
+// owner i + 1; projectile with serial s is owner kProjectileOwnerBase + s. A World copies
+// deeply (its particle world too); copies share the immutable level definitions.
+//
+// Every struct here is followed by its field visitor (core/state_fields.h), the one list
+// of its fields that Game::hash, the snapshot (serialize.cpp) and Game::state_dump follow. The
+// per-tick hash takes every struct's state_hash words, then (a second pass over the world)
+// its presentation_hash words; word numbers are frozen, since replays store these hashes. A
+// field added to a struct and not to its visitor fails tests/unit/game/test_state_fields.cpp.
 #pragma once
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 #include <glm/gtc/quaternion.hpp>
@@ -18,6 +26,7 @@
 #include "game/sim/game.h"
 #include "game/sim/input.h"
 #include "particles/particle_world.h"
+#include "core/state_fields.h"
 
 namespace arc {
 
@@ -33,6 +42,31 @@ inline glm::dvec3 forward_of(const glm::dquat& q) { return q * glm::dvec3(0, 0, 
 enum class SecondaryWeapon : uint8_t { Missile = 0, Plasma = 1 };
 enum class AiMode : uint8_t { Attack = 0, Evade = 1, BreakOff = 2 };
 enum class CameraMode : uint8_t { Chase = 0, Cockpit = 1, Fixed = 2 };
+enum class Outcome : uint8_t { Undecided = 0, Victory = 1, Defeat = 2, TeamWon = 3 };
+// The last value of each enum: a snapshot's byte beyond it is an error.
+constexpr SecondaryWeapon last_enumerator(SecondaryWeapon) { return SecondaryWeapon::Plasma; }
+constexpr AiMode last_enumerator(AiMode) { return AiMode::BreakOff; }
+constexpr CameraMode last_enumerator(CameraMode) { return CameraMode::Fixed; }
+constexpr Outcome last_enumerator(Outcome) { return Outcome::TeamWon; }
+
+// Where the per-tick hash takes a field: word W of the state pass or of the presentation pass.
+inline constexpr int kStateHashPass = 0;
+inline constexpr int kPresentationHashPass = 1;
+template <int W, fields::HashAs As = fields::HashAs::value>
+inline constexpr fields::HashAt<kStateHashPass, W, As> state_hash;
+template <int W, fields::HashAs As = fields::HashAs::value>
+inline constexpr fields::HashAt<kPresentationHashPass, W, As> presentation_hash;
+
+// Saved fields the snapshot reader validates: an index into World::ships or World::model_paths
+// (−1 for none).
+struct ShipRef : fields::Saved {};
+struct ModelRef : fields::Saved {};
+inline constexpr ShipRef ship_ref;
+inline constexpr ModelRef model_ref;
+// The settings a world is made with: the snapshot's header (serialize.cpp) holds them, restore
+// loads the level with them.
+struct LevelSettings {};
+inline constexpr LevelSettings level_settings;
 
 struct AiState {
   AiMode mode = AiMode::Attack;
@@ -43,14 +77,23 @@ struct AiState {
   glm::dvec3 evade_dir{0.0};   // world direction while evading or breaking off
 };
 
+template <fields::MaybeConst<AiState> A, class V>
+void visit_fields(A& a, V&& v) {
+  v("mode", a.mode, fields::saved, state_hash<0>);
+  v("target", a.target, ship_ref, state_hash<1>);
+  v("mode_until", a.mode_until, fields::saved, state_hash<2>);
+  v("next_think", a.next_think, fields::saved, state_hash<3>);
+  v("aim_error", a.aim_error, fields::saved, state_hash<4>);
+  v("evade_dir", a.evade_dir, fields::saved, state_hash<5>);
+}
+
 struct Ship {
   // Definition
   int id = 0;
   std::string name;
   std::string team;
-  const ShipClassDef* cls = nullptr;
-  int class_index = 0;  // index in World::class_names
-  int model = -1;       // index in World::model_paths
+  const ShipClassDef* cls = nullptr;  // one of World::level.classes
+  int model = -1;                     // index in World::model_paths
   bool player = false;
   AiKind ai = AiKind::Fighter;
   // Motion (world frame; angular velocity in the ship frame, rad/s)
@@ -88,6 +131,50 @@ struct Ship {
   AiState ai_state;
 };
 
+// Name, class, team, player, AI kind and model come from the level and never change: unhashed.
+template <fields::MaybeConst<Ship> S, class V>
+void visit_fields(S& s, V&& v) {
+  v("id", s.id, fields::checked, state_hash<0>);
+  v("name", s.name, fields::checked, fields::unhashed);
+  v("class", s.cls, fields::checked, fields::unhashed);  // saved as the class name
+  v("team", s.team, fields::saved, fields::unhashed);
+  v("player", s.player, fields::saved, fields::unhashed);
+  v("ai", s.ai, fields::saved, fields::unhashed);
+  v("position", s.position, fields::saved, state_hash<2>);
+  v("velocity", s.velocity, fields::saved, state_hash<3>);
+  v("angular_velocity", s.angular_velocity, fields::saved, state_hash<4>);
+  v("orientation", s.orientation, fields::saved, state_hash<5>);
+  v("prev_position", s.prev_position, fields::saved, presentation_hash<0>);
+  v("prev_orientation", s.prev_orientation, fields::saved, presentation_hash<1>);
+  v("alive", s.alive, fields::saved, state_hash<1>);
+  v("hull", s.hull, fields::saved, state_hash<6>);
+  v("shield", s.shield, fields::saved, state_hash<7>);
+  v("energy", s.energy, fields::saved, state_hash<8>);
+  v("last_hit_tick", s.last_hit_tick, fields::saved, state_hash<9>);
+  v("shield_flash_tick", s.shield_flash_tick, fields::saved, presentation_hash<2>);
+  v("death_tick", s.death_tick, fields::saved, presentation_hash<3>);
+  v("last_attacker", s.last_attacker, ship_ref, state_hash<10>);
+  v("kills", s.kills, fields::saved, state_hash<11>);
+  v("target", s.target, ship_ref, state_hash<12>);
+  v("controls", s.controls, fields::saved, state_hash<13>);
+  v("afterburner_on", s.afterburner_on, fields::saved, state_hash<14>);
+  v("secondary", s.secondary, fields::saved, state_hash<15>);
+  v("secondary_cooldown", s.secondary_cooldown, fields::saved, state_hash<16>);
+  v("hardpoint_cycle", s.hardpoint_cycle, fields::saved, state_hash<17>);
+  v("beam_firing", s.beam_firing, fields::saved, state_hash<18>);
+  v("beam_channels", s.beam_channels, fields::saved, presentation_hash<10>);
+  v("beam_hit_distance", s.beam_hit_distance, fields::saved, state_hash<20>);
+  v("beam_target", s.beam_target, ship_ref, state_hash<19>);
+  v("shield_fx", s.shield_fx, fields::saved, presentation_hash<8>);
+  v("exhaust_fx", s.exhaust_fx, fields::saved, presentation_hash<9>);
+  v("shown_shield_intensity", s.shown_shield_intensity, fields::saved, presentation_hash<4>);
+  v("shield_density", s.shield_density, fields::saved, presentation_hash<6>);
+  v("shield_spawn_tick", s.shield_spawn_tick, fields::saved, presentation_hash<7>);
+  v("shown_exhaust_intensity", s.shown_exhaust_intensity, fields::saved, presentation_hash<5>);
+  v("ai_state", s.ai_state, fields::saved, state_hash<21>);
+  v("model", s.model, fields::not_saved, fields::unhashed);  // the class's model
+}
+
 struct Projectile {
   uint32_t serial = 0;
   SecondaryWeapon kind = SecondaryWeapon::Missile;
@@ -99,11 +186,35 @@ struct Projectile {
   EffectHandle trail;
 };
 
+// Damage, turn rate and hit radius come from the weapon's definition at the shot: unhashed.
+template <fields::MaybeConst<Projectile> P, class V>
+void visit_fields(P& p, V&& v) {
+  v("serial", p.serial, fields::saved, state_hash<0>);
+  v("kind", p.kind, fields::saved, state_hash<1>);
+  v("owner", p.owner, ship_ref, state_hash<2>);
+  v("target", p.target, ship_ref, state_hash<3>);
+  v("position", p.position, fields::saved, state_hash<4>);
+  v("velocity", p.velocity, fields::saved, state_hash<5>);
+  v("prev_position", p.prev_position, fields::saved, presentation_hash<0>);
+  v("damage", p.damage, fields::saved, fields::unhashed);
+  v("turn_rate", p.turn_rate, fields::saved, fields::unhashed);
+  v("hit_radius", p.hit_radius, fields::saved, fields::unhashed);
+  v("expire_tick", p.expire_tick, fields::saved, state_hash<6>);
+  v("trail", p.trail, fields::saved, presentation_hash<1>);
+}
+
 struct ExplosionEvent {
   glm::dvec3 position{0.0};
   int64_t tick = 0;
   double radius = 0;
 };
+
+template <fields::MaybeConst<ExplosionEvent> E, class V>
+void visit_fields(E& e, V&& v) {
+  v("position", e.position, fields::saved, presentation_hash<0>);
+  v("tick", e.tick, fields::saved, presentation_hash<1>);
+  v("radius", e.radius, fields::saved, presentation_hash<2>);
+}
 
 struct Prop {
   int model = -1;
@@ -113,24 +224,38 @@ struct Prop {
   double scale = 1, radius = 0;
 };
 
+// Props are placed by the level and never move: saved, unhashed.
+template <fields::MaybeConst<Prop> P, class V>
+void visit_fields(P& p, V&& v) {
+  v("model", p.model, model_ref, fields::unhashed);
+  v("label", p.label, fields::saved, fields::unhashed);
+  v("position", p.position, fields::saved, fields::unhashed);
+  v("orientation", p.orientation, fields::saved, fields::unhashed);
+  v("scale", p.scale, fields::saved, fields::unhashed);
+  v("radius", p.radius, fields::saved, fields::unhashed);
+}
+
 struct CameraRig {
   glm::dvec3 position{0.0};
   glm::dquat orientation{1, 0, 0, 0};
 };
 
-enum class Outcome : uint8_t { Undecided = 0, Victory = 1, Defeat = 2, TeamWon = 3 };
+template <fields::MaybeConst<CameraRig> C, class V>
+void visit_fields(C& c, V&& v) {
+  v("position", c.position, fields::saved, presentation_hash<0>);
+  v("orientation", c.orientation, fields::saved, presentation_hash<1>);
+}
 
 class World {
  public:
   LevelDef level;
-  std::vector<std::string> class_names;  // sorted, for class_index
   std::vector<std::string> model_paths;  // every model the level needs (load only these)
   std::vector<Ship> ships;
   std::vector<Projectile> projectiles;
   std::vector<Prop> props;
   std::vector<ExplosionEvent> explosions;  // recent ones, for hull flashes
   std::shared_ptr<const EffectLibrary> effects;
-  std::unique_ptr<ParticleWorld> particles;
+  std::optional<ParticleWorld> particles;  // made by init_world
   uint64_t seed = 1;
   int difficulty = 1;
   int64_t tick = 0;
@@ -146,15 +271,41 @@ class World {
   GameOptions options;
   uint64_t steps = 0;  // step() calls, paused ones included
 
-  World() = default;
-  World(const World& o) { *this = o; }
-  World& operator=(const World& o);
-
   // The ship the camera and HUD follow: the player, else the first live ship.
   int focus_ship() const;
   bool hostile(const Ship& a, const Ship& b) const { return a.team != b.team; }
   int model_index(const std::string& path) const;
 };
+
+// The hash's state pass: the counters and outcome, then every ship's and every projectile's
+// state; its presentation pass: every ship's and projectile's presentation, the explosions, the
+// camera rig (it decides particle culling) and the particle world's per-cluster summary.
+template <fields::MaybeConst<World> W, class V>
+void visit_fields(W& w, V&& v) {
+  v("level", w.level, level_settings, fields::unhashed);  // static definitions; its name and tick rate
+  v("seed", w.seed, level_settings, state_hash<1>);
+  v("difficulty", w.difficulty, level_settings, state_hash<2>);
+  v("options", w.options, level_settings, fields::unhashed);
+  v("tick", w.tick, fields::saved, state_hash<0>);
+  v("steps", w.steps, fields::saved, fields::unhashed);  // in full_hash(): a paused step changes nothing else
+  v("next_projectile_serial", w.next_projectile_serial, fields::saved, state_hash<7>);
+  v("paused", w.paused, fields::saved, state_hash<3>);
+  v("player", w.player, ship_ref, fields::unhashed);  // set by the level
+  v("outcome", w.outcome, fields::saved, state_hash<4>);
+  v("winner", w.winner, fields::saved, state_hash<5>);
+  v("outcome_tick", w.outcome_tick, fields::saved, state_hash<6>);
+  v("camera_mode", w.camera_mode, fields::saved, presentation_hash<3>);
+  v("camera", w.camera, fields::saved, presentation_hash<4>);
+  v("prev_camera", w.prev_camera, fields::saved, presentation_hash<5>);
+  v("ships", w.ships, fields::checked, state_hash<8>, presentation_hash<0>);
+  v("projectiles", w.projectiles, fields::saved, state_hash<9>, presentation_hash<1>);
+  v("props", w.props, fields::checked, fields::unhashed);
+  v("explosions", w.explosions, fields::saved, presentation_hash<2>);
+  v("particles", w.particles, fields::saved, presentation_hash<6>);  // its own snapshot; hash_summary
+  v("model_paths", w.model_paths, fields::not_saved, fields::unhashed);  // from the level
+  v("effects", w.effects, fields::not_saved, fields::unhashed);          // the shared library
+  v("dt", w.dt, fields::not_saved, fields::unhashed);                    // from the level's tick rate
+}
 
 inline int64_t seconds_to_ticks(const World& w, double s) { return static_cast<int64_t>(std::llround(s / w.dt)); }
 

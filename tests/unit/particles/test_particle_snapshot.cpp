@@ -1,5 +1,6 @@
 // ParticleWorld::save/load: a loaded world is the same world (every particle, every counter)
-// and goes on identically; damaged bytes are InputErrors and leave the world as it was.
+// and goes on identically; damaged bytes are InputErrors and leave the world as it was. A
+// cluster's fields are all named by its field visitor (particles/world_state.h).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,6 +13,7 @@
 #include "core/fast_hash.h"
 #include "particles/particle_world.h"
 #include "core/snapshot_io.h"
+#include "particles/world_state.h"
 
 namespace arc {
 namespace {
@@ -193,6 +195,30 @@ TEST(ParticleSnapshot, FieldsBehindAValidChecksumAreCheckedOrHarmless) {
   }
   EXPECT_GT(errors, 50);
   EXPECT_GT(loaded, 50);
+}
+
+// A member added to Cluster or LightningChannel and not to its visitor makes the aggregate count
+// (the most initialisers T{...} accepts) exceed the visitor's. A live cluster is the probe: a
+// free slot's visit stops after its generation.
+TEST(ParticleSnapshot, EveryClusterMemberIsNamedByItsVisitor) {
+  Cluster cluster;
+  cluster.alive = true;
+  LightningChannel channel;
+  EXPECT_EQ(fields::visited_field_count(cluster), fields::aggregate_field_count<Cluster>());
+  EXPECT_EQ(fields::visited_field_count(channel), fields::aggregate_field_count<LightningChannel>());
+  Cluster free_slot;
+  EXPECT_EQ(fields::visited_field_count(free_slot), 2u);
+}
+
+TEST(ParticleSnapshot, ClusterHashWordsAreNumberedWithoutGapsOrClashes) {
+  Cluster cluster;
+  cluster.alive = true;
+  LightningChannel channel;
+  for (int pass : {kClusterHashPass, kSummaryHashPass, kFullHashPass}) {
+    SCOPED_TRACE("pass " + std::to_string(pass));
+    EXPECT_EQ(fields::check_hash_words(fields::hash_slots(cluster, pass)), "");
+    EXPECT_EQ(fields::check_hash_words(fields::hash_slots(channel, pass)), "");
+  }
 }
 
 }  // namespace

@@ -1,0 +1,90 @@
+// House rules a newcomer relies on, checked over engine/ and game/: no source file passes 600
+// lines, and no function body passes 80 lines unless a comment line right above it gives the
+// reason, starting "// Long:". Functions are found the way the code is written here: a body
+// opened by a line ending in '{' at column 0 or 2 (namespace-level functions and class members
+// in line) and closed by a '}' at the same indentation.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+const std::string kRoot = ARCFIRE_SOURCE_DIR;
+constexpr size_t kMaxFileLines = 600;
+constexpr size_t kMaxFunctionLines = 80;
+
+std::vector<std::string> lines_of(const std::filesystem::path& p) {
+  std::ifstream f(p);
+  std::vector<std::string> out;
+  for (std::string l; std::getline(f, l);) out.push_back(l);
+  return out;
+}
+
+std::vector<std::filesystem::path> sources() {
+  std::vector<std::filesystem::path> out;
+  for (const char* dir : {"engine", "game"})
+    for (const auto& e : std::filesystem::recursive_directory_iterator(kRoot + "/" + dir))
+      if (e.path().extension() == ".cpp" || e.path().extension() == ".h") out.push_back(e.path());
+  return out;
+}
+
+bool opens_function(const std::string& l, size_t indent) {
+  if (l.size() <= indent || l.back() != '{' || l.find_first_not_of(' ') != indent) return false;
+  if (l.find('(') == std::string::npos) return false;  // struct, class, enum, namespace
+  for (const char* word : {"namespace", "struct ", "class ", "enum ", "if (", "for (", "while (", "switch ("})
+    if (l.find(word) != std::string::npos) return false;
+  return true;
+}
+
+// Functions longer than the limit without a "// Long:" reason: "file:line (N lines)".
+std::vector<std::string> long_functions(const std::filesystem::path& p, const std::vector<std::string>& lines) {
+  std::vector<std::string> out;
+  for (size_t indent : {size_t(0), size_t(2)}) {
+    const std::string close = std::string(indent, ' ') + "}";
+    for (size_t i = 0; i < lines.size(); ++i) {
+      if (!opens_function(lines[i], indent)) continue;
+      size_t start = i;  // a signature may span lines: find where it starts
+      while (start > 0 && !lines[start - 1].empty() && lines[start - 1].find_first_not_of(' ') > indent) --start;
+      size_t end = i + 1;
+      while (end < lines.size() && lines[end].rfind(close, 0) != 0) ++end;
+      const size_t length = end - start + 1;
+      const bool reason = start > 0 && lines[start - 1].find("// Long:") != std::string::npos;
+      if (length > kMaxFunctionLines && !reason)
+        out.push_back(p.string() + ":" + std::to_string(start + 1) + " (" + std::to_string(length) + " lines)");
+      i = end;
+    }
+  }
+  return out;
+}
+
+TEST(HouseRules, NoSourceFilePassesSixHundredLines) {
+  for (const auto& p : sources()) {
+    const size_t n = lines_of(p).size();
+    EXPECT_LE(n, kMaxFileLines) << std::filesystem::relative(p, kRoot).string() << " has " << n << " lines";
+  }
+}
+
+TEST(HouseRules, NoFunctionPassesEightyLinesWithoutAReason) {
+  for (const auto& p : sources())
+    for (const std::string& f : long_functions(std::filesystem::relative(p, kRoot), lines_of(p)))
+      ADD_FAILURE() << f << ": split it, or say why above it with a \"// Long:\" comment";
+}
+
+// The finder sees a long function and accepts a stated reason.
+TEST(HouseRules, FinderSeesLongFunctions) {
+  std::vector<std::string> code{"int f(int x) {"};
+  for (int i = 0; i < 90; ++i) code.push_back("  x += 1;");
+  code.push_back("}");
+  EXPECT_EQ(long_functions("f.cpp", code).size(), 1u);
+  code.insert(code.begin(), "// Long: one table of cases, clearer in one place.");
+  EXPECT_TRUE(long_functions("f.cpp", code).empty());
+  code.erase(code.begin());
+  code.resize(40);
+  code.push_back("}");
+  EXPECT_TRUE(long_functions("f.cpp", code).empty());
+}
+
+}  // namespace
