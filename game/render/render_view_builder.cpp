@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include "game/render/own_view.h"
 #include "game/sim/world.h"
 
 namespace arc {
@@ -77,6 +78,8 @@ void build_render_view(const World& w, double alpha, const CameraSettings& cs, c
   pc.aspect = double(width) / double(height);
   pc.near_plane = cam.near_plane;
   w.particles->collect(pc, out.particles);
+  if (mode != CameraMode::Fixed)
+    keep_own_effects_out_of_view(w, focus, cockpit, cam, alpha, width, height, OwnViewRules{}, out.particles);
 
   layout_hud(w, cam, hud, alpha, width, height, out.hud);
 }

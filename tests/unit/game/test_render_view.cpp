@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <glm/geometric.hpp>
+
 #include "game/render/render_view_builder.h"
 #include "game/sim/world.h"
 #include "test_helpers.h"
@@ -133,6 +136,46 @@ TEST(RenderView, CockpitHidesOwnShipAndGalleryLabelsEverything) {
   EXPECT_TRUE(has_text(v, "lightning_beam"));
   EXPECT_TRUE(has_text(v, "Hull target"));
   EXPECT_FALSE(v.particles.empty());
+}
+
+// The own shield and exhausts are gone from the cockpit; the own beam is thin on screen and
+// faded toward the eye; the chase camera keeps the shield only away from the crosshair.
+TEST(RenderView, OwnEffectsLeaveThePilotsView) {
+  for (bool cockpit : {true, false}) {
+    Game g = Game::load_level(test::repo("tests/replays/levels/range.json"), test::options());
+    InputFrame fire;
+    fire.buttons = kFirePrimary;
+    g.step(fire, cockpit ? std::vector<Command>{Command::CameraToggle} : std::vector<Command>{});
+    g.world_mut().ships[0].shield_flash_tick = 0;  // a hit just now: the whole sphere lit
+    for (int i = 0; i < 20; ++i) g.step(fire);
+    const Ship& me = g.world().ships[0];
+    ASSERT_TRUE(me.beam_firing);
+    RenderView v;
+    build_render_view(g.world(), 1.0, CameraSettings{}, HudState{}, 1280, 720, v);
+    auto owned_by = [](const std::vector<ClusterHandle>& handles, const ParticleInstance& p) {
+      for (ClusterHandle h : handles)
+        if (h.index == p.cluster) return true;
+      return false;
+    };
+    const double focal = 360.0 / std::tan(0.5 * v.camera.fov_y_radians);
+    int beam = 0, shield = 0;
+    for (const ParticleInstance& p : v.particles) {
+      const glm::dvec3 at = glm::conjugate(v.camera.orientation) * glm::dvec3(p.pos[0], p.pos[1], p.pos[2]);
+      if (owned_by(me.shield_fx.clusters, p)) {
+        ++shield;
+        const double dx = at.x / -at.z * focal, dy = at.y / -at.z * focal;  // from the screen centre
+        EXPECT_GT(std::sqrt(dx * dx + dy * dy), 0.2 * 720) << "own shield near the crosshair";
+      }
+      if (!owned_by(me.beam_channels, p)) continue;
+      ++beam;
+      EXPECT_LE(p.size / -at.z * focal, 0.0061 * 720) << "own beam wider than its limit on screen";
+      if (glm::length(at) < 1.0) {
+        EXPECT_EQ(p.color[3], 0.0f);
+      }
+    }
+    EXPECT_GT(beam, 0);
+    EXPECT_EQ(shield > 0, !cockpit) << shield << " own shield particles drawn";
+  }
 }
 
 }  // namespace
