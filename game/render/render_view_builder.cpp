@@ -79,7 +79,7 @@ void build_render_view(const World& w, double alpha, const CameraSettings& cs, c
   pc.near_plane = cam.near_plane;
   w.particles->collect(pc, out.particles);
   if (mode != CameraMode::Fixed)
-    keep_own_effects_out_of_view(w, focus, cockpit, cam, alpha, width, height, OwnViewRules{}, out.particles);
+    keep_own_effects_out_of_view(w, focus, cockpit, cam, alpha, width, height, hud.rules.own_view, out.particles);
 
   layout_hud(w, cam, hud, alpha, width, height, out.hud);
 }
