@@ -8,6 +8,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "game/render/own_view.h"
+#include "game/render/team_colors.h"
 #include "game/sim/world.h"
 
 namespace arc {
@@ -54,6 +55,7 @@ void build_render_view(const World& w, double alpha, const CameraSettings& cs, c
     m.position = lerp_pos(s.prev_position, s.position, alpha);
     m.orientation = glm::normalize(glm::slerp(s.prev_orientation, s.orientation, alpha));
     m.emissive_boost = 1.0f + float(std::max(0.0, axis_value(s.controls.throttle))) * (s.afterburner_on ? 2.0f : 1.0f);
+    m.team_color = ship_team_color(w, s);
     for (const ExplosionEvent& e : w.explosions) {
       double age = double(w.tick - e.tick) * w.dt;
       double d = std::sqrt(glm::dot(m.position - e.position, m.position - e.position));
@@ -78,6 +80,7 @@ void build_render_view(const World& w, double alpha, const CameraSettings& cs, c
   pc.aspect = double(width) / double(height);
   pc.near_plane = cam.near_plane;
   w.particles->collect(pc, out.particles);
+  tint_exhausts(w, out.particles);
   if (mode != CameraMode::Fixed)
     keep_own_effects_out_of_view(w, focus, cockpit, cam, alpha, width, height, hud.rules.own_view, out.particles);
 

@@ -95,6 +95,16 @@ ShipClassDef load_ship_class(const std::string& path, const std::string& name) {
   return c;
 }
 
+// "team_colors": { "TEAM": [r, g, b], ... } over the defaults for blue and red.
+void parse_team_colors(JsonObject& r, LevelDef& L) {
+  L.team_colors = {{"blue", {0.22, 0.5, 1.0}}, {"red", {1.0, 0.2, 0.12}}};
+  auto table = r.get("team_colors");
+  if (!table) return;
+  JsonObject o = table->object();
+  for (const auto& [team, value] : table->raw().items()) L.team_colors[team] = o.vec3(team, glm::dvec3(0.0), 0.0, 1.0);
+  o.finish();
+}
+
 LevelDef parse_level_doc(std::shared_ptr<const JsonDoc> doc, const std::string& root_dir, const EffectLibrary* fx) {
   JsonObject r = root_of(doc);
   LevelDef L;
@@ -194,6 +204,7 @@ LevelDef parse_level_doc(std::shared_ptr<const JsonDoc> doc, const std::string& 
     L.camera.fov_deg = o.number("fov", 60.0, 10.0, 150.0);
     o.finish();
   }
+  parse_team_colors(r, L);
   if (L.lose == LoseKind::Protect) {
     bool found = false;
     for (const ShipSpawnDef& s : L.ships) found = found || s.name == L.protect_ship;

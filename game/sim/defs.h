@@ -122,6 +122,9 @@ struct LevelDef {
   std::vector<EffectSpawnDef> effects;
   CameraHintDef camera;
   std::map<std::string, ShipClassDef> classes;  // every class the ships name, by name
+  // Team name → rgb of its hull stripes and engine glow ("team_colors"; blue and red have
+  // defaults). A team without one keeps the models' own colours. Drawing only: not simulated.
+  std::map<std::string, glm::dvec3> team_colors;
 };
 
 class EffectLibrary;

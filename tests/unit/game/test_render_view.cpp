@@ -1,8 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 
+#include "core/error.h"
 #include "game/render/render_view_builder.h"
 #include "game/sim/world.h"
 #include "test_helpers.h"
@@ -176,6 +178,77 @@ TEST(RenderView, OwnEffectsLeaveThePilotsView) {
     EXPECT_GT(beam, 0);
     EXPECT_EQ(shield > 0, !cockpit) << shield << " own shield particles drawn";
   }
+}
+
+// Blue and red have default colours, a level may add teams (and recolour those two), and a
+// team without a colour keeps the models' own (strength 0).
+TEST(TeamColors, FromTheLevelTableOnShipMeshes) {
+  const std::string level = test::write_level("teams.json", test::level_text(R"(
+    { "name": "A", "class": "viper", "team": "blue", "player": true },
+    { "name": "B", "class": "viper", "team": "red", "position": [0, 0, -100] },
+    { "name": "C", "class": "dart", "team": "green", "position": [50, 0, -100] },
+    { "name": "D", "class": "dart", "team": "neutral", "position": [-50, 0, -100] })",
+                                                                                 R"(
+  "team_colors": { "green": [0.2, 0.9, 0.3], "red": [0.9, 0.1, 0.1] },)"));
+  Game g = Game::load_level(level, test::options());
+  g.step(InputFrame{});
+  RenderView v;
+  build_render_view(g.world(), 1.0, CameraSettings{}, HudState{}, 640, 360, v);
+  ASSERT_GE(v.meshes.size(), 4u);
+  EXPECT_GT(v.meshes[0].team_color.b, 0.9f);  // the default blue
+  EXPECT_EQ(v.meshes[0].team_color.a, 1.0f);
+  EXPECT_EQ(glm::vec3(v.meshes[1].team_color), glm::vec3(0.9f, 0.1f, 0.1f));
+  EXPECT_EQ(glm::vec3(v.meshes[2].team_color), glm::vec3(0.2f, 0.9f, 0.3f));
+  EXPECT_EQ(v.meshes[3].team_color.a, 0.0f);
+}
+
+TEST(TeamColors, BadColourNamesItsPlace) {
+  const std::string level = test::write_level("bad_teams.json", test::level_text(R"(
+    { "name": "A", "class": "viper", "team": "blue", "player": true })",
+                                                                                 R"(
+  "team_colors": { "green": [0.2, 1.5, 0.3] },)"));
+  try {
+    Game::load_level(level, test::options());
+    FAIL() << "a colour channel above 1 loaded";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("bad_teams.json:7:"), std::string::npos) << e.what();
+  }
+}
+
+// Exhaust particles move toward the team colour (about as bright as they were), alpha unchanged.
+TEST(TeamColors, ExhaustsTintedTowardTheTeam) {
+  Game g = Game::load_level(test::repo("levels/duel.json"), test::options());
+  InputFrame full;
+  full.throttle = 127;
+  for (int i = 0; i < 30; ++i) g.step(full);
+  const World& w = g.world();
+  RenderView v;
+  build_render_view(w, 1.0, CameraSettings{}, HudState{}, 640, 360, v);
+  std::vector<ParticleInstance> raw;
+  ParticleCamera pc;
+  pc.position = v.camera.position;
+  pc.orientation = v.camera.orientation;
+  pc.fov_y_radians = v.camera.fov_y_radians;
+  pc.aspect = 640.0 / 360.0;
+  w.particles->collect(pc, raw);
+  std::vector<uint32_t> exhaust;
+  for (const EffectHandle& e : w.ships[0].exhaust_fx)
+    for (ClusterHandle h : e.clusters) exhaust.push_back(h.index);
+  int tinted = 0;
+  size_t j = 0;
+  for (const ParticleInstance& p : raw) {
+    const bool is_exhaust = std::find(exhaust.begin(), exhaust.end(), p.cluster) != exhaust.end();
+    if (!is_exhaust) continue;
+    while (j < v.particles.size() && v.particles[j].cluster != p.cluster) ++j;
+    ASSERT_LT(j, v.particles.size());
+    const ParticleInstance& q = v.particles[j++];
+    EXPECT_EQ(q.color[3], p.color[3]);
+    const float before = std::max({p.color[0], p.color[1], p.color[2]}), after = std::max({q.color[0], q.color[1], q.color[2]});
+    EXPECT_LE(after, before + 1e-6f);
+    EXPECT_GE(after, 0.7f * before);
+    tinted += q.color[0] < p.color[0] || q.color[2] > p.color[2] ? 1 : 0;  // toward blue
+  }
+  EXPECT_GT(tinted, 0);
 }
 
 }  // namespace

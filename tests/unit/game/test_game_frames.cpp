@@ -1,8 +1,11 @@
-// tests/unit/game/test_own_view.cpp — the player's own effects stay out of their eyes: a ship
-// under fire (and firing its beam) is rendered headless through EGL in the chase and cockpit
-// cameras, once as build_render_view() makes the frame and once without any particle of the
-// player's own clusters (shield, exhausts, beam); the pixels that differ around the crosshair
-// are what the player's own effects cover there. ARCFIRE_GFX_DUMP=DIR saves both frames.
+// tests/unit/game/test_game_frames.cpp — game frames rendered headless through EGL.
+//
+// OwnView: the player's own effects stay out of their eyes: a ship under fire (and firing its
+// beam) is rendered in the chase and cockpit cameras, once as build_render_view() makes the
+// frame and once without any particle of the player's own clusters (shield, exhausts, beam);
+// the pixels that differ around the crosshair are what the player's own effects cover there.
+// TeamColors: a blue and a red Viper side by side show their team colour on stripes.
+// ARCFIRE_GFX_DUMP=DIR saves the frames.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,6 +17,7 @@
 #include <vector>
 
 #include "assets/image.h"
+#include "assets/model.h"
 #include "game/app/scene_resources.h"
 #include "game/render/render_view_builder.h"
 #include "game/sim/world.h"
@@ -138,6 +142,67 @@ TEST(OwnView, OwnEffectsStayOffTheCrosshairInTheCockpit) {
   const Coverage c = own_effect_coverage(true, "own_view_cockpit");
   EXPECT_LT(c.share, 0.05);
   EXPECT_GT(c.own_particles, 0);  // the own beam is still drawn
+}
+
+int pixels_where(const Image& img, int x0, int x1, bool (*test)(float r, float g, float b)) {
+  int n = 0;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = x0; x < x1; ++x) {
+      const size_t i = (size_t(y) * img.width + x) * 4;
+      n += test(img.rgba[i] / 255.0f, img.rgba[i + 1] / 255.0f, img.rgba[i + 2] / 255.0f) ? 1 : 0;
+    }
+  return n;
+}
+
+TEST(TeamColors, ShipModelsMarkTheirTeamRegions) {
+  for (const char* name : {"viper", "dart", "warden"}) {
+    const ModelData m = load_model(std::string(ARCFIRE_SOURCE_DIR "/assets/models/") + name + ".glb");
+    int team = 0;
+    for (const Material& mat : m.materials) team += mat.team_color > 0.0f ? 1 : 0;
+    EXPECT_EQ(team, 2) << name << ": stripes and engine glow";
+  }
+  for (const Material& mat : load_model(ARCFIRE_SOURCE_DIR "/assets/models/asteroid.glb").materials)
+    EXPECT_EQ(mat.team_color, 0.0f);
+}
+
+// A blue Viper on the left and a red one on the right, seen from above and behind: blue pixels
+// on the left and red ones on the right appear only with the team colours on.
+TEST(TeamColors, BlueAndRedVipersWearTheirColours) {
+  std::string why;
+  if (!context(why)) GTEST_SKIP() << "no EGL context: " << why;
+  const std::string level = test::write_level("team_frame.json", test::level_text(R"(
+    { "name": "Blue", "class": "viper", "team": "blue", "ai": "none", "position": [-11, 0, 0] },
+    { "name": "Red", "class": "viper", "team": "red", "ai": "none", "position": [11, 0, 0] })",
+                                                                                   R"(
+  "camera": { "mode": "fixed", "position": [0, 30, 32], "look_at": [0, 0, 0], "fov": 50 },)"));
+  Game game = Game::load_level(level, test::options());
+  game.step(InputFrame{});
+  Renderer renderer(RendererDesc{.offscreen = true});
+  renderer.apply_settings(Settings::defaults());
+  load_scene_resources(renderer, game.world(), ARCFIRE_SOURCE_DIR);
+  HudState no_hud;
+  no_hud.show_hud = false;
+  RenderView view;
+  build_render_view(game.world(), 1.0, CameraSettings{}, no_hud, kWidth, kHeight, view);
+  renderer.render(view, kWidth, kHeight);
+  const Image coloured = renderer.read_pixels();
+  for (MeshInstance& m : view.meshes) m.team_color.a = 0.0f;
+  renderer.render(view, kWidth, kHeight);
+  const Image plain = renderer.read_pixels();
+  if (const char* dir = std::getenv("ARCFIRE_GFX_DUMP"); dir && *dir) {
+    save_image(std::string(dir) + "/team_colors.png", coloured);
+    save_image(std::string(dir) + "/team_colors_off.png", plain);
+  }
+  auto blue = [](float r, float, float b) { return b > r + 0.25f; };
+  auto red = [](float r, float, float b) { return r > b + 0.25f; };
+  const int blue_left = pixels_where(coloured, 0, kWidth / 2, blue), red_right = pixels_where(coloured, kWidth / 2, kWidth, red);
+  std::printf("team colours: %d blue pixels on the left (%d without), %d red on the right (%d without)\n", blue_left,
+              pixels_where(plain, 0, kWidth / 2, blue), red_right, pixels_where(plain, kWidth / 2, kWidth, red));
+  EXPECT_GT(blue_left, 400);
+  EXPECT_GT(red_right, 400);
+  EXPECT_GT(blue_left, 4 * pixels_where(plain, 0, kWidth / 2, blue));
+  EXPECT_GT(red_right, 4 * pixels_where(plain, kWidth / 2, kWidth, red) + 1);
+  EXPECT_LT(pixels_where(coloured, kWidth / 2, kWidth, blue), blue_left / 4);  // the red ship is not blue
 }
 
 }  // namespace
