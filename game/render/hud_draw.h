@@ -23,7 +23,8 @@ inline const glm::vec4 kHudWhite{1.0f, 1.0f, 1.0f, 0.95f};
 inline const glm::vec4 kHudBack{0.0f, 0.0f, 0.0f, 0.45f};
 
 inline constexpr double kHudCanvasHeight = 720.0;  // HUD sizes are written for this window height
-inline constexpr double kHudSmallestScale = 0.75;  // below it the bitmap font becomes unreadable
+inline constexpr double kHudSmallestScale = 1.0;  // smaller windows keep 720p sizes: the bitmap font
+                                                  // (nearest-filtered) loses rows below scale 1
 
 // Window pixels per canvas unit.
 inline double hud_canvas_scale(int window_height) {

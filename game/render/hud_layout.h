@@ -9,7 +9,8 @@
 // pause menu. build_render_view() calls it last, with the frame's camera.
 //
 // Every size is written for a window 720 pixels high and the finished layer is scaled to the
-// window's height (hud_draw.h), so the HUD looks the same at 1280x720 and at 2560x1440.
+// window's height (hud_draw.h), so the HUD looks the same at 1280x720 and at 2560x1440;
+// windows less than 720 pixels high keep the 720p sizes, where the bitmap font stays sharp.
 //
 // HudState is what the app knows and the World does not: whether the HUD and the FPS counter
 // are on, the measured frame rate, and the pause menu's items and selection.

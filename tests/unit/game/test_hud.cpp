@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "game/render/hud_draw.h"
 #include "game/render/hud_radar.h"
 #include "game/render/render_view_builder.h"
 #include "game/render/screen_projection.h"
@@ -146,7 +147,7 @@ TEST(Hud, OffScreenArrowNeverOverTheRadar) {
   World& w = g.world_mut();
   for (int width : {1280, 640, 2560}) {
     const int height = width * 9 / 16;
-    const double scale = std::max(0.75, height / 720.0);
+    const double scale = hud_canvas_scale(height);
     const HudRect r = radar_rect(std::lround(width / scale), std::lround(height / scale));
     for (int i = 0; i < 36; ++i) {
       const double a = 6.283185307179586 * i / 36;
