@@ -21,7 +21,7 @@ class World;
 struct OwnViewRules {
   double clear_radius = 0.25;     // chase: own shield gone within this share of the screen height around the crosshair
   double clear_fade = 0.12;       // ... and fading back in over this much more
-  double beam_half_width = 0.006; // own beam: widest half-width on screen, share of the screen height
+  double beam_half_width = 0.005; // own beam: widest half-width on screen, share of the screen height
   double beam_near_fade = 6.0;    // own beam: fades to nothing over this many metres toward the eye
 };
 

@@ -170,7 +170,7 @@ TEST(RenderView, OwnEffectsLeaveThePilotsView) {
       }
       if (!owned_by(me.beam_channels, p)) continue;
       ++beam;
-      EXPECT_LE(p.size / -at.z * focal, 0.0061 * 720) << "own beam wider than its limit on screen";
+      EXPECT_LE(p.size / -at.z * focal, 0.0051 * 720) << "own beam wider than its limit on screen";
       if (glm::length(at) < 1.0) {
         EXPECT_EQ(p.color[3], 0.0f);
       }
