@@ -25,6 +25,7 @@ HudRules load_hud_rules(const std::string& path) {
     v.clear_fade = o->number("clear_fade", v.clear_fade, 0.0, 2.0);
     v.beam_half_width = o->number("beam_half_width", v.beam_half_width, 0.0001, 1.0);
     v.beam_near_fade = o->number("beam_near_fade", v.beam_near_fade, 0.0, 1000.0);
+    v.other_beam_half_width = o->number("other_beam_half_width", v.other_beam_half_width, 0.0001, 1.0);
     o->finish();
   }
   if (auto o = block(root, "radar")) {

@@ -10,25 +10,30 @@
 namespace arc {
 namespace {
 
-enum class OwnKind { None, Shield, Exhaust, Beam };
+enum class ViewKind { Other, OwnShield, OwnExhaust, OwnBeam, OtherBeam };
 
-struct OwnClusters {
-  std::vector<uint32_t> shield, exhaust, beam;  // ClusterHandle::index, as ParticleInstance::cluster
+// The clusters the rules touch, by ClusterHandle::index (as ParticleInstance::cluster).
+struct ViewClusters {
+  std::vector<uint32_t> shield, exhaust, beam, other_beams;
 
-  static OwnClusters of(const Ship& s) {
-    OwnClusters o;
-    for (ClusterHandle h : s.shield_fx.clusters) o.shield.push_back(h.index);
-    for (const EffectHandle& e : s.exhaust_fx)
+  static ViewClusters of(const World& w, const Ship& me) {
+    ViewClusters o;
+    for (ClusterHandle h : me.shield_fx.clusters) o.shield.push_back(h.index);
+    for (const EffectHandle& e : me.exhaust_fx)
       for (ClusterHandle h : e.clusters) o.exhaust.push_back(h.index);
-    for (ClusterHandle h : s.beam_channels) o.beam.push_back(h.index);
+    for (ClusterHandle h : me.beam_channels) o.beam.push_back(h.index);
+    for (const Ship& s : w.ships)
+      if (s.id != me.id)
+        for (ClusterHandle h : s.beam_channels) o.other_beams.push_back(h.index);
     return o;
   }
-  OwnKind kind(uint32_t cluster) const {
+  ViewKind kind(uint32_t cluster) const {
     auto has = [cluster](const std::vector<uint32_t>& v) { return std::find(v.begin(), v.end(), cluster) != v.end(); };
-    if (has(shield)) return OwnKind::Shield;
-    if (has(exhaust)) return OwnKind::Exhaust;
-    if (has(beam)) return OwnKind::Beam;
-    return OwnKind::None;
+    if (has(shield)) return ViewKind::OwnShield;
+    if (has(exhaust)) return ViewKind::OwnExhaust;
+    if (has(beam)) return ViewKind::OwnBeam;
+    if (has(other_beams)) return ViewKind::OtherBeam;
+    return ViewKind::Other;
   }
 };
 
@@ -59,15 +64,16 @@ double shield_visibility(const ParticleInstance& p, const Projector& pr, glm::dv
   return smoothstep01(gap / std::max(rules.clear_fade * height, 1e-9));
 }
 
-// Either camera: the own beam thins to a few pixels and fades out toward the eye.
-bool tame_beam(ParticleInstance& p, const Projector& pr, double height, const OwnViewRules& rules) {
+// Either camera: a beam is at most `half_width` (share of the screen height) wide on screen and
+// fades out over `near_fade` metres toward the eye (0: no fade). False when nothing is left.
+bool tame_beam(ParticleInstance& p, const Projector& pr, double height, double half_width, double near_fade) {
   const glm::dvec3 v = view_space(p, pr.inverse);
   const double depth = -v.z;
   if (depth <= pr.near_plane) return false;
-  const double widest = rules.beam_half_width * height * depth / pr.focal;
+  const double widest = half_width * height * depth / pr.focal;
   p.size = float(std::min(double(p.size), widest));
   const double dist = std::sqrt(glm::dot(v, v));
-  const double fade = rules.beam_near_fade > 0 ? smoothstep01(dist / rules.beam_near_fade) : 1.0;
+  const double fade = near_fade > 0 ? smoothstep01(dist / near_fade) : 1.0;
   scale_color(p, fade);
   return fade > 0.0;
 }
@@ -79,16 +85,17 @@ void keep_own_effects_out_of_view(const World& w, int ship, bool cockpit, const 
                                   std::vector<ParticleInstance>& particles) {
   if (ship < 0 || size_t(ship) >= w.ships.size()) return;
   const Ship& me = w.ships[size_t(ship)];
-  const OwnClusters own = OwnClusters::of(me);
+  const ViewClusters clusters = ViewClusters::of(w, me);
   const Projector pr = Projector::of(camera, width, height);
   glm::dvec2 crosshair(pr.cx, pr.cy);
   pr.project(crosshair_point(me, alpha), crosshair);
   std::erase_if(particles, [&](ParticleInstance& p) {
-    switch (own.kind(p.cluster)) {
-      case OwnKind::None: return false;
-      case OwnKind::Exhaust: return cockpit;
-      case OwnKind::Beam: return !tame_beam(p, pr, height, rules);
-      case OwnKind::Shield: {
+    switch (clusters.kind(p.cluster)) {
+      case ViewKind::Other: return false;
+      case ViewKind::OwnExhaust: return cockpit;
+      case ViewKind::OwnBeam: return !tame_beam(p, pr, height, rules.beam_half_width, rules.beam_near_fade);
+      case ViewKind::OtherBeam: return !tame_beam(p, pr, height, rules.other_beam_half_width, 0.0);
+      case ViewKind::OwnShield: {
         if (cockpit) return true;
         const double keep = shield_visibility(p, pr, crosshair, height, rules);
         scale_color(p, keep);

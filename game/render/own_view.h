@@ -7,7 +7,9 @@
 //            between the camera and the view ahead (a hit elsewhere on it still flashes);
 //   cockpit: no own shield and no own exhaust (the camera sits inside the sphere);
 //   both:    the own beam fades out toward the eye and is never wider on screen than a few
-//            pixels, so it starts at the muzzles as a thin bolt instead of filling the view.
+//            pixels, so it starts at the muzzles as a thin bolt instead of filling the view;
+//            other ships' beams have a wider limit, so one striking the own shield a few
+//            metres from the eye stays a bolt instead of a screen-filling flare.
 // A hit on the ship also shows as a glow at the screen edge toward it (hud_combat.h).
 #pragma once
 #include <vector>
@@ -23,6 +25,7 @@ struct OwnViewRules {
   double clear_fade = 0.12;       // ... and fading back in over this much more
   double beam_half_width = 0.005; // own beam: widest half-width on screen, share of the screen height
   double beam_near_fade = 6.0;    // own beam: fades to nothing over this many metres toward the eye
+  double other_beam_half_width = 0.012;  // other ships' beams: widest half-width on screen, share of the height
 };
 
 // `ship` is the ship the camera follows (World::focus_ship()); `cockpit` whether it rides inside

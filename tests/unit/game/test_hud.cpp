@@ -192,6 +192,7 @@ TEST(HudRules, ShippedFileHoldsTheDefaults) {
   EXPECT_EQ(file.own_view.clear_fade, code.own_view.clear_fade);
   EXPECT_EQ(file.own_view.beam_half_width, code.own_view.beam_half_width);
   EXPECT_EQ(file.own_view.beam_near_fade, code.own_view.beam_near_fade);
+  EXPECT_EQ(file.own_view.other_beam_half_width, code.own_view.other_beam_half_width);
   EXPECT_EQ(file.radar_min_range, code.radar_min_range);
   EXPECT_EQ(file.radar_max_range, code.radar_max_range);
   EXPECT_EQ(file.radar_margin, code.radar_margin);

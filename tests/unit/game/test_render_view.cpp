@@ -180,6 +180,32 @@ TEST(RenderView, OwnEffectsLeaveThePilotsView) {
   }
 }
 
+// An enemy beam striking the own shield in the cockpit ends a few metres from the eye: it is
+// kept to its on-screen width limit rather than filling the view.
+TEST(RenderView, OtherShipsBeamsStayBoltsNearTheEye) {
+  const std::string level = test::write_level("beam_at_eye.json", test::level_text(R"(
+    { "name": "Player", "class": "viper", "team": "blue", "player": true },
+    { "name": "Gunner", "class": "viper", "team": "red", "ai": "gunner", "position": [0, 0, -200], "orientation": [180, 0, 0] })"));
+  Game g = Game::load_level(level, test::options());
+  g.step(InputFrame{}, {Command::CameraToggle});
+  for (int i = 0; i < 30; ++i) g.step(InputFrame{});
+  const Ship& gunner = g.world().ships[1];
+  ASSERT_TRUE(gunner.beam_firing);
+  RenderView v;
+  build_render_view(g.world(), 1.0, CameraSettings{}, HudState{}, 1280, 720, v);
+  const double focal = 360.0 / std::tan(0.5 * v.camera.fov_y_radians);
+  int near_eye = 0;
+  for (const ParticleInstance& p : v.particles) {
+    bool beam = false;
+    for (ClusterHandle h : gunner.beam_channels) beam = beam || h.index == p.cluster;
+    if (!beam) continue;
+    const glm::dvec3 at = glm::conjugate(v.camera.orientation) * glm::dvec3(p.pos[0], p.pos[1], p.pos[2]);
+    EXPECT_LE(p.size / -at.z * focal, 0.0121 * 720);
+    near_eye += glm::length(at) < 20.0 ? 1 : 0;
+  }
+  EXPECT_GT(near_eye, 0);  // the beam does reach the own shield
+}
+
 // Blue and red have default colours, a level may add teams (and recolour those two), and a
 // team without a colour keeps the models' own (strength 0).
 TEST(TeamColors, FromTheLevelTableOnShipMeshes) {
