@@ -25,7 +25,7 @@ struct OwnViewRules {
   double clear_fade = 0.12;       // ... and fading back in over this much more
   double beam_half_width = 0.005; // own beam: widest half-width on screen, share of the screen height
   double beam_near_fade = 6.0;    // own beam: fades to nothing over this many metres toward the eye
-  double other_beam_half_width = 0.012;  // other ships' beams: widest half-width on screen, share of the height
+  double other_beam_half_width = 0.02;  // other ships' beams: widest half-width on screen, share of the height
 };
 
 // `ship` is the ship the camera follows (World::focus_ship()); `cockpit` whether it rides inside

@@ -200,7 +200,7 @@ TEST(RenderView, OtherShipsBeamsStayBoltsNearTheEye) {
     for (ClusterHandle h : gunner.beam_channels) beam = beam || h.index == p.cluster;
     if (!beam) continue;
     const glm::dvec3 at = glm::conjugate(v.camera.orientation) * glm::dvec3(p.pos[0], p.pos[1], p.pos[2]);
-    EXPECT_LE(p.size / -at.z * focal, 0.0121 * 720);
+    EXPECT_LE(p.size / -at.z * focal, 0.0201 * 720);
     near_eye += glm::length(at) < 20.0 ? 1 : 0;
   }
   EXPECT_GT(near_eye, 0);  // the beam does reach the own shield
