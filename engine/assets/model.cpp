@@ -403,6 +403,13 @@ class GltfReader {
       for (float v : {mat.base_color.r, mat.base_color.g, mat.base_color.b, mat.base_color.a, mat.emissive.r,
                       mat.emissive.g, mat.emissive.b})
         if (!std::isfinite(v) || v < 0.0f) fail(name + ": colour factors must be finite and non-negative");
+      // Regions painted in the team colour of the ship that wears the model (tools/assetgen).
+      if (m.extras.Has("arcfire_team_color")) {
+        const auto& team = m.extras.Get("arcfire_team_color");
+        if (!team.IsNumber() || !(team.GetNumberAsDouble() >= 0.0 && team.GetNumberAsDouble() <= 1.0))
+          fail(name + ": extras.arcfire_team_color must be a number in [0, 1]");
+        mat.team_color = float(team.GetNumberAsDouble());
+      }
       mat.base_color_image = texture_image(m.pbrMetallicRoughness.baseColorTexture.index, name + ": base colour");
       mat.emissive_image = texture_image(m.emissiveTexture.index, name + ": emissive");
       out.materials.push_back(mat);

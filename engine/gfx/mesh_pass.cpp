@@ -109,11 +109,13 @@ int MeshPass::draw(const RenderView& v, const Program& mesh, const glm::mat4& vi
     glUniform3fv(mesh.loc("u_tint"), 1, glm::value_ptr(inst.tint));
     glUniform1f(mesh.loc("u_emissive_boost"), inst.emissive_boost);
     glUniform3fv(mesh.loc("u_flash"), 1, glm::value_ptr(inst.flash));
+    glUniform3fv(mesh.loc("u_team_color"), 1, glm::value_ptr(glm::vec3(inst.team_color)));
     for (const GpuPrimitive& p : g.prims) {
       Material mat;
       if (p.material >= 0 && p.material < int(g.materials.size())) mat = g.materials[size_t(p.material)];
       glUniform4fv(mesh.loc("u_base_color"), 1, glm::value_ptr(mat.base_color));
       glUniform3fv(mesh.loc("u_emissive"), 1, glm::value_ptr(mat.emissive));
+      glUniform1f(mesh.loc("u_team_mask"), mat.team_color * inst.team_color.a);
       bool has_base = mat.base_color_image >= 0 && mat.base_color_image < int(g.textures.size());
       bool has_em = mat.emissive_image >= 0 && mat.emissive_image < int(g.textures.size());
       glUniform1i(mesh.loc("u_has_base_tex"), has_base);

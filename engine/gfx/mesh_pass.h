@@ -3,7 +3,8 @@
 // add_model() uploads a ModelData (vertices, indices, textures with mipmaps) and keeps its
 // cover boxes (cover_boxes.h) for the particle batch's soft-edge reach test. draw() renders
 // every MeshInstance of a view with depth test and write on: directional light + ambient +
-// emissive, tint, flash, each placed camera-relative (the translation subtracted in double).
+// emissive, tint, flash and the team colour of the materials that take it, each placed
+// camera-relative (the translation subtracted in double).
 //
 //   MeshPass meshes;
 //   int ship = meshes.add_model(load_model("assets/models/viper.glb"), settings.filter);

@@ -44,6 +44,9 @@ struct MeshInstance {
   glm::vec3 tint{1.0f};          // multiplies base colour
   float emissive_boost = 1.0f;   // engines glow with throttle
   glm::vec3 flash{0.0f};         // extra light from nearby explosions (rgb, already scaled)
+  // The ship's team colour (rgb) and how strongly the model's team regions (materials with
+  // Material::team_color, e.g. hull stripes and engine glow) take it (a); a = 0 keeps their own.
+  glm::vec4 team_color{0.0f};
 };
 
 // 2-D overlay in pixels, origin top-left. Drawn last, unlit, alpha-blended.

@@ -70,8 +70,9 @@ class WindowSession {
  public:
   explicit WindowSession(const AppOptions& options) : options_(options), game_options_(options.game) {}
   ~WindowSession();
-  // Loads the bindings and the level (bad files are one line and exit 2 before any window
-  // opens), opens the window, makes the renderer and starts the game and the recording.
+  // Loads the bindings, the HUD settings and the level (bad files are one line and exit 2
+  // before any window opens), opens the window, makes the renderer and starts the game and the
+  // recording.
   void setup();
   bool open() const { return !window_->should_close(); }
   double time() const { return window_->time_seconds(); }
@@ -123,6 +124,7 @@ WindowSession::~WindowSession() {
 
 void WindowSession::setup() {
   input_.emplace(load_bindings(options_.bindings_path));
+  hud_.rules = load_hud_rules(game_options_.root_dir + "/assets/settings/hud.json");
   start_game(std::make_unique<Game>(Game::load_level(options_.level, game_options_)));
   WindowDesc wd;
   wd.width = options_.width;

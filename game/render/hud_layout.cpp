@@ -3,74 +3,20 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
 
-#include "game/sim/simulation.h"
+#include "game/render/hud_combat.h"
+#include "game/render/hud_draw.h"
+#include "game/render/hud_radar.h"
+#include "game/render/screen_projection.h"
 #include "game/sim/world.h"
 
 namespace arc {
 namespace {
 
-constexpr double kRadarRange = 3000.0;
-const glm::vec4 kHudGreen{0.45f, 1.0f, 0.6f, 0.9f};
-const glm::vec4 kHudRed{1.0f, 0.35f, 0.3f, 0.95f};
-const glm::vec4 kHudBlue{0.4f, 0.7f, 1.0f, 0.9f};
-const glm::vec4 kHudYellow{1.0f, 0.85f, 0.3f, 0.9f};
-const glm::vec4 kHudWhite{1.0f, 1.0f, 1.0f, 0.95f};
-const glm::vec4 kHudBack{0.0f, 0.0f, 0.0f, 0.45f};
-
-// Screen projection of the frame's camera, in pixels (origin top-left).
-struct Projector {
-  glm::dvec3 position;
-  glm::dquat inverse;
-  double focal, cx, cy, near_plane;
-  glm::dvec3 to_view(const glm::dvec3& p) const { return inverse * (p - position); }
-  bool project(const glm::dvec3& world, glm::dvec2& px, double* depth = nullptr) const {
-    glm::dvec3 v = to_view(world);
-    if (v.z > -near_plane) return false;
-    px = {cx + v.x / -v.z * focal, cy - v.y / -v.z * focal};
-    if (depth) *depth = -v.z;
-    return true;
-  }
-};
-
-glm::dvec3 lerp_pos(const glm::dvec3& a, const glm::dvec3& b, double t) { return a + (b - a) * t; }
-
-void line(HudLayer& h, double x0, double y0, double x1, double y1, const glm::vec4& c, float width = 2.0f) {
-  h.lines.push_back({float(x0), float(y0), float(x1), float(y1), width, c});
-}
-void quad(HudLayer& h, double x, double y, double w, double hh, const glm::vec4& c) {
-  h.quads.push_back({float(x), float(y), float(w), float(hh), c});
-}
-void text(HudLayer& h, double x, double y, double scale, const glm::vec4& c, std::string s) {
-  h.texts.push_back({float(x), float(y), float(scale), c, std::move(s)});
-}
-
-void bar(HudLayer& h, double x, double y, double w, double hh, double frac, const glm::vec4& c, const char* label) {
-  frac = std::clamp(frac, 0.0, 1.0);
-  quad(h, x, y, w, hh, kHudBack);
-  quad(h, x + 1, y + 1, (w - 2) * frac, hh - 2, c);
-  text(h, x, y - 16, 1.0, c, label);
-}
-
-void brackets(HudLayer& h, glm::dvec2 c, double r, const glm::vec4& col) {
-  r = std::max(r, 14.0);
-  const double a = r * 0.4;
-  for (int sx : {-1, 1})
-    for (int sy : {-1, 1}) {
-      double x = c.x + sx * r, y = c.y + sy * r;
-      line(h, x, y, x - sx * a, y, col);
-      line(h, x, y, x, y - sy * a, col);
-    }
-}
-
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
+// Canvas units an off-screen arrow keeps from the screen edges and from the radar.
+constexpr double kArrowMargin = 30.0;
 
 // HUD sizes follow the window height: 1 at 720 pixels. Text never shrinks below the font's
 // own size, where its one-pixel strokes would blur away.
@@ -188,25 +134,15 @@ void hud_throttle_and_speed(const Ship& me, double x, double top, double bottom,
   text(h, x + bar_w + 8 * k, top + 16 * speed_scale, text_scale(1.2, height), fill, setting);
 }
 
-void hud_radar(const World& w, const Ship& me, int width, int height, HudLayer& h) {
-  const double size = std::min(width, height) * 0.22, cx = width * 0.5, cy = height - size * 0.5 - 12;
-  quad(h, cx - size * 0.5, cy - size * 0.5, size, size, kHudBack);
-  line(h, cx - size * 0.5, cy, cx + size * 0.5, cy, {0.4f, 0.8f, 0.5f, 0.3f}, 1.0f);
-  line(h, cx, cy - size * 0.5, cx, cy + size * 0.5, {0.4f, 0.8f, 0.5f, 0.3f}, 1.0f);
-  const glm::dquat inv = glm::conjugate(me.orientation);
-  for (const Ship& s : w.ships) {
-    if (!s.alive || s.id == me.id) continue;
-    glm::dvec3 local = inv * (s.position - me.position);
-    double x = local.x / kRadarRange, y = local.z / kRadarRange;
-    double len = std::sqrt(x * x + y * y);
-    if (len > 1.0) x /= len, y /= len;
-    const glm::vec4 c = w.hostile(me, s) ? kHudRed : kHudBlue;
-    const double dot = s.id == me.target ? 6.0 : 4.0;
-    quad(h, cx + x * size * 0.5 - dot * 0.5, cy + y * size * 0.5 - dot * 0.5, dot, dot, c);
-    // Above or below: a short tick shows the height, as in most space-sim radars.
-    double up = std::clamp(local.y / kRadarRange, -1.0, 1.0) * size * 0.25;
-    line(h, cx + x * size * 0.5, cy + y * size * 0.5, cx + x * size * 0.5, cy + y * size * 0.5 - up, c, 1.0f);
-  }
+// Where the off-screen arrow toward `dir` (from the centre) points from: on an ellipse inside
+// the screen edges, lifted above the radar when it would fall on it.
+glm::dvec2 offscreen_arrow_tip(glm::dvec2 dir, int width, int height) {
+  const double rx = width * 0.5 - kArrowMargin, ry = height * 0.5 - kArrowMargin;
+  glm::dvec2 tip(width * 0.5 + dir.x * rx, height * 0.5 + dir.y * ry);
+  const HudRect radar = radar_rect(width, height);
+  const double reach = 20.0 + kArrowMargin * 0.5;  // the arrow's size around its tip, and a gap
+  if (radar.overlaps(tip.x - reach, tip.y - reach, 2.0 * reach, 2.0 * reach)) tip.y = radar.y - reach;
+  return tip;
 }
 
 void hud_target(const World& w, const Ship& me, const Projector& pr, int width, int height, double alpha,
@@ -219,8 +155,12 @@ void hud_target(const World& w, const Ship& me, const Projector& pr, int width, 
   double depth = 0;
   const bool in_front = pr.project(tp, px, &depth);
   const bool on_screen = in_front && px.x >= 0 && px.x <= width && px.y >= 0 && px.y <= height;
+  const double dist = std::sqrt(glm::dot(t.position - me.position, t.position - me.position));
   if (on_screen) {
-    brackets(h, px, t.cls->shield_radius * pr.focal / depth, col);
+    const double r = t.cls->shield_radius * pr.focal / depth;
+    const bool in_range = dist <= me.cls->beam.range;
+    brackets(h, px, r, col, in_range ? 3.0f : 2.0f);
+    layout_range_cue(h, px, r, in_range, dist, col);
     // Lead indicator: where to aim the current secondary (or the beam, which is instant).
     const bool plasma = me.secondary == SecondaryWeapon::Plasma && me.cls->plasma.present;
     const double speed = plasma ? me.cls->plasma.speed : me.cls->missile.present ? me.cls->missile.speed : 0.0;
@@ -243,8 +183,7 @@ void hud_target(const World& w, const Ship& me, const Projector& pr, int width, 
     glm::dvec2 dir(v.x, -v.y);
     double len = std::sqrt(dir.x * dir.x + dir.y * dir.y);
     dir = len > 1e-9 ? dir / len : glm::dvec2(0, 1);
-    const double r = std::min(width, height) * 0.4;
-    glm::dvec2 tip(width * 0.5 + dir.x * r, height * 0.5 + dir.y * r);
+    const glm::dvec2 tip = offscreen_arrow_tip(dir, width, height);
     glm::dvec2 side(-dir.y, dir.x);
     glm::dvec2 b0 = tip - dir * 18.0 + side * 10.0, b1 = tip - dir * 18.0 - side * 10.0;
     line(h, tip.x, tip.y, b0.x, b0.y, col, 3.0f);
@@ -252,7 +191,6 @@ void hud_target(const World& w, const Ship& me, const Projector& pr, int width, 
     line(h, b0.x, b0.y, b1.x, b1.y, col, 3.0f);
   }
   const double x = width - 230, y = 70;
-  const double dist = std::sqrt(glm::dot(t.position - me.position, t.position - me.position));
   text(h, x, y - 40, 1.2, col, t.name + " (" + t.cls->name + ") " + fmt("%.0f m", dist));
   bar(h, x, y, 200, 10, t.cls->shield > 0 ? t.shield / t.cls->shield : 0.0, kHudBlue, "shield");
   bar(h, x, y + 30, 200, 10, t.hull / t.cls->hull, kHudRed, "hull");
@@ -299,27 +237,32 @@ void labels(const World& w, const Projector& pr, int width, int height, HudLayer
 void layout_hud(const World& w, const CameraView& cam, const HudState& state, double alpha, int width, int height,
                 HudLayer& h) {
   alpha = std::clamp(alpha, 0.0, 1.0);
-  width = std::max(width, 1);
-  height = std::max(height, 1);
   h = HudLayer{};
+  // Laid out on a canvas kHudCanvasHeight units high, then scaled to the window.
+  const double scale = hud_canvas_scale(std::max(height, 1));
+  width = std::max(1, int(std::lround(std::max(width, 1) / scale)));
+  height = std::max(1, int(std::lround(std::max(height, 1) / scale)));
   if (state.show_fps) text(h, width - 120, 12, 1.0, kHudWhite, fmt("%.0f fps", state.fps));
   if (state.show_hud) {
-    const Projector pr{cam.position, glm::conjugate(cam.orientation),
-                       (height * 0.5) / std::tan(cam.fov_y_radians * 0.5), width * 0.5, height * 0.5, cam.near_plane};
+    const Projector pr = Projector::of(cam, width, height);
     text(h, 24, 16, 1.2, kHudWhite, w.level.objective);
     labels(w, pr, width, height, h);
     const int focus = w.focus_ship();
-    if (focus >= 0 && w.ships[focus].alive && w.camera_mode != CameraMode::Fixed) {
+    const bool flying = focus >= 0 && w.ships[focus].alive && w.camera_mode != CameraMode::Fixed;
+    layout_kill_feed(w, flying ? &w.ships[focus] : nullptr, state.rules, 24, 44, h);
+    if (flying) {
       const Ship& me = w.ships[focus];
+      layout_combat_cues(w, me, pr, state.rules, alpha, width, height, h);
       hud_own(w, me, pr, width, height, alpha, h);
       hud_target(w, me, pr, width, height, alpha, h);
-      hud_radar(w, me, width, height, h);
+      layout_radar(w, me, state.rules, width, height, h);
     }
   }
   hud_reticle(state.reticle, width, height, h);
   hud_outcome(w, width, height, h);
   hud_pause_menu(w, state, width, height, h);
   hud_messages(state, width, height, h);
+  scale_hud(h, scale);
 }
 
 std::vector<std::string> wrap_text(const std::string& original, size_t max_chars, size_t max_lines) {

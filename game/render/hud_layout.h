@@ -1,12 +1,18 @@
 // game/render/hud_layout.h — the HUD of one frame, laid out in pixels as plain data (no GL).
 //
 // layout_hud() fills a HudLayer (quads, lines and texts, origin top-left) from the World and
-// the frame's camera: the objective and gallery labels; for the ship the camera follows, the
-// crosshair, own shield / hull / energy bars, weapon and kills, the target's brackets or an
-// off-screen arrow, the lead indicator, the target's bars and the radar; the set throttle and
-// the speed; victory or defeat (kept above the pause menu); the FPS counter, the pause menu,
-// the mouse-joystick reticle, a notice line and the reload-error banner (wrapped to the
-// screen). build_render_view() calls it last, with the frame's camera.
+// the frame's camera: the objective, the kill feed and gallery labels; for the ship the camera
+// follows, the crosshair, own shield / hull / energy bars, weapon and kills, the target's
+// brackets with the beam range cue or an off-screen arrow (kept off the radar), the lead
+// indicator, the target's bars, the radar (hud_radar.h) and the combat cues (hud_combat.h:
+// hit markers, damage direction, missile warning); the set throttle and the speed; victory or
+// defeat (kept above the pause menu); the FPS counter, the pause menu, the mouse-joystick
+// reticle, a notice line and the reload-error banner (wrapped to the screen).
+// build_render_view() calls it last, with the frame's camera.
+//
+// Every size is written for a window 720 pixels high and the finished layer is scaled to the
+// window's height (hud_draw.h), so the HUD looks the same at 1280x720 and at 2560x1440;
+// windows less than 720 pixels high keep the 720p sizes, where the bitmap font stays sharp.
 //
 // HudState is what the app knows and the World does not: whether the HUD and the FPS counter
 // are on, the measured frame rate, the pause menu's items and selection, the reticle, and the
@@ -15,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "game/render/hud_rules.h"
 #include "gfx/render_view.h"
 
 namespace arc {
@@ -36,6 +43,7 @@ struct HudState {
   HudReticle reticle;
   std::string notice;        // one line at the top centre (e.g. "Recording stopped ...")
   std::string error_banner;  // a failed hot reload, wrapped within the screen below the objective
+  HudRules rules;           // tunable numbers (assets/settings/hud.json), also the own-effect view rules
 };
 
 // Replaces `out` with the HUD for `camera` (interpolated like the meshes, by `alpha` in [0, 1])

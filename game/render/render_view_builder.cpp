@@ -7,6 +7,8 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include "game/render/own_view.h"
+#include "game/render/team_colors.h"
 #include "game/sim/world.h"
 
 namespace arc {
@@ -66,6 +68,7 @@ void build_render_view(const World& w, double alpha, const CameraSettings& cs, c
     m.position = lerp_pos(s.prev_position, s.position, alpha);
     m.orientation = glm::normalize(glm::slerp(s.prev_orientation, s.orientation, alpha));
     m.emissive_boost = 1.0f + float(std::max(0.0, axis_value(s.controls.throttle))) * (s.afterburner_on ? 2.0f : 1.0f);
+    m.team_color = ship_team_color(w, s);
     for (const ExplosionEvent& e : w.explosions) {
       double age = double(w.tick - e.tick) * w.dt;
       double d = std::sqrt(glm::dot(m.position - e.position, m.position - e.position));
@@ -92,6 +95,9 @@ void build_render_view(const World& w, double alpha, const CameraSettings& cs, c
   if (mode != CameraMode::Fixed && w.focus_ship() >= 0)
     pc.velocity = (w.camera.position - w.prev_camera.position) / w.dt;  // sparks streak relative to the eye
   w.particles->collect(pc, out.particles, drawn_ships(w, alpha));
+  tint_exhausts(w, out.particles);
+  if (mode != CameraMode::Fixed)
+    keep_own_effects_out_of_view(w, focus, cockpit, cam, alpha, width, height, hud.rules.own_view, out.particles);
 
   layout_hud(w, cam, hud, alpha, width, height, out.hud);
 }

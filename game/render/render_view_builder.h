@@ -2,9 +2,11 @@
 //
 // The renderer never sees the game: build_render_view() interpolates ship and camera
 // transforms between the previous and the current tick by `alpha`, lists meshes by model
-// index, collects the visible particles (ParticleWorld::collect) and lays out the HUD
-// (layout_hud, game/render/hud_layout.h). The camera's mode and field of view come from the
-// World unless CameraSettings (game/render/camera_settings.h) overrides them.
+// index (ships with their team colour, game/render/team_colors.h), collects the visible
+// particles (ParticleWorld::collect, exhausts tinted by team), keeps the followed ship's own
+// shield, exhausts and beam out of its pilot's eyes (game/render/own_view.h) and lays out the
+// HUD (layout_hud, game/render/hud_layout.h). The camera's mode and field of view come from
+// the World unless CameraSettings (game/render/camera_settings.h) overrides them.
 //
 // Model indices are positions in World::model_paths (required_models()): the app loads
 // exactly those files, in that order, into its renderer's model table

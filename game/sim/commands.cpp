@@ -1,5 +1,5 @@
 // game/sim/commands.cpp — a tick's discrete commands: pause and resume, the camera toggle, the
-// player's target (next, nearest, next hostile) and secondary weapon.
+// player's target (next, nearest hostile, next hostile) and secondary weapon.
 #include "game/sim/commands.h"
 
 #include "game/sim/world.h"
@@ -19,13 +19,13 @@ int next_target(const World& w, int self, int current, bool hostile_only) {
   return -1;
 }
 
-int nearest_target(const World& w, int self, bool hostile_only) {
+// A wingman is never what a pilot reaching for the nearest target wants: hostiles only.
+int nearest_hostile(const World& w, int self) {
   int best = -1;
   double best_d = 0;
   const Ship& me = w.ships[self];
   for (const Ship& s : w.ships) {
-    if (s.id == self || !s.alive) continue;
-    if (hostile_only && !w.hostile(me, s)) continue;
+    if (s.id == self || !s.alive || !w.hostile(me, s)) continue;
     double d = glm::dot(s.position - me.position, s.position - me.position);
     if (best < 0 || d < best_d) best = s.id, best_d = d;
   }
@@ -45,7 +45,7 @@ void apply_commands(World& w, const std::vector<Command>& commands) {
     Ship& p = w.ships[w.player];
     switch (c) {
       case Command::TargetNext: p.target = next_target(w, p.id, p.target, false); break;
-      case Command::TargetNearest: p.target = nearest_target(w, p.id, false); break;
+      case Command::TargetNearest: p.target = nearest_hostile(w, p.id); break;
       case Command::TargetNextHostile: p.target = next_target(w, p.id, p.target, true); break;
       case Command::SwitchWeapon:
         if (p.cls->missile.present && p.cls->plasma.present)

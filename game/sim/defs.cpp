@@ -97,6 +97,16 @@ ShipClassDef load_ship_class(const std::string& path, const std::string& name) {
 
 namespace {
 
+// "team_colors": { "TEAM": [r, g, b], ... } over the defaults for blue and red.
+void parse_team_colors(JsonObject& r, LevelDef& L) {
+  L.team_colors = {{"blue", {0.22, 0.5, 1.0}}, {"red", {1.0, 0.2, 0.12}}};
+  auto table = r.get("team_colors");
+  if (!table) return;
+  JsonObject o = table->object();
+  for (const auto& [team, value] : table->raw().items()) L.team_colors[team] = o.vec3(team, glm::dvec3(0.0), 0.0, 1.0);
+  o.finish();
+}
+
 void parse_rules(JsonObject& r, LevelDef& L) {
   JsonObject win = r.require_object("win");
   std::string wk = win.choice("type", "destroy_all_hostiles",
@@ -228,6 +238,7 @@ LevelDef parse_level_doc(std::shared_ptr<const JsonDoc> doc, const std::string& 
   parse_props(r, L);
   parse_effects(r, L, fx);
   parse_camera(r, L);
+  parse_team_colors(r, L);
   check_protected_ship(r, L);
   r.finish();
   return L;

@@ -126,6 +126,9 @@ struct LevelDef {
   // Every class the ships name, by name. Shared and immutable: a copied World's ships point at
   // the same definitions.
   std::map<std::string, std::shared_ptr<const ShipClassDef>> classes;
+  // Team name → rgb of its hull stripes and engine glow ("team_colors"; blue and red have
+  // defaults). A team without one keeps the models' own colours. Drawing only: not simulated.
+  std::map<std::string, glm::dvec3> team_colors;
 };
 
 class EffectLibrary;

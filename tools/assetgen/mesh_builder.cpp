@@ -205,6 +205,8 @@ void MeshBuilder::write_glb(const std::string& path, const std::string& name, co
     mat.pbrMetallicRoughness.metallicFactor = def.metallic;
     mat.pbrMetallicRoughness.roughnessFactor = def.roughness;
     mat.emissiveFactor = {def.emissive.r, def.emissive.g, def.emissive.b};
+    if (def.team_color > 0.0f)
+      mat.extras = tinygltf::Value(tinygltf::Value::Object{{"arcfire_team_color", tinygltf::Value(double(def.team_color))}});
     m.materials.push_back(mat);
   }
   m.meshes.push_back(mesh);

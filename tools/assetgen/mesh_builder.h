@@ -33,6 +33,7 @@ struct MaterialDef {
   glm::vec3 emissive{0.0f};
   float metallic = 0.0f;
   float roughness = 0.8f;
+  float team_color = 0.0f;  // > 0: written as extras.arcfire_team_color (assets/model.h)
 };
 
 // A ring in the plane z = const: a superellipse of half-width w, half-height h around (cx, cy).

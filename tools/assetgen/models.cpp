@@ -1,6 +1,7 @@
 // tools/assetgen/models.cpp — hulls built from lofted cross-sections. Each hull is designed so
 // its silhouette reads from a chase camera (wings and engine glow) and from the side (nose,
-// canopy, fins); the exhaust and gun positions match assets/ships/*.json.
+// canopy, fins); the exhaust and gun positions match assets/ships/*.json. Team stripes (fins,
+// wing tips) and engine nozzles are materials that take the ship's team colour in the game.
 #include "models.h"
 #include <cmath>
 #include <map>
@@ -11,12 +12,16 @@
 namespace arc::assetgen {
 namespace {
 
-enum Slot { kHull = 0, kTrim = 1, kGlow = 2 };
+enum Slot { kHull = 0, kTrim = 1, kGlow = 2, kTeamStripe = 3, kEngineGlow = 4 };
 
+// The last two slots take the team colour: stripes their albedo, nozzles their glow's hue (the
+// colours given here are what a ship of a team without a colour shows).
 std::vector<MaterialDef> ship_materials(glm::vec4 hull, glm::vec3 glow) {
   return {{"hull", hull, {0, 0, 0}, 0.4f, 0.55f},
           {"trim", {0.16f, 0.17f, 0.19f, 1.0f}, {0, 0, 0}, 0.6f, 0.45f},
-          {"glow", {0.1f, 0.1f, 0.1f, 1.0f}, glow, 0.0f, 1.0f}};
+          {"glow", {0.1f, 0.1f, 0.1f, 1.0f}, glow, 0.0f, 1.0f},
+          {"team_stripe", {0.8f, 0.8f, 0.82f, 1.0f}, {0, 0, 0}, 0.3f, 0.5f, 1.0f},
+          {"engine_glow", {0.1f, 0.1f, 0.1f, 1.0f}, glow, 0.0f, 1.0f, 1.0f}};
 }
 
 // An engine pod along +Z ending in a recessed, glowing nozzle whose centre is at (x, y, z_end).
@@ -25,7 +30,7 @@ Solid engine(double x, double y, double z_front, double z_end, double r, int sid
   return loft({circle_z(z_front, r * 0.55, sides, x, y), circle_z(z_front + 0.2 * len, r, sides, x, y),
                circle_z(z_end - 0.15 * len, r * 1.02, sides, x, y), circle_z(z_end, r * 0.85, sides, x, y),
                circle_z(z_end, r * 0.62, sides, x, y), circle_z(z_end - 0.35, r * 0.62, sides, x, y)},
-              {kTrim, kHull, kTrim, kTrim, kGlow}, kTrim, kGlow);
+              {kTrim, kHull, kTrim, kTrim, kEngineGlow}, kTrim, kEngineGlow);
 }
 
 // A canopy bubble on top of a fuselage: glowing glass between z0 and z1.
@@ -38,14 +43,14 @@ Solid canopy(double z0, double z1, double y, double w, double h) {
 
 // A vertical fin: a wing section lofted along +Y instead of +X.
 Solid fin(double x, double y_root, double y_tip, double z_root, double root_chord, double z_tip, double tip_chord,
-          double thickness) {
+          double thickness, int material = kTrim) {
   auto section = [&](double y, double z, double chord, double t) {
     Ring r = wing_section(0.0, 0.0, z, chord, t);
     for (auto& p : r) p = glm::dvec3(x + (p.y), y, p.z);
     return r;
   };
   return loft({section(y_root, z_root, root_chord, thickness), section(y_tip, z_tip, tip_chord, thickness * 0.5)},
-              {kTrim}, kTrim, kTrim);
+              {material}, material, material);
 }
 
 void add_both_sides(MeshBuilder& mb, const Solid& right) {
@@ -63,12 +68,12 @@ void viper(const std::string& dir) {
   mb.add(canopy(-4.2, -0.6, 0.75, 0.55, 0.45));
   const Solid wing = loft({wing_section(1.0, -0.1, -1.5, 6.5, 0.35), wing_section(3.5, -0.2, 1.8, 3.6, 0.22),
                            wing_section(6.2, -0.35, 4.0, 1.6, 0.12)},
-                          {kHull, kHull}, kHull, kTrim);
+                          {kHull, kTeamStripe}, kHull, kTrim);
   add_both_sides(mb, wing);
   // Wing-tip cannons point forward along the leading edge.
   add_both_sides(mb, loft({circle_z(2.0, 0.12, 6, 6.2, -0.35), circle_z(5.6, 0.16, 6, 6.2, -0.35)}, {kTrim}, kTrim, kTrim));
   add_both_sides(mb, engine(1.6, 0.0, 1.5, 7.0, 0.62, 8));
-  add_both_sides(mb, fin(1.6, 0.5, 2.3, 3.6, 3.0, 5.6, 1.4, 0.25));
+  add_both_sides(mb, fin(1.6, 0.5, 2.3, 3.6, 3.0, 5.6, 1.4, 0.25, kTeamStripe));
   add_both_sides(mb, loft({circle_z(-6.9, 0.07, 6, 2.5, -0.4), circle_z(-3.0, 0.12, 6, 2.5, -0.4),
                            circle_z(-1.5, 0.25, 6, 2.5, -0.4)},
                           {kTrim}, kTrim, kTrim));
@@ -87,11 +92,11 @@ void warden(const std::string& dir) {
                ring_z(-1.6, 1.3, 0.8, 8, 0, 2.3, 4.0), ring_z(2.5, 1.5, 0.9, 8, 0, 2.2, 4.0)},
               {kHull, kGlow, kHull}, kHull, kHull));
   // Dorsal spine with a fin at the back.
-  mb.add(fin(0.0, 1.6, 4.0, 3.0, 6.0, 6.5, 2.5, 0.5));
+  mb.add(fin(0.0, 1.6, 4.0, 3.0, 6.0, 6.5, 2.5, 0.5, kTeamStripe));
   // Side pods on stubby pylons; each carries a gun barrel ending at x = ±4 forward.
   const Solid pod = loft({ring_z(-7.5, 0.25, 0.25, 8, 5.2, -0.5), ring_z(-6.0, 1.0, 0.9, 8, 5.2, -0.5, 3.0),
                           ring_z(4.0, 1.1, 1.0, 8, 5.2, -0.5, 3.0), ring_z(7.0, 0.8, 0.7, 8, 5.2, -0.5, 3.0)},
-                         {kTrim, kHull, kTrim}, kTrim, kTrim);
+                         {kTeamStripe, kHull, kTrim}, kTeamStripe, kTrim);
   add_both_sides(mb, pod);
   add_both_sides(mb, box({2.8, -0.9, -2.0}, {4.4, -0.1, 3.0}, kTrim));
   add_both_sides(mb, loft({circle_z(-9.6, 0.18, 6, 4.0, -0.5), circle_z(-5.0, 0.24, 6, 4.0, -0.5),
@@ -113,7 +118,7 @@ void dart(const std::string& dir) {
   // Forward-swept main fins: the tip's leading edge is ahead of the root's.
   const Solid fin_main = loft({wing_section(0.6, 0.0, 1.0, 3.8, 0.3), wing_section(2.5, 0.05, -0.4, 2.2, 0.18),
                                wing_section(4.2, 0.15, -1.7, 1.1, 0.1)},
-                              {kHull, kHull}, kHull, kGlow);
+                              {kHull, kTeamStripe}, kHull, kGlow);
   add_both_sides(mb, fin_main);
   // Canards near the nose.
   add_both_sides(mb, loft({wing_section(0.35, 0.0, -4.6, 1.3, 0.12), wing_section(1.5, 0.0, -4.2, 0.5, 0.06)},
@@ -123,8 +128,8 @@ void dart(const std::string& dir) {
                            circle_z(0.8, 0.22, 6, 1.8, -0.3)},
                           {kTrim}, kTrim, kTrim));
   // Dorsal and ventral tail fins give the needle a clear side profile.
-  mb.add(fin(0.0, 0.6, 2.4, 2.2, 3.0, 4.4, 1.3, 0.2));
-  mb.add(fin(0.0, -0.6, -1.7, 2.6, 2.4, 4.2, 1.2, 0.2));
+  mb.add(fin(0.0, 0.6, 2.4, 2.2, 3.0, 4.4, 1.3, 0.2, kTeamStripe));
+  mb.add(fin(0.0, -0.6, -1.7, 2.6, 2.4, 4.2, 1.2, 0.2, kTeamStripe));
   mb.write_glb(dir + "/dart.glb", "dart", ship_materials({0.72f, 0.22f, 0.18f, 1.0f}, {0.5f, 1.0f, 0.6f}));
 }
 

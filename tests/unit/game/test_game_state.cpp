@@ -129,15 +129,18 @@ TEST(Pause, PausedGameDoesNotAdvanceUntilResumed) {
   EXPECT_EQ(g.tick(), 1u);
 }
 
-TEST(Targeting, NextNearestAndNextHostile) {
+TEST(Targeting, NearestHostileNextHostileAndNext) {
   Game g = Game::load_level(repo("levels/skirmish.json"), options());
   const World& w = g.world();
   g.step(InputFrame{}, {Command::TargetNearest});
-  EXPECT_EQ(w.ships[w.player].target, 1);  // the wingman is closest
+  EXPECT_EQ(w.ships[w.player].target, 2);  // Red 1, not the wingman, who is closer
   g.step(InputFrame{}, {Command::TargetNextHostile});
-  EXPECT_EQ(w.ships[w.player].target, 2);
-  g.step(InputFrame{}, {Command::TargetNext});
   EXPECT_EQ(w.ships[w.player].target, 3);
+  g.step(InputFrame{}, {Command::TargetNext});
+  EXPECT_EQ(w.ships[w.player].target, 4);
+  g.step(InputFrame{}, {Command::TargetNext});
+  g.step(InputFrame{}, {Command::TargetNext});
+  EXPECT_EQ(w.ships[w.player].target, 1);  // next goes round every ship, the wingman included
 }
 
 TEST(Summary, HasShipsTickWinnerAndParticleCounts) {

@@ -1,0 +1,34 @@
+// game/render/hud_combat.h — the HUD's combat cues, derived each frame from the World (no GL).
+//
+// Nothing here is remembered between frames; every cue is a function of simulated state:
+//   hit marker      an X around the crosshair while a weapon of `me` hits a hostile (a ship whose
+//                   last attacker is `me`, hit within HudRules::hit_marker_seconds); red and
+//                   larger on a kill;
+//   damage          for the ship that last hit `me` (within damage_seconds) and every hostile
+//                   whose beam is on `me` now: a red wedge on a ring around the screen centre
+//                   and a glow on the screen edge toward it, fading with the hit's age;
+//   missile warning "MISSILE 420 m" blinking above the crosshair and a marker on the ring
+//                   toward each missile homing on `me`;
+//   range cue       above the target's brackets, whether the beam reaches it;
+//   kill feed       the last kills (killer and victim, from the dead ships' death tick and last
+//                   attacker), newest first, under the objective, each for kill_feed_seconds.
+// Sizes are in canvas units (hud_draw.h).
+#pragma once
+#include "game/render/hud_rules.h"
+#include "game/render/screen_projection.h"
+#include "gfx/render_view.h"
+
+namespace arc {
+
+class World;
+struct Ship;
+
+// Above the target's brackets (centre c, half-size r): "IN RANGE" when the target is within the
+// beam's range (the brackets are drawn bolder then), else its distance.
+void layout_range_cue(HudLayer& h, glm::dvec2 c, double r, bool in_range, double distance, const glm::vec4& col);
+void layout_combat_cues(const World& w, const Ship& me, const Projector& pr, const HudRules& rules, double alpha,
+                        double canvas_w, double canvas_h, HudLayer& h);
+// `me` (may be null) colours the entries: green for its side's kills, red for its losses.
+void layout_kill_feed(const World& w, const Ship* me, const HudRules& rules, double x, double y, HudLayer& h);
+
+}  // namespace arc

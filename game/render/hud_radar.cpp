@@ -1,0 +1,89 @@
+// The radar: contacts around the followed ship, its range fitted to the nearest threats.
+#include "game/render/hud_radar.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+#include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include "game/render/hud_draw.h"
+#include "game/sim/world.h"
+
+namespace arc {
+namespace {
+
+const glm::vec4 kRadarGrid{0.4f, 0.8f, 0.5f, 0.3f};
+
+// The smallest 1, 2 or 5 × 10^n not below x.
+double round_up_to_nice(double x) {
+  if (!(x > 0)) return 1.0;
+  const double decade = std::pow(10.0, std::floor(std::log10(x)));
+  for (double m : {1.0, 2.0, 5.0, 10.0})
+    if (m * decade >= x * (1.0 - 1e-12)) return m * decade;
+  return 10.0 * decade;
+}
+
+std::string range_label(double metres) {
+  return metres >= 1000.0 ? fmt("%g km", metres / 1000.0) : fmt("%g m", metres);
+}
+
+void contact(HudLayer& h, double cx, double cy, double half, const glm::dvec3& local, double range, double dot,
+             const glm::vec4& c) {
+  double x = local.x / range, y = local.z / range;
+  const double len = std::sqrt(x * x + y * y);
+  if (len > 1.0) x /= len, y /= len;
+  const double px = cx + x * half, py = cy + y * half;
+  quad(h, px - dot * 0.5, py - dot * 0.5, dot, dot, c);
+  // Above or below: a short tick shows the height, as in most space-sim radars.
+  const double up = std::clamp(local.y / range, -1.0, 1.0) * half * 0.5;
+  line(h, px, py, px, py - up, c, 1.0f);
+}
+
+}  // namespace
+
+HudRect radar_rect(double canvas_w, double canvas_h) {
+  const double size = std::min(canvas_w, canvas_h) * 0.22;
+  return {canvas_w * 0.5 - size * 0.5, canvas_h - size - 12.0, size, size};
+}
+
+double radar_range(const World& w, const Ship& me, const HudRules& rules) {
+  std::vector<double> threats;
+  for (const Ship& s : w.ships)
+    if (s.alive && s.id != me.id && w.hostile(me, s)) threats.push_back(glm::length(s.position - me.position));
+  for (const Projectile& p : w.projectiles)
+    if (p.target == me.id && p.kind == SecondaryWeapon::Missile) threats.push_back(glm::length(p.position - me.position));
+  if (threats.empty()) return rules.radar_max_range;
+  const size_t k = std::min(threats.size(), size_t(std::max(rules.radar_threats, 1))) - 1;
+  std::nth_element(threats.begin(), threats.begin() + std::ptrdiff_t(k), threats.end());
+  const double fitted = round_up_to_nice(threats[k] * rules.radar_margin);
+  return std::clamp(fitted, rules.radar_min_range, std::max(rules.radar_min_range, rules.radar_max_range));
+}
+
+void layout_radar(const World& w, const Ship& me, const HudRules& rules, double canvas_w, double canvas_h,
+                  HudLayer& h) {
+  const HudRect r = radar_rect(canvas_w, canvas_h);
+  const double cx = r.x + r.w * 0.5, cy = r.y + r.h * 0.5, half = r.w * 0.5;
+  quad(h, r.x, r.y, r.w, r.h, kHudBack);
+  line(h, r.x, cy, r.x + r.w, cy, kRadarGrid, 1.0f);
+  line(h, cx, r.y, cx, r.y + r.h, kRadarGrid, 1.0f);
+  const int segments = 24;  // the half-range ring
+  for (int i = 0; i < segments; ++i) {
+    const double a0 = 6.283185307179586 * i / segments, a1 = 6.283185307179586 * (i + 1) / segments;
+    line(h, cx + std::cos(a0) * half * 0.5, cy + std::sin(a0) * half * 0.5, cx + std::cos(a1) * half * 0.5,
+         cy + std::sin(a1) * half * 0.5, kRadarGrid, 1.0f);
+  }
+  const double range = radar_range(w, me, rules);
+  text(h, r.x + 4, r.y + 4, 0.9, kHudGreen, range_label(range));
+  const glm::dquat inv = glm::conjugate(me.orientation);
+  for (const Ship& s : w.ships) {
+    if (!s.alive || s.id == me.id) continue;
+    contact(h, cx, cy, half, inv * (s.position - me.position), range, s.id == me.target ? 6.0 : 4.0,
+            w.hostile(me, s) ? kHudRed : kHudBlue);
+  }
+  for (const Projectile& p : w.projectiles)
+    if (p.target == me.id && p.kind == SecondaryWeapon::Missile)
+      contact(h, cx, cy, half, inv * (p.position - me.position), range, 3.0, kHudWhite);
+}
+
+}  // namespace arc

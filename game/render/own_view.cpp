@@ -1,0 +1,109 @@
+// The followed ship's own effects, edited in the frame's particle list (see own_view.h).
+#include "game/render/own_view.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "game/render/screen_projection.h"
+#include "game/sim/world.h"
+
+namespace arc {
+namespace {
+
+enum class ViewKind { Other, OwnShield, OwnExhaust, OwnBeam, OtherBeam };
+
+// The clusters the rules touch, by ClusterHandle::index (as ParticleInstance::cluster).
+struct ViewClusters {
+  std::vector<uint32_t> shield, exhaust, beam, other_beams;
+
+  static ViewClusters of(const World& w, const Ship& me) {
+    ViewClusters o;
+    for (ClusterHandle h : me.shield_fx.clusters) o.shield.push_back(h.index);
+    for (const EffectHandle& e : me.exhaust_fx)
+      for (ClusterHandle h : e.clusters) o.exhaust.push_back(h.index);
+    for (ClusterHandle h : me.beam_channels) o.beam.push_back(h.index);
+    for (const Ship& s : w.ships)
+      if (s.id != me.id)
+        for (ClusterHandle h : s.beam_channels) o.other_beams.push_back(h.index);
+    return o;
+  }
+  ViewKind kind(uint32_t cluster) const {
+    auto has = [cluster](const std::vector<uint32_t>& v) { return std::find(v.begin(), v.end(), cluster) != v.end(); };
+    if (has(shield)) return ViewKind::OwnShield;
+    if (has(exhaust)) return ViewKind::OwnExhaust;
+    if (has(beam)) return ViewKind::OwnBeam;
+    if (has(other_beams)) return ViewKind::OtherBeam;
+    return ViewKind::Other;
+  }
+};
+
+double smoothstep01(double x) {
+  x = std::clamp(x, 0.0, 1.0);
+  return x * x * (3.0 - 2.0 * x);
+}
+
+void scale_color(ParticleInstance& p, double k) {
+  for (float& c : p.color) c *= float(k);
+}
+
+// The particle in view space (camera at the origin looking along −Z): its offset is already
+// camera-relative, so only the rotation remains.
+glm::dvec3 view_space(const ParticleInstance& p, const glm::dquat& inverse) {
+  return inverse * glm::dvec3(p.pos[0], p.pos[1], p.pos[2]);
+}
+
+// Chase camera: how much of a shield particle stays, by how far its quad lies from the crosshair.
+double shield_visibility(const ParticleInstance& p, const Projector& pr, glm::dvec2 crosshair, double height,
+                         const OwnViewRules& rules) {
+  const glm::dvec3 v = view_space(p, pr.inverse);
+  if (v.z > -pr.near_plane) return 0.0;
+  const glm::dvec2 px(pr.cx + v.x / -v.z * pr.focal, pr.cy - v.y / -v.z * pr.focal);
+  const double reach = std::max(double(p.size), 0.0) / -v.z * pr.focal * std::sqrt(2.0);
+  const glm::dvec2 d = px - crosshair;
+  const double gap = std::sqrt(d.x * d.x + d.y * d.y) - reach - rules.clear_radius * height;
+  return smoothstep01(gap / std::max(rules.clear_fade * height, 1e-9));
+}
+
+// Either camera: a beam is at most `half_width` (share of the screen height) wide on screen and
+// fades out over `near_fade` metres toward the eye (0: no fade). False when nothing is left.
+bool tame_beam(ParticleInstance& p, const Projector& pr, double height, double half_width, double near_fade) {
+  const glm::dvec3 v = view_space(p, pr.inverse);
+  const double depth = -v.z;
+  if (depth <= pr.near_plane) return false;
+  const double widest = half_width * height * depth / pr.focal;
+  p.size = float(std::min(double(p.size), widest));
+  const double dist = std::sqrt(glm::dot(v, v));
+  const double fade = near_fade > 0 ? smoothstep01(dist / near_fade) : 1.0;
+  scale_color(p, fade);
+  return fade > 0.0;
+}
+
+}  // namespace
+
+void keep_own_effects_out_of_view(const World& w, int ship, bool cockpit, const CameraView& camera, double alpha,
+                                  int width, int height, const OwnViewRules& rules,
+                                  std::vector<ParticleInstance>& particles) {
+  if (ship < 0 || size_t(ship) >= w.ships.size()) return;
+  const Ship& me = w.ships[size_t(ship)];
+  const ViewClusters clusters = ViewClusters::of(w, me);
+  const Projector pr = Projector::of(camera, width, height);
+  glm::dvec2 crosshair(pr.cx, pr.cy);
+  pr.project(crosshair_point(me, alpha), crosshair);
+  std::erase_if(particles, [&](ParticleInstance& p) {
+    switch (clusters.kind(p.cluster)) {
+      case ViewKind::Other: return false;
+      case ViewKind::OwnExhaust: return cockpit;
+      case ViewKind::OwnBeam: return !tame_beam(p, pr, height, rules.beam_half_width, rules.beam_near_fade);
+      case ViewKind::OtherBeam: return !tame_beam(p, pr, height, rules.other_beam_half_width, 0.0);
+      case ViewKind::OwnShield: {
+        if (cockpit) return true;
+        const double keep = shield_visibility(p, pr, crosshair, height, rules);
+        scale_color(p, keep);
+        return keep <= 0.0;
+      }
+    }
+    return false;
+  });
+}
+
+}  // namespace arc

@@ -1,0 +1,37 @@
+// game/render/own_view.h — keeps the followed ship's own effects out of its pilot's eyes (no GL).
+//
+// The simulation draws every ship's shield, exhausts and beam alike; only the view knows which
+// ship the camera rides with. After collect(), keep_own_effects_out_of_view() edits that ship's
+// particles (found by their cluster, ParticleInstance::cluster = ClusterHandle::index):
+//   chase:   shield particles fade out around the crosshair, so nothing of the own sphere lies
+//            between the camera and the view ahead (a hit elsewhere on it still flashes);
+//   cockpit: no own shield and no own exhaust (the camera sits inside the sphere);
+//   both:    the own beam fades out toward the eye and is never wider on screen than a few
+//            pixels, so it starts at the muzzles as a thin bolt instead of filling the view;
+//            other ships' beams have a wider limit, so one striking the own shield a few
+//            metres from the eye stays a bolt instead of a screen-filling flare.
+// A hit on the ship also shows as a glow at the screen edge toward it (hud_combat.h).
+#pragma once
+#include <vector>
+
+#include "gfx/render_view.h"
+
+namespace arc {
+
+class World;
+
+struct OwnViewRules {
+  double clear_radius = 0.25;     // chase: own shield gone within this share of the screen height around the crosshair
+  double clear_fade = 0.12;       // ... and fading back in over this much more
+  double beam_half_width = 0.005; // own beam: widest half-width on screen, share of the screen height
+  double beam_near_fade = 6.0;    // own beam: fades to nothing over this many metres toward the eye
+  double other_beam_half_width = 0.02;  // other ships' beams: widest half-width on screen, share of the height
+};
+
+// `ship` is the ship the camera follows (World::focus_ship()); `cockpit` whether it rides inside
+// it; `alpha` interpolates the crosshair like the meshes.
+void keep_own_effects_out_of_view(const World& w, int ship, bool cockpit, const CameraView& camera, double alpha,
+                                  int width, int height, const OwnViewRules& rules,
+                                  std::vector<ParticleInstance>& particles);
+
+}  // namespace arc
