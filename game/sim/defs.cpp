@@ -203,6 +203,7 @@ LevelDef parse_level_doc(std::shared_ptr<const JsonDoc> doc, const std::string& 
     }
   }
   r.finish();
+  L.ai = load_ai_difficulties(root_dir);
   return L;
 }
 

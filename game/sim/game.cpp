@@ -145,6 +145,7 @@ uint64_t hash_core(const World& w) {
     h.add_i64(ai.target);
     h.add_i64(ai.mode_until);
     h.add_i64(ai.next_think);
+    h.add_i64(ai.tail_since);
     h.add_vec(ai.aim_error);
     h.add_vec(ai.evade_dir);
   }

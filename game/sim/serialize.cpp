@@ -10,7 +10,7 @@ namespace arc {
 namespace {
 
 constexpr uint64_t kMagic = snapshot::magic("ARCSNAP1");
-constexpr uint32_t kVersion = 1;
+constexpr uint32_t kVersion = 2;
 
 using snapshot::Reader;
 using snapshot::Writer;
@@ -88,6 +88,7 @@ void write_ship(Writer& out, const Ship& s, const World& w) {
   out.i32(ai.target);
   out.i64(ai.mode_until);
   out.i64(ai.next_think);
+  out.i64(ai.tail_since);
   out.vec3(ai.aim_error);
   out.vec3(ai.evade_dir);
 }
@@ -202,6 +203,7 @@ void read_ship(Reader& in, Ship& s, const World& w) {
   ai.target = read_ship_ref(in, w, "AI target");
   ai.mode_until = in.i64();
   ai.next_think = in.i64();
+  ai.tail_since = in.i64();
   ai.aim_error = in.vec3();
   ai.evade_dir = in.vec3();
 }

@@ -39,6 +39,7 @@ struct AiState {
   int target = -1;
   int64_t mode_until = 0;      // tick at which the current evade / break-off ends
   int64_t next_think = 0;      // reaction time: decisions are refreshed at this tick
+  int64_t tail_since = -1;     // tick it got on a player's tail (−1: not on one)
   glm::dvec3 aim_error{0.0};   // unit-sphere offset, scaled by distance and difficulty
   glm::dvec3 evade_dir{0.0};   // world direction while evading or breaking off
 };
