@@ -75,7 +75,10 @@ struct SphereDef {
 struct LightningDef {
   double seed_length = 10.0;         // m: the seed segment and the basic segment length
   double max_length = 500.0;         // m: the channel ends before exceeding this
-  double max_angle = 0.3;            // radians: largest deviation of a segment from the seed direction
+  double max_angle = 0.3;            // radians: largest deviation of a segment from its guide direction
+  double guide_distance = 0.0;       // m; 0: segments deviate from the seed direction (Hadwiger), so the
+                                     // channel wanders off the seed line; > 0: from the direction toward
+                                     // the seed line's point this far ahead, so it stays on the line
   double length_jitter = 0.3;        // segment length in seed_length·[1 − j, 1 + j]
   int sizzle_ticks = 3;              // re-evaluate every n ticks (Hadwiger §5.2 "sizzle")
   double width = 1.0;                // half-width of a segment's sprite, m

@@ -185,6 +185,7 @@ void read_animation(JsonObject o, ClusterDef& c) {
       o.fail_key("max_length", "'max_length' must be at least 'seed_length'");
     l.max_angle = o.number("max_angle_deg", 20.0, 0.0, 89.0) * kDeg;
     l.length_jitter = o.number("length_jitter", 0.3, 0.0, 0.9);
+    l.guide_distance = o.number("guide_distance", 0.0, 0.0, kBig);
     l.sizzle_ticks = int(o.integer("sizzle_ticks", 3, 1, 600));
     l.width = o.number("width", 1.0, 1e-3, kBig);
     l.free_lifetime = o.number("free_lifetime", l.free_lifetime, 0.01, 3600.0);

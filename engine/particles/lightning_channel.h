@@ -4,7 +4,10 @@
 // basic segment length. Every further segment deviates from the seed direction by a random
 // angle up to max_angle (uniform over the spherical cap) and has a random length in
 // seed_length·[1 − jitter, 1 + jitter]; segments are concatenated while the total stays within
-// max_length. No branches. Every n ticks all segments but the seed are drawn again ("sizzle");
+// max_length. A guided channel (guide_distance > 0, a weapon that must hit what it is aimed at)
+// measures each deviation from the direction toward the seed line's point guide_distance ahead
+// of the segment's start instead, so it sizzles about the aim line without wandering off it.
+// No branches. Every n ticks all segments but the seed are drawn again ("sizzle");
 // the draw is keyed by (seed, stream, epoch tick), so a channel is a pure function of its epoch.
 #pragma once
 #include <cstdint>

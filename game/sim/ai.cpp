@@ -14,8 +14,9 @@ namespace {
 
 constexpr uint64_t kAiStream = 0x41490000ull;
 
-// Stick commands that turn the nose toward a world direction, damped by the current turn rate.
-void steer_toward(const Ship& s, const glm::dvec3& dir, InputFrame& out) {
+// Stick commands that turn the nose toward a world direction, damped by the current turn rate;
+// the stick goes no further than `stick_limit` (calmer pilots turn more gently).
+void steer_toward(const Ship& s, const glm::dvec3& dir, double stick_limit, InputFrame& out) {
   glm::dvec3 local = glm::conjugate(s.orientation) * dir;
   double yaw_angle = std::atan2(local.x, -local.z);
   double pitch_angle = std::atan2(local.y, std::sqrt(local.x * local.x + local.z * local.z));
@@ -25,8 +26,8 @@ void steer_toward(const Ship& s, const glm::dvec3& dir, InputFrame& out) {
   // Yawing right is a negative rate about +Y, hence the sign of the damping term.
   double yaw_cmd = gain * yaw_angle + damping * (s.angular_velocity.y / std::max(yaw_rate, 1e-6));
   double pitch_cmd = gain * pitch_angle - damping * (s.angular_velocity.x / std::max(pitch_rate, 1e-6));
-  out.yaw = quantise_axis(yaw_cmd);
-  out.pitch = quantise_axis(pitch_cmd);
+  out.yaw = quantise_axis(std::clamp(yaw_cmd, -stick_limit, stick_limit));
+  out.pitch = quantise_axis(std::clamp(pitch_cmd, -stick_limit, stick_limit));
   // Level the wings slowly so the ship does not corkscrew.
   out.roll = quantise_axis(-0.3 * s.angular_velocity.z);
 }
@@ -55,8 +56,35 @@ int pick_target(const World& w, int self) {
   return best;
 }
 
+// Sitting on a player's tail: behind it (within 60 degrees of its tail), nose on it, in range.
+bool on_players_tail(const Ship& s, const Ship& t, const glm::dvec3& rel, double dist) {
+  if (!t.player || dist > 1.25 * s.cls->beam.range) return false;
+  const bool behind = glm::dot(forward_of(t.orientation), rel) > 0.5 * dist;
+  const bool nose_on = glm::dot(forward_of(s.orientation), rel) > 0.85 * dist;
+  return behind && nose_on;
+}
+
+// A person cannot shake a pilot that never lets go, so after tail_limit_s on a player's tail
+// the pilot breaks off to the side and gives the player a firing window (AI-versus-AI fights
+// need no such mercy). Returns whether it broke off.
+bool break_off_players_tail(const World& w, Ship& s, const Ship& t, const glm::dvec3& rel, double dist, const Rng& rng) {
+  const AiDifficultyDef& tune = ai_difficulty(w);
+  AiState& ai = s.ai_state;
+  if (!on_players_tail(s, t, rel, dist)) {
+    ai.tail_since = -1;
+    return false;
+  }
+  if (ai.tail_since < 0) ai.tail_since = w.tick;
+  if (tune.tail_limit_s <= 0 || w.tick - ai.tail_since < seconds_to_ticks(w, tune.tail_limit_s)) return false;
+  ai.tail_since = -1;
+  ai.mode = AiMode::BreakOff;
+  ai.mode_until = w.tick + seconds_to_ticks(w, tune.tail_break_s);
+  ai.evade_dir = safe_norm(glm::cross(rel, rng.unit_vector(8)), glm::dvec3(0, 1, 0));
+  return true;
+}
+
 void think(World& w, Ship& s) {
-  const AiTuning tune = ai_tuning(w.difficulty);
+  const AiDifficultyDef& tune = ai_difficulty(w);
   AiState& ai = s.ai_state;
   const Rng rng{w.seed, kAiStream + static_cast<uint64_t>(s.id), static_cast<uint64_t>(w.tick)};
   ai.next_think = w.tick + std::max<int64_t>(1, seconds_to_ticks(w, tune.reaction_s));
@@ -69,8 +97,12 @@ void think(World& w, Ship& s) {
   const double dist = safe_len(rel);
   const double shield_frac = s.cls->shield > 0 ? s.shield / s.cls->shield : 0.0;
   const double hull_frac = s.hull / s.cls->hull;
-  if (ai.mode != AiMode::Attack && w.tick < ai.mode_until) return;
+  if (ai.mode != AiMode::Attack && w.tick < ai.mode_until) {
+    ai.tail_since = -1;
+    return;
+  }
   ai.mode = AiMode::Attack;
+  if (break_off_players_tail(w, s, t, rel, dist, rng)) return;
   const double evade_at = 0.35 * (1.3 - tune.aggression);
   // After an evasion or a break-off the pilot turns back and fights for a while before it may
   // evade again: a ship that is still under fire never recharges, so endless evading only
@@ -113,19 +145,30 @@ bool ally_in_line_of_fire(const World& w, const Ship& s, const glm::dvec3& dir, 
   return false;
 }
 
+// Under its target's guns (the target's nose within about 9 degrees of this ship, within a
+// little more than its beam range) a pilot jinks: it strafes at `jink` of full thrust in a
+// direction drawn anew every 0.8 s, so a shooter who reacts late slides off it.
+void jink(const World& w, const Ship& s, const Ship& t, double amount, InputFrame& c) {
+  const glm::dvec3 from_t = s.position - t.position;
+  const double dist = safe_len(from_t);
+  if (amount <= 0 || dist > 1.2 * t.cls->beam.range) return;
+  if (glm::dot(forward_of(t.orientation), from_t) < std::cos(0.15) * dist) return;
+  const int64_t period = std::max<int64_t>(1, seconds_to_ticks(w, 0.8));
+  const Rng rng{w.seed, kAiStream + 0x200 + static_cast<uint64_t>(s.id), static_cast<uint64_t>(w.tick / period)};
+  const double a = 2.0 * kPi * rng.uniform(0);
+  c.strafe_x = quantise_axis(amount * std::cos(a));
+  c.strafe_y = quantise_axis(amount * std::sin(a));
+}
+
 }  // namespace
 
-AiTuning ai_tuning(int difficulty) {
-  switch (difficulty) {
-    case 0: return {0.065, 0.45, 0.5};
-    case 2: return {0.012, 0.1, 1.0};
-    default: return {0.05, 0.25, 0.75};
-  }
+const AiDifficultyDef& ai_difficulty(const World& w) {
+  return w.level.ai[static_cast<size_t>(std::clamp(w.difficulty, 0, 2))];
 }
 
 void drive_ai(World& w, Ship& s) {
   if (w.tick >= s.ai_state.next_think) think(w, s);
-  const AiTuning tune = ai_tuning(w.difficulty);
+  const AiDifficultyDef& tune = ai_difficulty(w);
   AiState& ai = s.ai_state;
   InputFrame c;
   if (ai.target < 0 || !w.ships[ai.target].alive) {
@@ -137,9 +180,10 @@ void drive_ai(World& w, Ship& s) {
   const Ship& t = w.ships[ai.target];
   const glm::dvec3 fwd = forward_of(s.orientation);
   if (ai.mode != AiMode::Attack) {
-    steer_toward(s, ai.evade_dir, c);
+    steer_toward(s, ai.evade_dir, tune.stick_limit, c);
     c.throttle = quantise_axis(1.0);
     if (s.energy > 0.3 * s.cls->energy) c.buttons |= kAfterburner;
+    jink(w, s, t, tune.jink, c);
     s.controls = c;
     return;
   }
@@ -149,7 +193,7 @@ void drive_ai(World& w, Ship& s) {
   glm::dvec3 aim = plasma ? lead_point(s, t, s.cls->plasma.speed) : t.position + t.velocity * w.dt;
   glm::dvec3 dir = safe_norm(aim - s.position, fwd);
   dir = safe_norm(dir + ai.aim_error, dir);
-  steer_toward(s, dir, c);
+  steer_toward(s, dir, tune.stick_limit, c);
   const double off = std::acos(std::clamp(glm::dot(fwd, safe_norm(rel, fwd)), -1.0, 1.0));
   const double cone = std::atan2(t.cls->shield_radius, std::max(dist, 1.0)) * (0.6 + 0.6 * tune.aggression);
   double throttle = dist > 400 ? 1.0 : dist > 150 ? 0.7 : 0.35;
@@ -171,6 +215,7 @@ void drive_ai(World& w, Ship& s) {
   // Switch weapons now and then so both get used.
   if (s.cls->missile.present && s.cls->plasma.present && rng.uniform(1) < 0.004)
     s.secondary = s.secondary == SecondaryWeapon::Missile ? SecondaryWeapon::Plasma : SecondaryWeapon::Missile;
+  jink(w, s, t, tune.jink, c);
   s.controls = c;
 }
 

@@ -4,15 +4,11 @@
 
 namespace arc {
 
-// Difficulty parameters (easy, normal, hard), exposed for the tests.
-struct AiTuning {
-  double aim_error;    // radians of aim scatter
-  double reaction_s;   // seconds between decisions
-  double aggression;   // 0..1: fire cone, missile use, how late it evades
-};
-AiTuning ai_tuning(int difficulty);
+// The World's difficulty row of its level's AI table (assets/settings/ai.json).
+const AiDifficultyDef& ai_difficulty(const World& w);
 
-// A fighter: re-thinks at its reaction time (target, evade, break off), then steers and fires.
+// A fighter: re-thinks at its reaction time (target, evade, break off; off a player's tail after
+// the difficulty's tail_limit_s), then steers and fires.
 void drive_ai(World& w, Ship& s);
 // A gunner: holds still and fires every weapon straight ahead in bursts.
 void drive_gunner(const World& w, Ship& s);

@@ -12,26 +12,39 @@
 namespace arc {
 namespace {
 
-// The beam's path: the lightning channel's polyline clipped to the class's range, or a straight
-// seed line while the channel has no points yet (the tick it was spawned).
-std::vector<glm::dvec3> beam_path(const World& w, const Ship& s, size_t mount) {
+// The beam's path: the lightning channel's polyline up to where it reaches the class's range
+// ahead of its mount (measured along the aim line, so a zigzag does not shorten it), or a
+// straight seed line while the channel has no points yet (the tick it was spawned).
+struct BeamPath {
+  std::vector<glm::dvec3> points;
+  double length = 0;  // along the polyline: where the channel is cut when nothing is hit
+};
+
+BeamPath beam_path(const World& w, const Ship& s, size_t mount) {
   const double range = s.cls->beam.range;
-  std::vector<glm::dvec3> pts = w.particles->lightning_points(s.beam_channels[mount]);
+  const glm::dvec3 aim = forward_of(s.orientation);
+  BeamPath path;
+  path.points = w.particles->lightning_points(s.beam_channels[mount]);
+  std::vector<glm::dvec3>& pts = path.points;
   if (pts.size() < 2) {
     glm::dvec3 origin = s.position + s.orientation * s.cls->beam.mounts[mount];
-    return {origin, origin + forward_of(s.orientation) * range};
+    pts = {origin, origin + aim * range};
+    path.length = range;
+    return path;
   }
-  double along = 0;
   for (size_t i = 0; i + 1 < pts.size(); ++i) {
+    const double reach0 = glm::dot(pts[i] - pts[0], aim), reach1 = glm::dot(pts[i + 1] - pts[0], aim);
     const double seg = safe_len(pts[i + 1] - pts[i]);
-    if (along + seg > range) {
-      pts[i + 1] = pts[i] + (pts[i + 1] - pts[i]) * ((range - along) / seg);
+    if (reach1 > range && reach1 > reach0) {
+      const double f = (range - reach0) / (reach1 - reach0);
+      pts[i + 1] = pts[i] + (pts[i + 1] - pts[i]) * f;
       pts.resize(i + 2);
-      break;
+      path.length += seg * f;
+      return path;
     }
-    along += seg;
+    path.length += seg;
   }
-  return pts;
+  return path;
 }
 
 }  // namespace
@@ -96,9 +109,10 @@ void resolve_beams(World& w) {
     const size_t n = s.beam_channels.size();
     for (size_t m = 0; m < n; ++m) {
       ClusterHandle ch = s.beam_channels[m];
-      BeamHit hit = trace_beam(w, s.id, beam_path(w, s, m));
+      const BeamPath path = beam_path(w, s, m);
+      BeamHit hit = trace_beam(w, s.id, path.points);
       s.beam_hit_distance[m] = hit.distance;
-      w.particles->cut_lightning(ch, hit.ship >= 0 ? hit.distance : s.cls->beam.range);
+      w.particles->cut_lightning(ch, hit.ship >= 0 ? hit.distance : path.length);
       if (hit.ship < 0) continue;
       Ship& t = w.ships[hit.ship];
       s.beam_target = hit.ship;

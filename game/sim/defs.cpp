@@ -241,6 +241,7 @@ LevelDef parse_level_doc(std::shared_ptr<const JsonDoc> doc, const std::string& 
   parse_team_colors(r, L);
   check_protected_ship(r, L);
   r.finish();
+  L.ai = load_ai_difficulties(root_dir);
   return L;
 }
 

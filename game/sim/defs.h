@@ -2,11 +2,12 @@
 //
 // Loaders only fill defs and validate every value through core/json.h, so a wrong file fails
 // with `path:line:col: what is wrong and what is allowed` before anything is simulated.
-// ShipClassDef comes from assets/ships/*.json, LevelDef from levels/*.json (see levels/README.md
-// for every key). Paths inside files are relative to GameOptions::root_dir.
+// ShipClassDef comes from assets/ships/*.json, LevelDef from levels/*.json, the AI pilots'
+// difficulties from assets/settings/ai.json (see levels/README.md for every key). Paths inside files are relative to GameOptions::root_dir.
 //
 //   LevelDef level = load_level_def("levels/duel.json", ".");   // also loads the ship classes
 #pragma once
+#include <array>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -105,6 +106,18 @@ struct CameraHintDef {
   double fov_deg = 60.0;
 };
 
+// How AI fighters fly at one difficulty (assets/settings/ai.json; game/sim/ai_defs.cpp loads it).
+struct AiDifficultyDef {
+  double aim_error = 0;     // radians: largest scatter of the aim point, drawn at each decision
+  double reaction_s = 0;    // seconds between decisions (target, evade, break off, aim scatter)
+  double aggression = 0;    // 0..1: fire cone, missile use, how late it evades and breaks off
+  double stick_limit = 1;   // 0..1: the furthest it pushes the stick (of the ship's turn rates)
+  double jink = 0;          // 0..1: strafe thrust while under a hostile's guns
+  double tail_limit_s = 0;  // seconds on a player's tail before it breaks off; 0 = never
+  double tail_break_s = 0;  // how long that break-off lasts
+};
+using AiDifficultyTable = std::array<AiDifficultyDef, 3>;  // easy, normal, hard
+
 struct LevelDef {
   std::string path;
   std::string name;
@@ -129,9 +142,13 @@ struct LevelDef {
   // Team name → rgb of its hull stripes and engine glow ("team_colors"; blue and red have
   // defaults). A team without one keeps the models' own colours. Drawing only: not simulated.
   std::map<std::string, glm::dvec3> team_colors;
+  AiDifficultyTable ai;  // the AI pilots at each difficulty
 };
 
 class EffectLibrary;
+
+// assets/settings/ai.json below `root_dir`: every difficulty and key is required.
+AiDifficultyTable load_ai_difficulties(const std::string& root_dir);
 
 ShipClassDef load_ship_class(const std::string& path, const std::string& name);
 // With `effects`, every effect a level names must be in it (checked at its position).

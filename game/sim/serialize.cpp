@@ -31,7 +31,7 @@ static void write_leaf(snapshot::Writer& out, const std::optional<ParticleWorld>
 namespace {
 
 constexpr uint64_t kMagic = snapshot::magic("ARCSNAP1");
-constexpr uint32_t kVersion = 1;
+constexpr uint32_t kVersion = 2;
 
 using snapshot::Reader;
 using snapshot::Writer;

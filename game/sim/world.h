@@ -73,6 +73,7 @@ struct AiState {
   int target = -1;
   int64_t mode_until = 0;      // tick at which the current evade / break-off ends
   int64_t next_think = 0;      // reaction time: decisions are refreshed at this tick
+  int64_t tail_since = -1;     // tick it got on a player's tail (−1: not on one)
   glm::dvec3 aim_error{0.0};   // unit-sphere offset, scaled by distance and difficulty
   glm::dvec3 evade_dir{0.0};   // world direction while evading or breaking off
 };
@@ -83,6 +84,7 @@ void visit_fields(A& a, V&& v) {
   v("target", a.target, ship_ref, state_hash<1>);
   v("mode_until", a.mode_until, fields::saved, state_hash<2>);
   v("next_think", a.next_think, fields::saved, state_hash<3>);
+  v("tail_since", a.tail_since, fields::saved, state_hash<6>);
   v("aim_error", a.aim_error, fields::saved, state_hash<4>);
   v("evade_dir", a.evade_dir, fields::saved, state_hash<5>);
 }

@@ -1,6 +1,7 @@
 #include <filesystem>
 #include <fstream>
 #include <set>
+#include <unistd.h>
 #include <gtest/gtest.h>
 
 #include "core/error.h"
@@ -181,6 +182,36 @@ TEST(LevelErrors, BadShipClassFileIsReportedInThatFile) {
     std::string m = e.what();
     EXPECT_NE(m.find("broken.json:3:11: 'mass'"), std::string::npos) << m;
   }
+}
+
+// assets/settings/ai.json is validated like a level: the first bad value, at its position.
+TEST(LevelErrors, BadAiDifficultyFileIsReportedInThatFile) {
+  auto dir = std::filesystem::temp_directory_path() / ("arcfire_bad_ai_root_" + std::to_string(getpid()));
+  std::filesystem::create_directories(dir / "assets/settings");
+  auto error_for = [&](const std::string& text) -> std::string {
+    std::ofstream(dir / "assets/settings/ai.json") << text;
+    try {
+      load_ai_difficulties(dir.string());
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  const std::string row = R"("aim_error_deg": 1, "reaction_s": 0.2, "aggression": 0.5, "stick_limit": 1, "jink": 0,)";
+  const std::string ok = "{\n\"easy\": {" + row + R"( "tail_limit_s": 3, "tail_break_s": 2 },)" + "\n\"normal\": {" +
+                         row + R"( "tail_limit_s": 3, "tail_break_s": 2 },)" + "\n\"hard\": {" + row +
+                         R"( "tail_limit_s": 0, "tail_break_s": 0 })" + "\n}\n";
+  EXPECT_EQ(error_for(ok), "");
+  std::string m = error_for(std::string(ok).replace(ok.find("\"aggression\": 0.5"), 17, "\"aggression\": 1.5"));
+  EXPECT_NE(m.find("ai.json:2:"), std::string::npos) << m;
+  EXPECT_NE(m.find("'aggression'"), std::string::npos) << m;
+  m = error_for(std::string(ok).replace(ok.find("\"jink\""), 6, "\"jinx\""));
+  EXPECT_NE(m.find("missing required key 'jink'"), std::string::npos) << m;
+  m = error_for(std::string(ok).replace(ok.find("\"tail_break_s\": 2"), 17, "\"tail_break_s\": 0"));
+  EXPECT_NE(m.find("ai.json:2:"), std::string::npos) << m;
+  EXPECT_NE(m.find("'tail_break_s' must be above zero"), std::string::npos) << m;
+  m = error_for("{ \"easy\": {" + row + R"( "tail_limit_s": 0, "tail_break_s": 0 } })");
+  EXPECT_NE(m.find("normal"), std::string::npos) << m;
 }
 
 TEST(LevelErrors, UnknownEffectIsReportedAtItsPosition) {
