@@ -23,18 +23,21 @@ World& World::operator=(const World& o) {
   if (this == &o) return *this;
   level = o.level;
   class_names = o.class_names;
+  team_names = o.team_names;
   model_paths = o.model_paths;
   ships = o.ships;
   projectiles = o.projectiles;
   props = o.props;
   explosions = o.explosions;
   effects = o.effects;
+  fx = o.fx;
   particles = o.particles ? std::make_unique<ParticleWorld>(*o.particles) : nullptr;
   seed = o.seed;
   difficulty = o.difficulty;
   tick = o.tick;
   dt = o.dt;
   next_projectile_serial = o.next_projectile_serial;
+  next_particle_owner = o.next_particle_owner;
   paused = o.paused;
   player = o.player;
   outcome = o.outcome;
@@ -50,17 +53,16 @@ World& World::operator=(const World& o) {
   return *this;
 }
 
-int World::focus_ship() const {
-  if (player >= 0) return player;
+ShipId World::focus_ship() const {
+  if (player) return player;
   for (const Ship& s : ships)
     if (s.alive) return s.id;
-  return -1;
+  return {};
 }
 
-int World::model_index(const std::string& path) const {
-  for (size_t i = 0; i < model_paths.size(); ++i)
-    if (model_paths[i] == path) return static_cast<int>(i);
-  return -1;
+const std::string& World::team_name(TeamId team) const {
+  static const std::string none = "none";
+  return team ? team_names.at(team.index()) : none;
 }
 
 // ---------------------------------------------------------------- Game
@@ -112,11 +114,12 @@ uint64_t hash_core(const World& w) {
   h.add_i64(w.difficulty);
   h.add_bool(w.paused);
   h.add_u64(static_cast<uint64_t>(w.outcome));
-  h.add_str(w.winner);
+  h.add_u64(w.winner.value);
   h.add_i64(w.outcome_tick);
   h.add_u64(w.next_projectile_serial);
+  h.add_u64(w.next_particle_owner);
   for (const Ship& s : w.ships) {
-    h.add_i64(s.id);
+    h.add_u64(s.id.value);
     h.add_bool(s.alive);
     h.add_vec(s.position);
     h.add_vec(s.velocity);
@@ -126,9 +129,9 @@ uint64_t hash_core(const World& w) {
     h.add_f64(s.shield);
     h.add_f64(s.energy);
     h.add_i64(s.last_hit_tick);
-    h.add_i64(s.last_attacker);
+    h.add_u64(s.last_attacker.value);
     h.add_i64(s.kills);
-    h.add_i64(s.target);
+    h.add_u64(s.target.value);
     h.add_u64(std::bit_cast<uint64_t>(std::array<int8_t, 8>{s.controls.pitch, s.controls.yaw, s.controls.roll,
                                                             s.controls.throttle, s.controls.strafe_x,
                                                             s.controls.strafe_y, 0, 0}));
@@ -138,11 +141,11 @@ uint64_t hash_core(const World& w) {
     h.add_f64(s.secondary_cooldown);
     h.add_u64(s.hardpoint_cycle);
     h.add_bool(s.beam_firing);
-    h.add_i64(s.beam_target);
+    h.add_u64(s.beam_target.value);
     for (double d : s.beam_hit_distance) h.add_f64(d);
     const AiState& ai = s.ai_state;
     h.add_u64(static_cast<uint64_t>(ai.mode));
-    h.add_i64(ai.target);
+    h.add_u64(ai.target.value);
     h.add_i64(ai.mode_until);
     h.add_i64(ai.next_think);
     h.add_vec(ai.aim_error);
@@ -151,8 +154,9 @@ uint64_t hash_core(const World& w) {
   for (const Projectile& p : w.projectiles) {
     h.add_u64(p.serial);
     h.add_u64(static_cast<uint64_t>(p.kind));
-    h.add_i64(p.owner);
-    h.add_i64(p.target);
+    h.add_u64(p.owner.value);
+    h.add_u64(p.target.value);
+    h.add_u64(p.particle_owner.value);
     h.add_vec(p.position);
     h.add_vec(p.velocity);
     h.add_i64(p.expire_tick);
@@ -218,21 +222,21 @@ std::string Game::state_dump() const {
   std::ostringstream o;
   o.precision(17);
   o << "tick " << w.tick << " steps " << w.steps << " paused " << w.paused << " outcome " << outcome_name(w.outcome)
-    << " winner " << (w.winner.empty() ? "-" : w.winner) << "\n";
+    << " winner " << (w.outcome == Outcome::Undecided ? "-" : w.team_name(w.winner)) << "\n";
   for (const Ship& s : w.ships) {
-    o << "ship " << s.id << " " << s.name << " team " << s.team << " class " << s.cls->name << " alive " << s.alive
+    o << "ship " << s.id.value << " " << s.name << " team " << w.team_name(s.team) << " class " << s.cls->name << " alive " << s.alive
       << " hull " << s.hull << " shield " << s.shield << " energy " << s.energy << " kills " << s.kills << "\n"
       << "  pos " << s.position.x << " " << s.position.y << " " << s.position.z << " vel " << s.velocity.x << " "
       << s.velocity.y << " " << s.velocity.z << "\n"
       << "  rot " << s.orientation.w << " " << s.orientation.x << " " << s.orientation.y << " " << s.orientation.z
       << " angvel " << s.angular_velocity.x << " " << s.angular_velocity.y << " " << s.angular_velocity.z << "\n"
       << "  controls p" << int(s.controls.pitch) << " y" << int(s.controls.yaw) << " r" << int(s.controls.roll) << " t"
-      << int(s.controls.throttle) << " b" << s.controls.buttons << " target " << s.target << " beam "
-      << s.beam_firing << "->" << s.beam_target << " secondary " << int(s.secondary) << " cooldown "
-      << s.secondary_cooldown << " ai mode " << int(s.ai_state.mode) << " target " << s.ai_state.target << "\n";
+      << int(s.controls.throttle) << " b" << s.controls.buttons << " target " << s.target.value << " beam "
+      << s.beam_firing << "->" << s.beam_target.value << " secondary " << int(s.secondary) << " cooldown "
+      << s.secondary_cooldown << " ai mode " << int(s.ai_state.mode) << " target " << s.ai_state.target.value << "\n";
   }
   for (const Projectile& p : w.projectiles)
-    o << "projectile " << p.serial << " kind " << int(p.kind) << " owner " << p.owner << " target " << p.target
+    o << "projectile " << p.serial << " kind " << int(p.kind) << " owner " << p.owner.value << " target " << p.target.value
       << " pos " << p.position.x << " " << p.position.y << " " << p.position.z << "\n";
   ParticleStats st = w.particles->stats();
   o << "particles " << st.live_particles << " clusters " << st.live_clusters << " refused " << st.refused_particles
@@ -248,7 +252,7 @@ std::string Game::summary_json() const {
   j["seconds"] = double(w.tick) * w.dt;
   j["outcome"] = outcome_name(w.outcome);
   if (w.outcome != Outcome::Undecided) {
-    j["winner"] = w.winner;
+    j["winner"] = w.team_name(w.winner);
     j["decided_tick"] = w.outcome_tick;
   } else {
     j["winner"] = nullptr;
@@ -257,7 +261,7 @@ std::string Game::summary_json() const {
   for (const Ship& s : w.ships) {
     nlohmann::ordered_json e;
     e["name"] = s.name;
-    e["team"] = s.team;
+    e["team"] = w.team_name(s.team);
     e["class"] = s.cls->name;
     e["player"] = s.player;
     e["alive"] = s.alive;

@@ -10,7 +10,7 @@ namespace arc {
 namespace {
 
 constexpr uint64_t kMagic = snapshot::magic("ARCSNAP1");
-constexpr uint32_t kVersion = 1;
+constexpr uint32_t kVersion = 2;  // 2: typed ids (ships, teams, model slots, particle owners) as their u32 values
 
 using snapshot::Reader;
 using snapshot::Writer;
@@ -43,10 +43,11 @@ void write_options(Writer& out, const World& w) {
 }
 
 void write_ship(Writer& out, const Ship& s, const World& w) {
-  out.i32(s.id);
+  out.u32(s.id.value);
   out.str(s.name);
   out.str(w.class_names.at(size_t(s.class_index)));
-  out.str(s.team);
+  out.u32(s.team.value);
+  out.u32(s.particle_owner.value);
   out.boolean(s.player);
   out.u8(uint8_t(s.ai));
   out.vec3(s.position);
@@ -62,9 +63,9 @@ void write_ship(Writer& out, const Ship& s, const World& w) {
   out.i64(s.last_hit_tick);
   out.i64(s.shield_flash_tick);
   out.i64(s.death_tick);
-  out.i32(s.last_attacker);
+  out.u32(s.last_attacker.value);
   out.i32(s.kills);
-  out.i32(s.target);
+  out.u32(s.target.value);
   write_input(out, s.controls);
   out.boolean(s.afterburner_on);
   out.u8(uint8_t(s.secondary));
@@ -75,7 +76,7 @@ void write_ship(Writer& out, const Ship& s, const World& w) {
   for (ClusterHandle h : s.beam_channels) write_handle(out, h);
   out.u32(uint32_t(s.beam_hit_distance.size()));
   for (double d : s.beam_hit_distance) out.f64(d);
-  out.i32(s.beam_target);
+  out.u32(s.beam_target.value);
   write_effect(out, s.shield_fx);
   out.u32(uint32_t(s.exhaust_fx.size()));
   for (const EffectHandle& e : s.exhaust_fx) write_effect(out, e);
@@ -85,7 +86,7 @@ void write_ship(Writer& out, const Ship& s, const World& w) {
   out.f64(s.shown_exhaust_intensity);
   const AiState& ai = s.ai_state;
   out.u8(uint8_t(ai.mode));
-  out.i32(ai.target);
+  out.u32(ai.target.value);
   out.i64(ai.mode_until);
   out.i64(ai.next_think);
   out.vec3(ai.aim_error);
@@ -122,12 +123,24 @@ E read_enum(Reader& in, E last, const char* what) {
   return static_cast<E>(v);
 }
 
-// A ship index (or −1 for none): everything that holds one indexes World::ships with it.
-int read_ship_ref(Reader& in, const World& w, const char* what) {
-  const int32_t v = in.i32();
-  if (v < -1 || v >= int32_t(w.ships.size()))
-    in.fail(std::string(what) + " " + std::to_string(v) + " is not a ship (−1 or 0.." + std::to_string(int(w.ships.size()) - 1) + ")");
-  return v;
+// An id into a table of `count` entries, or null: whatever holds one indexes that table with it.
+template <typename IdType>
+IdType read_ref(Reader& in, size_t count, const char* what, const char* table) {
+  const uint32_t v = in.u32();
+  if (v > count)
+    in.fail(std::string(what) + " " + std::to_string(v) + " is not one of the " + std::to_string(count) + " " + table + " (0 for none)");
+  return IdType{v};
+}
+
+ShipId read_ship_ref(Reader& in, const World& w, const char* what) { return read_ref<ShipId>(in, w.ships.size(), what, "ships"); }
+TeamId read_team_ref(Reader& in, const World& w, const char* what) { return read_ref<TeamId>(in, w.team_names.size(), what, "teams"); }
+
+// A particle owner the world has handed out (allocate_owner).
+OwnerId read_owner(Reader& in, const World& w, const std::string& what) {
+  const uint32_t v = in.u32();
+  if (v == 0 || v >= w.next_particle_owner)
+    in.fail(what + " particle owner " + std::to_string(v) + " was never allocated (1.." + std::to_string(w.next_particle_owner - 1) + ")");
+  return OwnerId{v};
 }
 
 GameOptions read_options(Reader& in, GameOptions o, std::string& level_name, int& tick_rate) {
@@ -149,14 +162,16 @@ GameOptions read_options(Reader& in, GameOptions o, std::string& level_name, int
 }
 
 void read_ship(Reader& in, Ship& s, const World& w) {
-  const std::string at = "ship " + std::to_string(s.id) + " (" + s.name + "): ";
-  const int32_t id = in.i32();
+  const std::string at = "ship " + std::to_string(s.id.value) + " (" + s.name + "): ";
+  const uint32_t id = in.u32();
   const std::string name = in.str();
   const std::string cls = in.str();
-  if (id != s.id || name != s.name || cls != s.cls->name)
+  if (id != s.id.value || name != s.name || cls != s.cls->name)
     in.fail("ship " + std::to_string(id) + " is '" + name + "' of class " + cls + " in the snapshot, '" + s.name + "' of class " +
             s.cls->name + " in level " + w.level.name);
-  s.team = in.str();
+  s.team = read_team_ref(in, w, "team");
+  if (!s.team) in.fail(at + "has no team");
+  s.particle_owner = read_owner(in, w, at);
   s.player = in.boolean();
   s.ai = read_enum(in, AiKind::Gunner, "AI kind");
   s.position = in.vec3();
@@ -218,10 +233,11 @@ std::vector<uint8_t> save_world(const World& w) {
   out.i64(w.tick);
   out.u64(w.steps);
   out.u32(w.next_projectile_serial);
+  out.u32(w.next_particle_owner);
   out.boolean(w.paused);
-  out.i32(w.player);
+  out.u32(w.player.value);
   out.u8(uint8_t(w.outcome));
-  out.str(w.winner);
+  out.u32(w.winner.value);
   out.i64(w.outcome_tick);
   out.u8(uint8_t(w.camera_mode));
   out.vec3(w.camera.position);
@@ -234,8 +250,9 @@ std::vector<uint8_t> save_world(const World& w) {
   for (const Projectile& p : w.projectiles) {
     out.u32(p.serial);
     out.u8(uint8_t(p.kind));
-    out.i32(p.owner);
-    out.i32(p.target);
+    out.u32(p.owner.value);
+    out.u32(p.target.value);
+    out.u32(p.particle_owner.value);
     out.vec3(p.position);
     out.vec3(p.velocity);
     out.vec3(p.prev_position);
@@ -247,7 +264,7 @@ std::vector<uint8_t> save_world(const World& w) {
   }
   out.u32(uint32_t(w.props.size()));
   for (const Prop& p : w.props) {
-    out.i32(p.model);
+    out.u32(p.model.value);
     out.str(p.label);
     out.vec3(p.position);
     out.quat(p.orientation);
@@ -285,10 +302,12 @@ void load_world(World& w, const std::vector<uint8_t>& bytes) {
   w.tick = in.i64();
   w.steps = in.u64();
   w.next_projectile_serial = in.u32();
+  w.next_particle_owner = in.u32();
+  if (w.next_particle_owner == 0) in.fail("next particle owner is 0 (owners start at 1)");
   w.paused = in.boolean();
   w.player = read_ship_ref(in, w, "player");
   w.outcome = read_enum(in, Outcome::TeamWon, "outcome");
-  w.winner = in.str();
+  w.winner = read_team_ref(in, w, "winner");
   w.outcome_tick = in.i64();
   w.camera_mode = read_enum(in, CameraMode::Fixed, "camera mode");
   w.camera.position = in.vec3();
@@ -304,8 +323,9 @@ void load_world(World& w, const std::vector<uint8_t>& bytes) {
     p.serial = in.u32();
     p.kind = read_enum(in, SecondaryWeapon::Plasma, "projectile kind");
     p.owner = read_ship_ref(in, w, "projectile owner");
-    if (p.owner < 0) in.fail("projectile " + std::to_string(p.serial) + " has no owner");
+    if (!p.owner) in.fail("projectile " + std::to_string(p.serial) + " has no owner");
     p.target = read_ship_ref(in, w, "projectile target");
+    p.particle_owner = read_owner(in, w, "projectile " + std::to_string(p.serial));
     p.position = in.vec3();
     p.velocity = in.vec3();
     p.prev_position = in.vec3();
@@ -319,10 +339,7 @@ void load_world(World& w, const std::vector<uint8_t>& bytes) {
   if (props != w.props.size())
     in.fail(std::to_string(props) + " props, level '" + w.level.name + "' has " + std::to_string(w.props.size()));
   for (Prop& p : w.props) {
-    const int32_t model = in.i32();
-    if (model < -1 || model >= int32_t(w.model_paths.size()))
-      in.fail("prop model " + std::to_string(model) + " is not one of the level's " + std::to_string(w.model_paths.size()) + " models");
-    p.model = model;
+    p.model = read_ref<ModelSlot>(in, w.model_paths.size(), "prop model", "level's models");
     p.label = in.str();
     p.position = in.vec3();
     p.orientation = in.quat();
