@@ -28,7 +28,8 @@
 // dump_fields (text), and for the tests visited_field_count, aggregate_field_count and
 // hash_slots. Leaf types with an encoding of their own provide, found by argument-dependent
 // lookup, hash_leaf(Hasher&, const T&), write_leaf(snapshot::Writer&, const T&) and
-// dump_leaf(std::ostream&, const T&); the reader's context reads them back.
+// dump_leaf(std::ostream&, const T&); the reader's context reads them back. Typed ids
+// (core/typed_id.h) have theirs below: their uint32_t value.
 #pragma once
 #include <concepts>
 #include <cstddef>
@@ -42,6 +43,27 @@
 #include <glm/vec3.hpp>
 
 #include "core/snapshot_io.h"
+#include "core/typed_id.h"
+
+namespace arc {
+
+// Typed ids (core/typed_id.h) are leaves: hashed, saved and dumped as their uint32_t value (0 for
+// null). Found by argument-dependent lookup; a snapshot reader's context reads them back (and
+// checks what they refer to).
+template <class Hasher, class Tag>
+void hash_leaf(Hasher& h, const Id<Tag>& id) {
+  h.add_u64(id.value);
+}
+template <class Tag>
+void write_leaf(snapshot::Writer& out, const Id<Tag>& id) {
+  out.u32(id.value);
+}
+template <class Tag>
+void dump_leaf(std::ostream& o, const Id<Tag>& id) {
+  o << id.value;
+}
+
+}  // namespace arc
 
 namespace arc::fields {
 

@@ -95,8 +95,8 @@ int MeshPass::draw(const RenderView& v, const Program& mesh, const glm::mat4& vi
   glUniform1i(mesh.loc("u_base_tex"), 0);
   glUniform1i(mesh.loc("u_emissive_tex"), 1);
   for (const MeshInstance& inst : v.meshes) {
-    if (inst.model < 0 || inst.model >= int(models_.size())) continue;
-    const GpuModel& g = models_[size_t(inst.model)];
+    if (!inst.model || inst.model.index() >= models_.size()) continue;
+    const GpuModel& g = models_[inst.model.index()];
     // Camera-relative: the translation is subtracted in double before the matrix goes to float.
     glm::dvec3 rel = inst.position - v.camera.position;
     glm::dmat3 rot = glm::mat3_cast(inst.orientation) * inst.scale;

@@ -31,7 +31,7 @@ class MeshPass {
   MeshPass(const MeshPass&) = delete;
   MeshPass& operator=(const MeshPass&) = delete;
 
-  // Returns the index MeshInstance::model refers to.
+  // Returns the model's position in the table (MeshInstance::model.index()).
   int add_model(const ModelData& model, RenderSettings::Filter filter);
   void set_texture_filter(RenderSettings::Filter filter);  // for every model texture
   // Draws into the bound framebuffer; instances of unknown models are skipped. Returns the

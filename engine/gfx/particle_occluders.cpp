@@ -76,13 +76,13 @@ void OccluderSet::gather(const RenderView& v, const ModelCoverBoxes& model_boxes
   const float mx = tan_x * 1.01f, my = tan_y * 1.01f;
   bounds_ = Occluder::none();
   for (const MeshInstance& inst : v.meshes) {
-    if (inst.model < 0 || inst.model >= int(model_boxes.size())) continue;
+    if (!inst.model || inst.model.index() >= model_boxes.size()) continue;
     // The same camera-relative transform the mesh pass uses, taken in double before float.
     const glm::dvec3 rel = inst.position - v.camera.position;
     const glm::dmat3 rot = glm::mat3_cast(inst.orientation) * inst.scale;
     OccluderGroup group{Occluder::none(), occluders_.size(), 0};
     Occluder o;
-    for (const Box3& part : model_boxes[size_t(inst.model)]) {
+    for (const Box3& part : model_boxes[inst.model.index()]) {
       if (!project_box(part, rel, rot, to_view, near, mx, my, o)) continue;
       occluders_.push_back(o);
       group.bound.include(o);

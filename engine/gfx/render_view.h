@@ -8,7 +8,7 @@
 //   RenderView view;
 //   view.camera.position = {0.0, 2.0, 30.0};
 //   view.camera.fov_y_radians = 1.0;
-//   view.meshes.push_back({.model = 0, .position = {0.0, 0.0, 0.0}});  // the first Renderer::add_model()
+//   view.meshes.push_back({.model = ship, .position = {0.0, 0.0, 0.0}});  // ship: from Renderer::add_model()
 //   ParticleInstance spark{};
 //   spark.pos[2] = -30.0f;                   // relative to the camera: 30 units ahead
 //   spark.size = 0.5f;
@@ -24,6 +24,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "core/typed_id.h"
 #include "particles/render_output.h"
 
 namespace arc {
@@ -36,8 +37,12 @@ struct CameraView {
   double far_plane = 1.0e7;  // ignored when the infinite far plane is on
 };
 
+// A model in a renderer's model table, as Renderer::add_model returned it (null: none).
+struct ModelTag;
+using ModelId = Id<ModelTag>;
+
 struct MeshInstance {
-  int model = -1;  // index in the renderer's model table (returned by Renderer::add_model)
+  ModelId model{};  // instances of a null or unknown model are not drawn
   glm::dvec3 position{0.0};
   glm::dquat orientation{1, 0, 0, 0};
   double scale = 1.0;

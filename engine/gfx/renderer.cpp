@@ -90,7 +90,9 @@ Renderer::~Renderer() = default;
 std::string Renderer::gl_version() const { return impl_->version; }
 bool Renderer::has_clip_control() const { return impl_->clip_control; }
 
-int Renderer::add_model(const ModelData& model) { return impl_->meshes.add_model(model, impl_->rs.filter); }
+ModelId Renderer::add_model(const ModelData& model) {
+  return ModelId::from_index(size_t(impl_->meshes.add_model(model, impl_->rs.filter)));
+}
 
 void Renderer::set_sprites(const std::vector<Image>& sprites) { impl_->particles.set_sprites(sprites, impl_->rs.filter); }
 

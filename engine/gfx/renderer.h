@@ -11,7 +11,7 @@
 //
 // Example, compiled as RendererExample.DrawsAView in tests/unit/gfx/test_examples.cpp:
 //   Renderer renderer({.offscreen = true});
-//   int ship = renderer.add_model(load_model(ARCFIRE_SOURCE_DIR "/assets/models/viper.glb"));
+//   ModelId ship = renderer.add_model(load_model(ARCFIRE_SOURCE_DIR "/assets/models/viper.glb"));
 //   RenderView view;
 //   view.meshes.push_back({ship, {0, 0, -20}});
 //   renderer.set_sprites({load_sprite(ARCFIRE_SOURCE_DIR "/assets/textures/sprite_smoke.png")});
@@ -71,7 +71,7 @@ class Renderer {
   std::string gl_version() const;
   bool has_clip_control() const;
 
-  int add_model(const ModelData& model);  // returns the index MeshInstance::model refers to
+  ModelId add_model(const ModelData& model);  // the id MeshInstance::model refers to
   void set_sprites(const std::vector<Image>& premultiplied_sprites);  // layers of one array texture
   void apply_settings(const Settings& settings);  // render.* keys
   void set_render_settings(const RenderSettings& s);

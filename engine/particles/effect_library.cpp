@@ -279,28 +279,42 @@ void EffectLibrary::load_directory(const std::string& dir) {
 
 void EffectLibrary::load_file(const std::string& path) {
   auto doc = JsonDoc::load_file(path);
-  effects_[std::filesystem::path(path).stem().string()] = parse_effect(doc, std::filesystem::path(path).stem().string());
+  put(parse_effect(doc, std::filesystem::path(path).stem().string()));
 }
 
 void EffectLibrary::load_text(const std::string& text, const std::string& path) {
   auto doc = JsonDoc::parse(text, path);
-  effects_[std::filesystem::path(path).stem().string()] = parse_effect(doc, std::filesystem::path(path).stem().string());
+  put(parse_effect(doc, std::filesystem::path(path).stem().string()));
 }
 
-bool EffectLibrary::has(const std::string& name) const { return effects_.count(name) != 0; }
+void EffectLibrary::put(std::shared_ptr<const EffectDef> def) {
+  auto [it, added] = ids_.emplace(def->name, EffectId::from_index(effects_.size()));
+  if (added) effects_.push_back(std::move(def));
+  else effects_[it->second.index()] = std::move(def);
+}
 
-const EffectDef& EffectLibrary::get(const std::string& name) const {
-  auto it = effects_.find(name);
-  if (it == effects_.end()) {
+bool EffectLibrary::has(const std::string& name) const { return ids_.count(name) != 0; }
+
+EffectId EffectLibrary::id(const std::string& name) const {
+  auto it = ids_.find(name);
+  if (it == ids_.end()) {
     std::vector<std::string> n = names();
     throw InputError("unknown effect '" + name + "'; known: " + (n.empty() ? std::string("none") : join_allowed(n)));
   }
-  return *it->second;
+  return it->second;
+}
+
+const EffectDef& EffectLibrary::get(const std::string& name) const { return get(id(name)); }
+
+const EffectDef& EffectLibrary::get(EffectId id) const {
+  if (!id || id.index() >= effects_.size())
+    throw InputError("effect id " + std::to_string(id.value) + " is not one of the library's " + std::to_string(effects_.size()) + " effects");
+  return *effects_[id.index()];
 }
 
 std::vector<std::string> EffectLibrary::names() const {
   std::vector<std::string> out;
-  for (const auto& [n, d] : effects_) out.push_back(n);
+  for (const auto& [n, id] : ids_) out.push_back(n);
   return out;
 }
 

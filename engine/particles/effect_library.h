@@ -4,12 +4,14 @@
 // every key. Loading checks everything (unknown keys, wrong types, ranges, NaN and infinity are
 // not JSON, zero-length lightning seeds, unknown sprites) and throws InputError with
 // `path:line:col: message`. A library is immutable once the game starts: ParticleWorld keeps
-// pointers to its definitions.
+// pointers to its definitions. Each effect has an EffectId from its first load (a reloaded
+// file keeps its id), so the game resolves its names once and spawns by id.
 //
 // Example, compiled as EffectLibraryExample.LoadsTheGameEffects in tests/unit/particles/test_examples.cpp:
 //   EffectLibrary fx;
 //   fx.load_directory("assets/effects");
 //   const EffectDef& boom = fx.get("ship_explosion");
+//   const EffectId explosion = fx.id("ship_explosion");   // fx.get(explosion) is the same definition
 #pragma once
 #include <map>
 #include <memory>
@@ -17,6 +19,7 @@
 #include <vector>
 
 #include "particles/effect_def.h"
+#include "particles/particle_ids.h"
 
 namespace arc {
 
@@ -31,11 +34,17 @@ class EffectLibrary {
 
   bool has(const std::string& name) const;
   // InputError naming the known effects when the name is unknown.
+  EffectId id(const std::string& name) const;
   const EffectDef& get(const std::string& name) const;
+  // InputError when the id is not one of this library's.
+  const EffectDef& get(EffectId id) const;
   std::vector<std::string> names() const;
 
  private:
-  std::map<std::string, std::shared_ptr<const EffectDef>> effects_;
+  void put(std::shared_ptr<const EffectDef> def);
+
+  std::map<std::string, EffectId> ids_;                   // by name
+  std::vector<std::shared_ptr<const EffectDef>> effects_;  // by id, in order of first load
 };
 
 }  // namespace arc

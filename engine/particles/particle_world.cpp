@@ -56,8 +56,8 @@ struct ParticleWorld::Impl : ParticleWorldState {
   Pose drawn_frame(const Cluster& c, std::span<const DrawnOwner> drawn) const {
     if (c.owner == 0 || !moves_with_frame(c)) return frame(c);
     auto it = std::lower_bound(drawn.begin(), drawn.end(), c.owner,
-                               [](const DrawnOwner& d, uint32_t owner) { return d.owner < owner; });
-    if (it == drawn.end() || it->owner != c.owner) return frame(c);
+                               [](const DrawnOwner& d, uint32_t owner) { return d.owner.value < owner; });
+    if (it == drawn.end() || it->owner.value != c.owner) return frame(c);
     return {it->position + it->orientation * c.local_position, it->orientation * c.local_orientation};
   }
 
@@ -96,7 +96,7 @@ struct ParticleWorld::Impl : ParticleWorldState {
     c.def_index = index;
     c.def = &d;
     c.spawn_tick = tick + 1;
-    c.owner = p.owner;
+    c.owner = p.owner.value;
     c.local_position = p.position;
     c.local_orientation = p.orientation;
     c.spawn_velocity = p.velocity;
@@ -311,6 +311,11 @@ ParticleWorld& ParticleWorld::operator=(const ParticleWorld& o) {
 
 EffectHandle ParticleWorld::spawn(const std::string& effect, const SpawnParams& params) {
   if (!impl_->effects) throw InputError("unknown effect '" + effect + "': no effect library");
+  return spawn(impl_->effects->id(effect), params);
+}
+
+EffectHandle ParticleWorld::spawn(EffectId effect, const SpawnParams& params) {
+  if (!impl_->effects) throw InputError("effect id " + std::to_string(effect.value) + ": no effect library");
   const EffectDef& def = impl_->effects->get(effect);
   EffectHandle out;
   for (uint32_t i = 0; i < def.clusters.size(); ++i) {
@@ -323,9 +328,15 @@ EffectHandle ParticleWorld::spawn(const std::string& effect, const SpawnParams& 
   return out;
 }
 
-ClusterHandle ParticleWorld::spawn_lightning(const std::string& effect, uint32_t owner, const glm::dvec3& local_origin,
+ClusterHandle ParticleWorld::spawn_lightning(const std::string& effect, OwnerId owner, const glm::dvec3& local_origin,
                                              const glm::dvec3& local_direction) {
   if (!impl_->effects) throw InputError("unknown effect '" + effect + "': no effect library");
+  return spawn_lightning(impl_->effects->id(effect), owner, local_origin, local_direction);
+}
+
+ClusterHandle ParticleWorld::spawn_lightning(EffectId effect, OwnerId owner, const glm::dvec3& local_origin,
+                                             const glm::dvec3& local_direction) {
+  if (!impl_->effects) throw InputError("effect id " + std::to_string(effect.value) + ": no effect library");
   const EffectDef& def = impl_->effects->get(effect);
   for (uint32_t i = 0; i < def.clusters.size(); ++i) {
     if (def.clusters[i].animation != AnimationType::Lightning) continue;
@@ -342,7 +353,7 @@ ClusterHandle ParticleWorld::spawn_lightning(const std::string& effect, uint32_t
     impl_->rebuild_lightning(c, c.spawn_tick);
     return hnd;
   }
-  throw InputError(def.path + ": effect '" + effect + "' has no lightning cluster (animation type \"lightning\")");
+  throw InputError(def.path + ": effect '" + def.name + "' has no lightning cluster (animation type \"lightning\")");
 }
 
 void ParticleWorld::destroy(ClusterHandle cluster) {
@@ -353,17 +364,17 @@ void ParticleWorld::destroy(const EffectHandle& effect) {
   for (ClusterHandle c : effect.clusters) destroy(c);
 }
 
-void ParticleWorld::destroy_owner(uint32_t owner) {
-  if (owner == 0) return;
+void ParticleWorld::destroy_owner(OwnerId owner) {
+  if (!owner) return;
   for (Cluster& c : impl_->slots)
-    if (c.alive && c.owner == owner) impl_->release(c);
-  impl_->owners.erase(owner);
+    if (c.alive && c.owner == owner.value) impl_->release(c);
+  impl_->owners.erase(owner.value);
 }
 
-void ParticleWorld::release_owner(uint32_t owner) {
-  if (owner == 0) return;
+void ParticleWorld::release_owner(OwnerId owner) {
+  if (!owner) return;
   for (Cluster& c : impl_->slots) {
-    if (!c.alive || c.owner != owner) continue;
+    if (!c.alive || c.owner != owner.value) continue;
     if (moves_with_frame(c)) {
       impl_->release(c);  // it would have nothing left to move with
       continue;
@@ -372,13 +383,13 @@ void ParticleWorld::release_owner(uint32_t owner) {
     c.emitting = false;
     c.owner = 0;
   }
-  impl_->owners.erase(owner);
+  impl_->owners.erase(owner.value);
 }
 
 bool ParticleWorld::alive(ClusterHandle cluster) const { return impl_->find(cluster) != nullptr; }
 
-void ParticleWorld::set_owner_transform(uint32_t owner, const OwnerTransform& t) {
-  if (owner != 0) impl_->owners[owner] = t;
+void ParticleWorld::set_owner_transform(OwnerId owner, const OwnerTransform& t) {
+  if (owner) impl_->owners[owner.value] = t;
 }
 
 void ParticleWorld::stop_emitting(ClusterHandle cluster) {

@@ -3,9 +3,10 @@
 // Particles live in structure-of-arrays pools and belong to clusters (Hadwiger 2000 §4.3). A
 // cluster shares centre, radius, animation and owner; clusters are named by typed handles
 // {index, generation}, zero is null. Effects (assets/effects/*.json) are composites of
-// emitters and clusters; the game spawns them by name and may attach them to an owner (a
-// ship): an owner's transform moves and turns its clusters, and destroying the owner destroys
-// them in the same tick.
+// emitters and clusters; the game spawns them by EffectId (resolved once from the name by the
+// EffectLibrary) and may attach them to an OwnerId it allocates (a ship, a missile): an owner's
+// transform moves and turns its clusters, and destroying the owner destroys them in the same
+// tick. Ids are typed (particles/particle_ids.h), so an owner cannot be passed as an effect.
 //
 // Randomness is keyed by (seed, cluster id, tick, particle index), so results do not depend on
 // update order, and clusters far from the camera may skip ticks and catch up exactly.
@@ -14,8 +15,9 @@
 //   EffectLibrary fx;
 //   fx.load_directory("assets/effects");
 //   ParticleWorld world(ParticleConfig{.seed = level_seed}, &fx);
-//   EffectHandle boom = world.spawn("ship_explosion", SpawnParams{.position = where});
-//   ClusterHandle beam = world.spawn_lightning("lightning_beam", ship_owner, mount, forward);
+//   const EffectId explosion = fx.id("ship_explosion");   // once, at load
+//   EffectHandle boom = world.spawn(explosion, SpawnParams{.position = where});
+//   ClusterHandle beam = world.spawn_lightning(fx.id("lightning_beam"), ship_owner, mount, forward);
 //   world.set_owner_transform(ship_owner, OwnerTransform{ship_position, ship_rotation, ship_velocity});
 //   world.step(tick, camera);
 //   world.collect(camera, particles, drawn_owners);
@@ -28,6 +30,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>
 
+#include "particles/particle_ids.h"
 #include "particles/render_output.h"
 
 namespace arc {
@@ -61,7 +64,7 @@ struct SpawnParams {
   glm::dvec3 position{0.0};              // world, or owner-local when owner != 0
   glm::dquat orientation{1, 0, 0, 0};    // emitter frame (cone axis is local −Z, "forward")
   glm::dvec3 velocity{0.0};              // inherited by emitted particles
-  uint32_t owner = 0;                    // 0 = free-floating; otherwise attached to that owner
+  OwnerId owner{};                       // null = free-floating; otherwise attached to that owner
   double scale = 1.0;                    // scales sizes, radii, speeds
   double intensity = 1.0;                // scales alpha and spawn counts
   int priority = 1;                      // 0 = cosmetic (refused first when the budget is full)
@@ -85,7 +88,7 @@ struct ParticleStats {
 // Where an owner is drawn this frame: the renderer interpolates meshes between the last two
 // ticks, so collect() can be told the same in-between pose for the owners it draws.
 struct DrawnOwner {
-  uint32_t owner = 0;
+  OwnerId owner{};
   glm::dvec3 position{0.0};
   glm::dquat orientation{1, 0, 0, 0};
 };
@@ -107,21 +110,26 @@ class ParticleWorld {
   ParticleWorld(const ParticleWorld&);             // deep copy (serialization test)
   ParticleWorld& operator=(const ParticleWorld&);
 
-  // Spawns every emitter and cluster of a named effect (InputError if the name is unknown).
+  // Spawns every emitter and cluster of an effect of this world's library (InputError if the
+  // id is not one of its effects). The by-name overloads look the name up on every call (tests,
+  // tools); the game resolves its names to EffectIds once.
+  EffectHandle spawn(EffectId effect, const SpawnParams& params);
   EffectHandle spawn(const std::string& effect, const SpawnParams& params);
   // A lightning channel (Hadwiger §5.2) from an owner-local origin along an owner-local direction.
-  ClusterHandle spawn_lightning(const std::string& effect, uint32_t owner, const glm::dvec3& local_origin,
+  ClusterHandle spawn_lightning(EffectId effect, OwnerId owner, const glm::dvec3& local_origin,
+                                const glm::dvec3& local_direction);
+  ClusterHandle spawn_lightning(const std::string& effect, OwnerId owner, const glm::dvec3& local_origin,
                                 const glm::dvec3& local_direction);
   void destroy(ClusterHandle cluster);
   void destroy(const EffectHandle& effect);
-  void destroy_owner(uint32_t owner);  // every cluster attached to it, now
+  void destroy_owner(OwnerId owner);  // every cluster attached to it, now
   // The owner is gone but its trail may fade: clusters that move with it are destroyed, the
   // others stop emitting and are detached, and the owner's transform is forgotten.
-  void release_owner(uint32_t owner);
+  void release_owner(OwnerId owner);
   bool alive(ClusterHandle cluster) const;
 
   // Owners' transforms for this tick; call before step().
-  void set_owner_transform(uint32_t owner, const OwnerTransform& t);
+  void set_owner_transform(OwnerId owner, const OwnerTransform& t);
   // Stops emitters of a cluster (particles already out live on); the cluster dies when empty.
   void stop_emitting(ClusterHandle cluster);
   void set_intensity(ClusterHandle cluster, double intensity);  // e.g. shield brightness

@@ -14,6 +14,7 @@ struct FrameRenderer::Impl {
   FrameRendererDesc desc;
   std::unique_ptr<HeadlessContext> context;
   std::unique_ptr<Renderer> renderer;
+  std::vector<ModelId> models;  // the renderer's id of each of the level's model slots
   RenderView view;
 };
 
@@ -30,13 +31,13 @@ FrameRenderer::FrameRenderer(const FrameRendererDesc& desc, const Settings& sett
     throw PlatformError(std::string("renderer: ") + e.what());
   }
   impl_->renderer->apply_settings(settings);
-  load_scene_resources(*impl_->renderer, game.world(), desc.root_dir);
+  impl_->models = load_scene_resources(*impl_->renderer, game.world(), desc.root_dir);
 }
 
 FrameRenderer::~FrameRenderer() = default;
 
 Image FrameRenderer::render(const Game& game, double alpha) {
-  build_render_view(game.world(), alpha, CameraSettings{}, HudState{}, impl_->desc.width, impl_->desc.height,
+  build_render_view(game.world(), impl_->models, alpha, CameraSettings{}, HudState{}, impl_->desc.width, impl_->desc.height,
                     impl_->view);
   impl_->renderer->render(impl_->view, impl_->desc.width, impl_->desc.height);
   return impl_->renderer->read_pixels();

@@ -78,7 +78,7 @@ std::optional<std::string> expectation_failure(const Expectation& e, const World
       return "particle count is " + number(n);
     }
     case Expectation::Kind::Winner: {
-      std::string winner = w.outcome == Outcome::Undecided || w.winner.empty() ? "none" : w.winner;
+      const std::string winner = w.outcome == Outcome::Undecided ? "none" : w.team_name(w.winner);
       if (winner == e.team) return std::nullopt;
       return "winner is " + winner;
     }

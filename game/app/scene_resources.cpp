@@ -1,4 +1,4 @@
-// The models and sprites a level needs, loaded into a Renderer in the order its indices expect.
+// The models and sprites a level needs, loaded into a Renderer; the models' ids by slot.
 #include "game/app/scene_resources.h"
 
 #include <filesystem>
@@ -11,16 +11,18 @@
 
 namespace arc {
 
-void load_scene_resources(Renderer& renderer, const World& world, const std::string& root_dir) {
+std::vector<ModelId> load_scene_resources(Renderer& renderer, const World& world, const std::string& root_dir) {
   namespace fs = std::filesystem;
   auto resolve = [&](const std::string& p) {
     return fs::path(p).is_absolute() ? p : (fs::path(root_dir) / p).string();
   };
-  for (const std::string& path : world.model_paths) renderer.add_model(load_model(resolve(path)));
+  std::vector<ModelId> models;
+  for (const std::string& path : world.model_paths) models.push_back(renderer.add_model(load_model(resolve(path))));
   std::vector<Image> sprites;
   for (std::string_view name : kSpriteNames)
     sprites.push_back(load_sprite(resolve("assets/textures/sprite_" + std::string(name) + ".png")));
   renderer.set_sprites(sprites);
+  return models;
 }
 
 }  // namespace arc

@@ -96,6 +96,7 @@ class WindowSession {
   GameOptions game_options_;  // the pause menu's difficulty changes it for the next restart
   std::unique_ptr<Window> window_;
   std::unique_ptr<Renderer> renderer_;
+  std::vector<ModelId> models_;  // the renderer's id of each of the level's model slots
   std::unique_ptr<Game> game_;
   std::unique_ptr<SessionRecorder> recorder_;
   std::optional<LiveInput> input_;
@@ -134,7 +135,7 @@ void WindowSession::setup() {
   wd.title = "Arcfire — " + std::filesystem::path(options_.level).stem().string();
   window_ = open_window(wd);
   renderer_ = make_renderer();
-  load_scene_resources(*renderer_, game_->world(), game_options_.root_dir);
+  models_ = load_scene_resources(*renderer_, game_->world(), game_options_.root_dir);
   if (!options_.record_path.empty())
     recorder_ = std::make_unique<SessionRecorder>(options_.record_path, options_.level, *game_);
   clock_.emplace(int(std::lround(1.0 / game_->tick_seconds())));
@@ -162,9 +163,9 @@ void WindowSession::start_game(std::unique_ptr<Game> fresh) {
   const World& w = game_->world();
   FlightScale scale;
   scale.tick_seconds = w.dt;
-  if (w.player >= 0) {
-    scale.pitch_rate_degrees = w.ships[size_t(w.player)].cls->turn_rate[0];
-    scale.yaw_rate_degrees = w.ships[size_t(w.player)].cls->turn_rate[1];
+  if (w.player) {
+    scale.pitch_rate_degrees = w.ship(w.player).cls->turn_rate[0];
+    scale.yaw_rate_degrees = w.ship(w.player).cls->turn_rate[1];
   }
   input_->set_flight_scale(scale);
 }
@@ -252,9 +253,9 @@ void WindowSession::reload_changed_files() {
       try {
         auto fresh = std::make_unique<Game>(Game::load_level(options_.level, game_options_));
         if (fresh->world().model_paths != game_->world().model_paths) {
-          // Model indices are positions in the level's model list: reload them all.
+          // Model slots are positions in the level's model list: reload them all.
           renderer_ = make_renderer();
-          load_scene_resources(*renderer_, fresh->world(), game_options_.root_dir);
+          models_ = load_scene_resources(*renderer_, fresh->world(), game_options_.root_dir);
         }
         end_recording("reload of changed files");
         start_game(std::move(fresh));
@@ -305,7 +306,7 @@ void WindowSession::draw() {
   hud_.reticle = {r.shown && !w.paused, r.x, r.y, r.radius, r.deadzone};
   const int width = window_->framebuffer_width(), height = window_->framebuffer_height();
   if (width > 0 && height > 0) {
-    build_render_view(w, clock_->alpha(), CameraSettings{}, hud_, width, height, view_);
+    build_render_view(w, models_, clock_->alpha(), CameraSettings{}, hud_, width, height, view_);
     renderer_->render(view_, width, height);
     if (want_screenshot_) {
       // Read the frame just drawn, before the swap leaves the back buffer undefined.

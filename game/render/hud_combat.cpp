@@ -95,14 +95,14 @@ void damage_directions(const World& w, const Ship& me, const Projector& pr, cons
                        double canvas_w, double canvas_h, HudLayer& h) {
   std::vector<double> strength(w.ships.size(), 0.0);  // per attacking ship
   const double since_hit = seconds_since(w, me.last_hit_tick);
-  if (me.last_attacker >= 0 && me.last_attacker != me.id && since_hit < rules.damage_seconds)
-    strength[size_t(me.last_attacker)] = 1.0 - since_hit / rules.damage_seconds;
+  if (me.last_attacker && me.last_attacker != me.id && since_hit < rules.damage_seconds)
+    strength[me.last_attacker.index()] = 1.0 - since_hit / rules.damage_seconds;
   for (const Ship& s : w.ships)
-    if (s.alive && s.beam_firing && s.beam_target == me.id && w.hostile(me, s)) strength[size_t(s.id)] = 1.0;
+    if (s.alive && s.beam_firing && s.beam_target == me.id && w.hostile(me, s)) strength[s.id.index()] = 1.0;
   const glm::dvec2 c(pr.cx, pr.cy);
   for (const Ship& s : w.ships) {
     glm::dvec2 dir;
-    const double k = strength[size_t(s.id)];
+    const double k = strength[s.id.index()];
     const glm::dvec3 at = drawn_position(s, alpha);
     if (k <= 0.0 || !screen_direction(pr, at, dir)) continue;
     // An attacker in view has its own marks; the ring points to the ones out of view.
@@ -166,9 +166,9 @@ void layout_kill_feed(const World& w, const Ship* me, const HudRules& rules, dou
   });
   if (dead.size() > size_t(std::max(rules.kill_feed_lines, 0))) dead.resize(size_t(std::max(rules.kill_feed_lines, 0)));
   for (const Ship* s : dead) {
-    const int killer = s->last_attacker;
-    const std::string line_text = killer >= 0 && killer != s->id
-                                      ? w.ships[size_t(killer)].name + " destroyed " + s->name
+    const ShipId killer = s->last_attacker;
+    const std::string line_text = killer && killer != s->id
+                                      ? w.ship(killer).name + " destroyed " + s->name
                                       : s->name + " destroyed";
     const glm::vec4 col = !me ? kHudWhite : w.hostile(*me, *s) ? kHudGreen : kHudRed;
     const double left = rules.kill_feed_seconds - seconds_since(w, s->death_tick);

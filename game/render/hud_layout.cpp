@@ -27,7 +27,7 @@ constexpr double kGlyphAdvance = 7.0;  // pixels per character at text scale 1 (
 std::string outcome_text(const World& w) {
   return w.outcome == Outcome::Victory  ? "VICTORY"
          : w.outcome == Outcome::Defeat ? "DEFEAT"
-                                        : "TEAM " + w.winner + " WINS";
+                                        : "TEAM " + w.team_name(w.winner) + " WINS";
 }
 
 void centred_text(HudLayer& h, double cx, double y, double scale, const glm::vec4& c, const std::string& s) {
@@ -40,7 +40,7 @@ void hud_outcome(const World& w, int width, int height, HudLayer& h) {
   const double k = height_scale(height);
   const glm::vec4 c = w.outcome == Outcome::Defeat ? kHudRed : kHudGreen;
   centred_text(h, width * 0.5, height * 0.3 - (w.paused ? 70 * k : 0.0), text_scale(3.0, height), c, outcome_text(w));
-  if (w.paused || w.player < 0) return;
+  if (w.paused || !w.player) return;
   const std::string hint = "Esc: menu (retry, difficulty, quit)";
   centred_text(h, width * 0.5, height * 0.3 + 48 * k, text_scale(1.2, height), kHudWhite, hint);
 }
@@ -147,8 +147,8 @@ glm::dvec2 offscreen_arrow_tip(glm::dvec2 dir, int width, int height) {
 
 void hud_target(const World& w, const Ship& me, const Projector& pr, int width, int height, double alpha,
                 HudLayer& h) {
-  if (me.target < 0 || !w.ships[me.target].alive) return;
-  const Ship& t = w.ships[me.target];
+  if (!me.target || !w.ship(me.target).alive) return;
+  const Ship& t = w.ship(me.target);
   const glm::dvec3 tp = lerp_pos(t.prev_position, t.position, alpha);
   const glm::vec4 col = w.hostile(me, t) ? kHudRed : kHudBlue;
   glm::dvec2 px;
@@ -247,11 +247,11 @@ void layout_hud(const World& w, const CameraView& cam, const HudState& state, do
     const Projector pr = Projector::of(cam, width, height);
     text(h, 24, 16, 1.2, kHudWhite, w.level.objective);
     labels(w, pr, width, height, h);
-    const int focus = w.focus_ship();
-    const bool flying = focus >= 0 && w.ships[focus].alive && w.camera_mode != CameraMode::Fixed;
-    layout_kill_feed(w, flying ? &w.ships[focus] : nullptr, state.rules, 24, 44, h);
+    const ShipId focus = w.focus_ship();
+    const bool flying = focus && w.ship(focus).alive && w.camera_mode != CameraMode::Fixed;
+    layout_kill_feed(w, flying ? &w.ship(focus) : nullptr, state.rules, 24, 44, h);
     if (flying) {
-      const Ship& me = w.ships[focus];
+      const Ship& me = w.ship(focus);
       layout_combat_cues(w, me, pr, state.rules, alpha, width, height, h);
       hud_own(w, me, pr, width, height, alpha, h);
       hud_target(w, me, pr, width, height, alpha, h);

@@ -80,11 +80,11 @@ bool tame_beam(ParticleInstance& p, const Projector& pr, double height, double h
 
 }  // namespace
 
-void keep_own_effects_out_of_view(const World& w, int ship, bool cockpit, const CameraView& camera, double alpha,
+void keep_own_effects_out_of_view(const World& w, ShipId ship, bool cockpit, const CameraView& camera, double alpha,
                                   int width, int height, const OwnViewRules& rules,
                                   std::vector<ParticleInstance>& particles) {
-  if (ship < 0 || size_t(ship) >= w.ships.size()) return;
-  const Ship& me = w.ships[size_t(ship)];
+  if (!ship || ship.index() >= w.ships.size()) return;
+  const Ship& me = w.ship(ship);
   const ViewClusters clusters = ViewClusters::of(w, me);
   const Projector pr = Projector::of(camera, width, height);
   glm::dvec2 crosshair(pr.cx, pr.cy);

@@ -14,6 +14,7 @@
 #pragma once
 #include <vector>
 
+#include "game/sim/ids.h"
 #include "gfx/render_view.h"
 
 namespace arc {
@@ -30,7 +31,7 @@ struct OwnViewRules {
 
 // `ship` is the ship the camera follows (World::focus_ship()); `cockpit` whether it rides inside
 // it; `alpha` interpolates the crosshair like the meshes.
-void keep_own_effects_out_of_view(const World& w, int ship, bool cockpit, const CameraView& camera, double alpha,
+void keep_own_effects_out_of_view(const World& w, ShipId ship, bool cockpit, const CameraView& camera, double alpha,
                                   int width, int height, const OwnViewRules& rules,
                                   std::vector<ParticleInstance>& particles);
 

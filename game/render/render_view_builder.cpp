@@ -18,23 +18,27 @@ constexpr double kPi = 3.14159265358979323846;
 glm::dvec3 lerp_pos(const glm::dvec3& a, const glm::dvec3& b, double t) { return a + (b - a) * t; }
 
 // Ships as the mesh pass draws them at `alpha`; collect() places their attached clusters
-// (shield, exhausts, beams) in the same pose, so they sit on the mesh between ticks. Ship ids
-// ascend, so the list is sorted by owner as collect() needs. Projectiles have no mesh and keep
-// their tick pose.
+// (shield, exhausts, beams) in the same pose, so they sit on the mesh between ticks. Ships get
+// their particle owners in ship order at level start, so the list is sorted by owner as
+// collect() needs. Projectiles have no mesh and keep their tick pose.
 std::vector<DrawnOwner> drawn_ships(const World& w, double alpha) {
   std::vector<DrawnOwner> out;
   for (const Ship& s : w.ships)
     if (s.alive)
-      out.push_back({ship_owner(s.id), lerp_pos(s.prev_position, s.position, alpha),
+      out.push_back({s.particle_owner, lerp_pos(s.prev_position, s.position, alpha),
                      glm::normalize(glm::slerp(s.prev_orientation, s.orientation, alpha))});
   return out;
+}
+
+ModelId model_of(std::span<const ModelId> models, ModelSlot slot) {
+  return slot && slot.index() < models.size() ? models[slot.index()] : ModelId{};
 }
 
 }  // namespace
 
 const std::vector<std::string>& required_models(const World& world) { return world.model_paths; }
 
-void build_render_view(const World& w, double alpha, const CameraSettings& cs, const HudState& hud, int width,
+void build_render_view(const World& w, std::span<const ModelId> models, double alpha, const CameraSettings& cs, const HudState& hud, int width,
                        int height, RenderView& out) {
   alpha = std::clamp(alpha, 0.0, 1.0);
   width = std::max(width, 1);
@@ -47,7 +51,7 @@ void build_render_view(const World& w, double alpha, const CameraSettings& cs, c
   const CameraMode mode = cs.mode.value_or(w.camera_mode);
   CameraView& cam = out.camera;
   cam.fov_y_radians = (cs.fov_deg > 0 ? cs.fov_deg : w.level.camera.fov_deg) * kPi / 180.0;
-  if (mode == CameraMode::Fixed || w.focus_ship() < 0) {
+  if (mode == CameraMode::Fixed || !w.focus_ship()) {
     cam.position = w.level.camera.position;
     glm::dvec3 d = w.level.camera.look_at - w.level.camera.position;
     double l = std::sqrt(glm::dot(d, d));
@@ -57,14 +61,14 @@ void build_render_view(const World& w, double alpha, const CameraSettings& cs, c
     cam.position = lerp_pos(w.prev_camera.position, w.camera.position, alpha);
     cam.orientation = glm::normalize(glm::slerp(w.prev_camera.orientation, w.camera.orientation, alpha));
   }
-  const int focus = w.focus_ship();
+  const ShipId focus = w.focus_ship();
   const bool cockpit = mode == CameraMode::Cockpit;
 
   const double flash_s = 0.5;
   for (const Ship& s : w.ships) {
     if (!s.alive || (cockpit && s.id == focus)) continue;
     MeshInstance m;
-    m.model = s.model;
+    m.model = model_of(models, s.model);
     m.position = lerp_pos(s.prev_position, s.position, alpha);
     m.orientation = glm::normalize(glm::slerp(s.prev_orientation, s.orientation, alpha));
     m.emissive_boost = 1.0f + float(std::max(0.0, axis_value(s.controls.throttle))) * (s.afterburner_on ? 2.0f : 1.0f);
@@ -79,7 +83,7 @@ void build_render_view(const World& w, double alpha, const CameraSettings& cs, c
   }
   for (const Prop& p : w.props) {
     MeshInstance m;
-    m.model = p.model;
+    m.model = model_of(models, p.model);
     m.position = p.position;
     m.orientation = p.orientation;
     m.scale = p.scale;
@@ -92,7 +96,7 @@ void build_render_view(const World& w, double alpha, const CameraSettings& cs, c
   pc.fov_y_radians = cam.fov_y_radians;
   pc.aspect = double(width) / double(height);
   pc.near_plane = cam.near_plane;
-  if (mode != CameraMode::Fixed && w.focus_ship() >= 0)
+  if (mode != CameraMode::Fixed && w.focus_ship())
     pc.velocity = (w.camera.position - w.prev_camera.position) / w.dt;  // sparks streak relative to the eye
   w.particles->collect(pc, out.particles, drawn_ships(w, alpha));
   tint_exhausts(w, out.particles);

@@ -16,7 +16,7 @@ constexpr float kExhaustTint = 0.75f;
 }  // namespace
 
 glm::vec4 ship_team_color(const World& w, const Ship& s) {
-  const auto it = w.level.team_colors.find(s.team);
+  const auto it = w.level.team_colors.find(w.team_name(s.team));
   if (it == w.level.team_colors.end()) return glm::vec4(0.0f);
   return glm::vec4(glm::vec3(it->second), 1.0f);
 }

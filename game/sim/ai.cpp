@@ -43,15 +43,15 @@ glm::dvec3 lead_point(const Ship& shooter, const Ship& target, double projectile
 
 // The nearest hostile, but a damaged one counts as nearer: pilots go for the kill, so fights end
 // in explosions instead of spreading damage over everyone.
-int pick_target(const World& w, int self) {
-  int best = -1;
+ShipId pick_target(const World& w, ShipId self) {
+  ShipId best;
   double best_score = 0;
-  const Ship& me = w.ships[self];
+  const Ship& me = w.ship(self);
   for (const Ship& s : w.ships) {
     if (s.id == self || !s.alive || !w.hostile(me, s)) continue;
     const double health = (s.hull + s.shield) / std::max(1e-9, s.cls->hull + s.cls->shield);
     const double score = safe_len(s.position - me.position) * (0.4 + health);
-    if (best < 0 || score < best_score) best = s.id, best_score = score;
+    if (!best || score < best_score) best = s.id, best_score = score;
   }
   return best;
 }
@@ -86,13 +86,13 @@ bool break_off_players_tail(const World& w, Ship& s, const Ship& t, const glm::d
 void think(World& w, Ship& s) {
   const AiDifficultyDef& tune = ai_difficulty(w);
   AiState& ai = s.ai_state;
-  const Rng rng{w.seed, kAiStream + static_cast<uint64_t>(s.id), static_cast<uint64_t>(w.tick)};
+  const Rng rng{w.seed, kAiStream + static_cast<uint64_t>(s.id.index()), static_cast<uint64_t>(w.tick)};
   ai.next_think = w.tick + std::max<int64_t>(1, seconds_to_ticks(w, tune.reaction_s));
-  if (ai.target < 0 || !w.ships[ai.target].alive || rng.uniform(0) < 0.25) ai.target = pick_target(w, s.id);
+  if (!ai.target || !w.ship(ai.target).alive || rng.uniform(0) < 0.25) ai.target = pick_target(w, s.id);
   s.target = ai.target;
   ai.aim_error = rng.unit_vector(1) * (tune.aim_error * rng.uniform(2));
-  if (ai.target < 0) return;
-  const Ship& t = w.ships[ai.target];
+  if (!ai.target) return;
+  const Ship& t = w.ship(ai.target);
   const glm::dvec3 rel = t.position - s.position;
   const double dist = safe_len(rel);
   const double shield_frac = s.cls->shield > 0 ? s.shield / s.cls->shield : 0.0;
@@ -154,7 +154,7 @@ void jink(const World& w, const Ship& s, const Ship& t, double amount, InputFram
   if (amount <= 0 || dist > 1.2 * t.cls->beam.range) return;
   if (glm::dot(forward_of(t.orientation), from_t) < std::cos(0.15) * dist) return;
   const int64_t period = std::max<int64_t>(1, seconds_to_ticks(w, 0.8));
-  const Rng rng{w.seed, kAiStream + 0x200 + static_cast<uint64_t>(s.id), static_cast<uint64_t>(w.tick / period)};
+  const Rng rng{w.seed, kAiStream + 0x200 + static_cast<uint64_t>(s.id.index()), static_cast<uint64_t>(w.tick / period)};
   const double a = 2.0 * kPi * rng.uniform(0);
   c.strafe_x = quantise_axis(amount * std::cos(a));
   c.strafe_y = quantise_axis(amount * std::sin(a));
@@ -171,13 +171,13 @@ void drive_ai(World& w, Ship& s) {
   const AiDifficultyDef& tune = ai_difficulty(w);
   AiState& ai = s.ai_state;
   InputFrame c;
-  if (ai.target < 0 || !w.ships[ai.target].alive) {
+  if (!ai.target || !w.ship(ai.target).alive) {
     c.throttle = quantise_axis(0.5);
     c.roll = quantise_axis(-0.3 * s.angular_velocity.z);
     s.controls = c;
     return;
   }
-  const Ship& t = w.ships[ai.target];
+  const Ship& t = w.ship(ai.target);
   const glm::dvec3 fwd = forward_of(s.orientation);
   if (ai.mode != AiMode::Attack) {
     steer_toward(s, ai.evade_dir, tune.stick_limit, c);
@@ -205,7 +205,7 @@ void drive_ai(World& w, Ship& s) {
   const bool beam_ready = s.beam_firing ? energy_frac > 0.1 : energy_frac > 0.3 + 0.5 * (1.0 - tune.aggression);
   const bool line_clear = !ally_in_line_of_fire(w, s, fwd, dist);
   if (line_clear && beam_ready && off < cone + 0.02 && dist < s.cls->beam.range * 0.95) c.buttons |= kFirePrimary;
-  const Rng rng{w.seed, kAiStream + 0x100 + static_cast<uint64_t>(s.id), static_cast<uint64_t>(w.tick)};
+  const Rng rng{w.seed, kAiStream + 0x100 + static_cast<uint64_t>(s.id.index()), static_cast<uint64_t>(w.tick)};
   if (line_clear && s.cls->missile.present && !plasma && off < 0.35 && dist < 1500 && dist > 80 &&
       rng.uniform(0) < 0.05 * tune.aggression)
     c.buttons |= kFireSecondary;

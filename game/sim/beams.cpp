@@ -49,7 +49,7 @@ BeamPath beam_path(const World& w, const Ship& s, size_t mount) {
 
 }  // namespace
 
-BeamHit trace_beam(const World& w, int shooter, const std::vector<glm::dvec3>& line) {
+BeamHit trace_beam(const World& w, ShipId shooter, const std::vector<glm::dvec3>& line) {
   BeamHit best;
   double along = 0;
   for (size_t i = 0; i + 1 < line.size(); ++i) {
@@ -69,7 +69,7 @@ BeamHit trace_beam(const World& w, int shooter, const std::vector<glm::dvec3>& l
         best.on_shield = shield_up;
       }
     }
-    if (best.ship >= 0) {
+    if (best.ship) {
       best.point = a + (b - a) * best_t;
       best.distance = along + seg * best_t;
       return best;
@@ -84,7 +84,7 @@ void stop_beam(World& w, Ship& s) {
   s.beam_channels.clear();
   s.beam_hit_distance.clear();
   s.beam_firing = false;
-  s.beam_target = -1;
+  s.beam_target = {};
 }
 
 void update_beam_trigger(World& w, Ship& s) {
@@ -98,23 +98,23 @@ void update_beam_trigger(World& w, Ship& s) {
   if (s.beam_firing) return;
   s.beam_firing = true;
   for (const glm::dvec3& m : b.mounts)
-    s.beam_channels.push_back(w.particles->spawn_lightning(kFxLightningBeam, ship_owner(s.id), m, {0, 0, -1}));
+    s.beam_channels.push_back(w.particles->spawn_lightning(w.fx.lightning_beam, s.particle_owner, m, {0, 0, -1}));
   s.beam_hit_distance.assign(s.beam_channels.size(), -1.0);
 }
 
 void resolve_beams(World& w) {
   for (Ship& s : w.ships) {
     if (!s.alive || !s.beam_firing) continue;
-    s.beam_target = -1;
+    s.beam_target = {};
     const size_t n = s.beam_channels.size();
     for (size_t m = 0; m < n; ++m) {
       ClusterHandle ch = s.beam_channels[m];
       const BeamPath path = beam_path(w, s, m);
       BeamHit hit = trace_beam(w, s.id, path.points);
       s.beam_hit_distance[m] = hit.distance;
-      w.particles->cut_lightning(ch, hit.ship >= 0 ? hit.distance : path.length);
-      if (hit.ship < 0) continue;
-      Ship& t = w.ships[hit.ship];
+      w.particles->cut_lightning(ch, hit.ship ? hit.distance : path.length);
+      if (!hit.ship) continue;
+      Ship& t = w.ship(hit.ship);
       s.beam_target = hit.ship;
       if (w.hostile(s, t)) apply_damage(w, t, s.cls->beam.damage_per_second * w.dt / double(n), hit.point, s.id);
       if ((w.tick + static_cast<int64_t>(m)) % 4 == 0) {
@@ -123,7 +123,7 @@ void resolve_beams(World& w) {
         p.velocity = t.velocity;
         p.orientation = glm::quatLookAt(safe_norm(hit.point - t.position, glm::dvec3(0, 1, 0)), glm::dvec3(0, 1, 0.001));
         p.priority = 0;
-        spawn_fx(w, hit.on_shield ? kFxShieldHit : kFxHullSparks, p);
+        spawn_fx(w, hit.on_shield ? w.fx.shield_hit : w.fx.hull_sparks, p);
       }
     }
   }

@@ -9,12 +9,12 @@ namespace arc {
 
 // The beam's first hit along a polyline: ship id (or −1) and distance along the line.
 struct BeamHit {
-  int ship = -1;
+  ShipId ship;  // null: nothing hit
   double distance = -1;
   glm::dvec3 point{0.0};
   bool on_shield = false;
 };
-BeamHit trace_beam(const World& w, int shooter, const std::vector<glm::dvec3>& polyline);
+BeamHit trace_beam(const World& w, ShipId shooter, const std::vector<glm::dvec3>& polyline);
 
 // Starts or stops the beam with the fire button and spends its energy.
 void update_beam_trigger(World& w, Ship& s);

@@ -17,9 +17,9 @@ void update_camera(World& w) {
     w.camera.orientation = glm::quatLookAt(dir, std::fabs(dir.y) > 0.999 ? glm::dvec3(0, 0, -1) : glm::dvec3(0, 1, 0));
     return;
   }
-  int f = w.focus_ship();
-  if (f < 0) return;
-  const Ship& s = w.ships[f];
+  const ShipId f = w.focus_ship();
+  if (!f) return;
+  const Ship& s = w.ship(f);
   const double R = s.cls->collision_radius;
   if (w.camera_mode == CameraMode::Cockpit) {
     w.camera.orientation = s.orientation;

@@ -48,7 +48,7 @@ void collide_ships(World& w) {
       double vn = glm::dot(a.velocity, nrm);
       if (vn < 0) {
         a.velocity -= nrm * (1.5 * vn);
-        apply_damage(w, a, 0.2 * -vn, p.position + nrm * p.radius, -1);
+        apply_damage(w, a, 0.2 * -vn, p.position + nrm * p.radius, ShipId{});
       }
     }
   }

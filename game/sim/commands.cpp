@@ -7,27 +7,27 @@
 namespace arc {
 namespace {
 
-int next_target(const World& w, int self, int current, bool hostile_only) {
-  const int n = static_cast<int>(w.ships.size());
-  for (int k = 1; k <= n; ++k) {
-    int id = ((current < 0 ? self : current) + k) % n;
-    const Ship& s = w.ships[id];
-    if (id == self || !s.alive) continue;
-    if (hostile_only && !w.hostile(w.ships[self], s)) continue;
-    return id;
+ShipId next_target(const World& w, ShipId self, ShipId current, bool hostile_only) {
+  const size_t n = w.ships.size();
+  const size_t from = (current ? current : self).index();
+  for (size_t k = 1; k <= n; ++k) {
+    const Ship& s = w.ships[(from + k) % n];
+    if (s.id == self || !s.alive) continue;
+    if (hostile_only && !w.hostile(w.ship(self), s)) continue;
+    return s.id;
   }
-  return -1;
+  return {};
 }
 
 // A wingman is never what a pilot reaching for the nearest target wants: hostiles only.
-int nearest_hostile(const World& w, int self) {
-  int best = -1;
+ShipId nearest_hostile(const World& w, ShipId self) {
+  ShipId best;
   double best_d = 0;
-  const Ship& me = w.ships[self];
+  const Ship& me = w.ship(self);
   for (const Ship& s : w.ships) {
     if (s.id == self || !s.alive || !w.hostile(me, s)) continue;
     double d = glm::dot(s.position - me.position, s.position - me.position);
-    if (best < 0 || d < best_d) best = s.id, best_d = d;
+    if (!best || d < best_d) best = s.id, best_d = d;
   }
   return best;
 }
@@ -41,8 +41,8 @@ void apply_commands(World& w, const std::vector<Command>& commands) {
     if (w.paused) continue;
     if (c == Command::CameraToggle && w.camera_mode != CameraMode::Fixed)
       w.camera_mode = w.camera_mode == CameraMode::Chase ? CameraMode::Cockpit : CameraMode::Chase;
-    if (w.player < 0 || !w.ships[w.player].alive) continue;
-    Ship& p = w.ships[w.player];
+    if (!w.player || !w.ship(w.player).alive) continue;
+    Ship& p = w.ship(w.player);
     switch (c) {
       case Command::TargetNext: p.target = next_target(w, p.id, p.target, false); break;
       case Command::TargetNearest: p.target = nearest_hostile(w, p.id); break;

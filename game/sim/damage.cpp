@@ -19,7 +19,7 @@ void kill_ship(World& w, Ship& s) {
   s.death_tick = w.tick;
   s.hull = 0;
   stop_beam(w, s);
-  w.particles->destroy_owner(ship_owner(s.id));
+  w.particles->destroy_owner(s.particle_owner);
   s.shield_fx = {};
   s.exhaust_fx.clear();
   SpawnParams p;
@@ -27,9 +27,9 @@ void kill_ship(World& w, Ship& s) {
   p.velocity = s.velocity;
   p.scale = s.cls->collision_radius / 8.0;
   p.priority = 2;
-  spawn_fx(w, kFxShipExplosion, p);
+  spawn_fx(w, w.fx.ship_explosion, p);
   w.explosions.push_back({s.position, w.tick, s.cls->collision_radius * 6.0});
-  if (s.last_attacker >= 0 && s.last_attacker != s.id) w.ships[s.last_attacker].kills++;
+  if (s.last_attacker && s.last_attacker != s.id) w.ship(s.last_attacker).kills++;
   if (!w.level.splash) return;
   for (Ship& o : w.ships) {
     if (!o.alive) continue;
@@ -42,10 +42,10 @@ void kill_ship(World& w, Ship& s) {
 
 }  // namespace
 
-void apply_damage(World& w, Ship& t, double amount, const glm::dvec3& point, int attacker) {
+void apply_damage(World& w, Ship& t, double amount, const glm::dvec3& point, ShipId attacker) {
   if (!t.alive || amount <= 0) return;
   t.last_hit_tick = w.tick;
-  if (attacker >= 0) t.last_attacker = attacker;
+  if (attacker) t.last_attacker = attacker;
   double to_shield = std::min(t.shield, amount);
   t.shield -= to_shield;
   t.hull -= amount - to_shield;
@@ -65,7 +65,7 @@ void resolve_deaths(World& w) {
       if (s.alive && s.hull <= 0) kill_ship(w, s), again = true;
   }
   for (Ship& s : w.ships)
-    if (s.target >= 0 && !w.ships[s.target].alive) s.target = -1;
+    if (s.target && !w.ship(s.target).alive) s.target = {};
   std::erase_if(w.explosions, [&](const ExplosionEvent& e) {
     return w.tick - e.tick > seconds_to_ticks(w, kExplosionMemorySeconds);
   });

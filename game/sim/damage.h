@@ -2,13 +2,15 @@
 #pragma once
 #include <glm/vec3.hpp>
 
+#include "game/sim/ids.h"
+
 namespace arc {
 
 class World;
 struct Ship;
 
 // Applies damage at a world point: shield first, then hull; records the attacker.
-void apply_damage(World& w, Ship& target, double amount, const glm::dvec3& point, int attacker);
+void apply_damage(World& w, Ship& target, double amount, const glm::dvec3& point, ShipId attacker);
 // Ships without hull explode (splash damage may take others with them); stale targets and old
 // explosions are cleared.
 void resolve_deaths(World& w);

@@ -1,13 +1,15 @@
-// game/sim/effects.h — the effects the game spawns: their names, the library they come from,
-// and how ships and projectiles own them in the particle world.
+// game/sim/effects.h — the effects the game spawns, resolved to EffectIds once per World, the
+// library they come from, and how ships and projectiles own them in the particle world.
 //
-// Names come from validated data, so an unknown name at a spawn is a data error of the level
-// (InputError). Owners are ship_owner(id) and projectile_owner(serial) (game/sim/world.h);
-// their transforms are published each tick before the particle world steps.
+// resolve_game_effects() looks every name up once at level start (an unknown name is a data
+// error: InputError); spawning then goes by id. Owners are the OwnerIds stored on Ship and
+// Projectile (allocate_owner, game/sim/world.h); their transforms are published each tick
+// before the particle world steps.
 #pragma once
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>
 
@@ -17,22 +19,22 @@ namespace arc {
 
 class EffectLibrary;
 class World;
+struct LevelDef;
 
-inline constexpr const char* kFxLightningBeam = "lightning_beam";
-inline constexpr const char* kFxShieldSphere = "shield_sphere";
-inline constexpr const char* kFxShieldHit = "shield_hit";
-inline constexpr const char* kFxHullSparks = "hull_sparks";
-inline constexpr const char* kFxShipExplosion = "ship_explosion";
-inline constexpr const char* kFxEngineExhaust = "engine_exhaust";
-inline constexpr const char* kFxMissileTrail = "missile_trail";
-inline constexpr const char* kFxPlasmaBolt = "plasma_bolt";
+struct GameEffects {
+  EffectId lightning_beam, shield_sphere, shield_hit, hull_sparks, ship_explosion, engine_exhaust, missile_trail,
+      plasma_bolt;
+  std::vector<EffectId> level;  // one per LevelDef::effects entry
+};
 
 // Loads root_dir/assets/effects/*.json once per root and shares it between games (copies of a
 // Game share the immutable library). Bad effect files throw InputError.
 std::shared_ptr<const EffectLibrary> load_effect_library(const std::string& root_dir);
+// The game's effects and the level's own, by name in `library` (InputError for an unknown one).
+GameEffects resolve_game_effects(const EffectLibrary& library, const LevelDef& level);
 
-EffectHandle spawn_fx(World& w, const std::string& name, const SpawnParams& p);
-void set_owner(World& w, uint32_t owner, const glm::dvec3& pos, const glm::dquat& q, const glm::dvec3& vel);
+EffectHandle spawn_fx(World& w, EffectId effect, const SpawnParams& p);
+void set_owner(World& w, OwnerId owner, const glm::dvec3& pos, const glm::dquat& q, const glm::dvec3& vel);
 // Every live ship's transform, for the clusters attached to it.
 void publish_owner_transforms(World& w);
 // The level's own effects, at tick 1 and then every repeat_ticks.

@@ -22,17 +22,16 @@ namespace arc {
 
 // ---------------------------------------------------------------- World
 
-int World::focus_ship() const {
-  if (player >= 0) return player;
+ShipId World::focus_ship() const {
+  if (player) return player;
   for (const Ship& s : ships)
     if (s.alive) return s.id;
-  return -1;
+  return {};
 }
 
-int World::model_index(const std::string& path) const {
-  for (size_t i = 0; i < model_paths.size(); ++i)
-    if (model_paths[i] == path) return static_cast<int>(i);
-  return -1;
+const std::string& World::team_name(TeamId team) const {
+  static const std::string none = "none";
+  return team ? team_names.at(team.index()) : none;
 }
 
 // ---------------------------------------------------------------- Game
@@ -152,7 +151,7 @@ std::string Game::summary_json() const {
   j["seconds"] = double(w.tick) * w.dt;
   j["outcome"] = outcome_name(w.outcome);
   if (w.outcome != Outcome::Undecided) {
-    j["winner"] = w.winner;
+    j["winner"] = w.team_name(w.winner);
     j["decided_tick"] = w.outcome_tick;
   } else {
     j["winner"] = nullptr;
@@ -161,7 +160,7 @@ std::string Game::summary_json() const {
   for (const Ship& s : w.ships) {
     nlohmann::ordered_json e;
     e["name"] = s.name;
-    e["team"] = s.team;
+    e["team"] = w.team_name(s.team);
     e["class"] = s.cls->name;
     e["player"] = s.player;
     e["alive"] = s.alive;

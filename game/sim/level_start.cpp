@@ -1,5 +1,6 @@
-// game/sim/level_start.cpp — the World at tick 0: settings, the particle world, ships and props
-// from the level, the camera rig, and each ship's shield sphere and engine exhausts.
+// game/sim/level_start.cpp — the World at tick 0: settings, the particle world, the game's
+// effects resolved to ids, teams, ships and props from the level, the camera rig, and each
+// ship's particle owner, shield sphere and engine exhausts.
 #include "game/sim/level_start.h"
 
 #include <string>
@@ -14,20 +15,29 @@
 namespace arc {
 namespace {
 
-// A model's index in World::model_paths, added on first use (the renderer loads only these).
-int add_model(World& w, const std::string& path) {
+// A model's slot in World::model_paths, added on first use (the renderer loads only these).
+ModelSlot add_model(World& w, const std::string& path) {
   for (size_t i = 0; i < w.model_paths.size(); ++i)
-    if (w.model_paths[i] == path) return static_cast<int>(i);
+    if (w.model_paths[i] == path) return ModelSlot::from_index(i);
   w.model_paths.push_back(path);
-  return static_cast<int>(w.model_paths.size() - 1);
+  return ModelSlot::from_index(w.model_paths.size() - 1);
+}
+
+// A team's id in World::team_names, added on first use.
+TeamId add_team(World& w, const std::string& name) {
+  for (size_t i = 0; i < w.team_names.size(); ++i)
+    if (w.team_names[i] == name) return TeamId::from_index(i);
+  w.team_names.push_back(name);
+  return TeamId::from_index(w.team_names.size() - 1);
 }
 
 void add_ships(World& w) {
   for (const ShipSpawnDef& d : w.level.ships) {
     Ship s;
-    s.id = static_cast<int>(w.ships.size());
+    s.id = ShipId::from_index(w.ships.size());
     s.name = d.name;
-    s.team = d.team;
+    s.team = add_team(w, d.team);
+    s.particle_owner = allocate_owner(w);
     s.cls = w.level.classes.at(d.ship_class).get();
     s.model = add_model(w, s.cls->model);
     s.player = d.player;
@@ -64,12 +74,12 @@ void attach_ship_effects(World& w) {
     if (s.cls->shield > 0) spawn_shield(w, s, 4);
     for (const glm::dvec3& e : s.cls->exhausts) {
       SpawnParams ep;
-      ep.owner = ship_owner(s.id);
+      ep.owner = s.particle_owner;
       ep.position = e;
       ep.orientation = glm::angleAxis(kPi, glm::dvec3(0, 1, 0));  // exhaust cone points backwards (+Z)
       ep.scale = s.cls->collision_radius / 8.0;
       ep.priority = 0;
-      s.exhaust_fx.push_back(spawn_fx(w, kFxEngineExhaust, ep));
+      s.exhaust_fx.push_back(spawn_fx(w, w.fx.engine_exhaust, ep));
     }
   }
 }
@@ -94,11 +104,12 @@ void init_world(World& w, LevelDef level, std::shared_ptr<const EffectLibrary> e
   w.camera_mode = w.level.camera.mode == "cockpit" ? CameraMode::Cockpit
                   : w.level.camera.mode == "fixed" ? CameraMode::Fixed
                                                    : CameraMode::Chase;
-  if (int f = w.focus_ship(); f >= 0) w.camera.orientation = w.ships[f].orientation;
+  if (const ShipId f = w.focus_ship()) w.camera.orientation = w.ship(f).orientation;
   update_camera(w);
   w.prev_camera = w.camera;
   publish_owner_transforms(w);
   try {
+    w.fx = resolve_game_effects(*w.effects, w.level);
     attach_ship_effects(w);
   } catch (const InputError& e) {
     throw InputError(w.level.path + ": " + e.what());

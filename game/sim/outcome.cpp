@@ -8,16 +8,16 @@
 namespace arc {
 namespace {
 
-void decide(World& w, Outcome o, const std::string& winner) {
+void decide(World& w, Outcome o, TeamId winner) {
   w.outcome = o;
   w.winner = winner;
   w.outcome_tick = w.tick;
 }
 
-std::string first_live_team(const World& w, const std::string& except) {
+TeamId first_live_team(const World& w, TeamId except) {
   for (const Ship& s : w.ships)
     if (s.alive && s.team != except) return s.team;
-  return "none";
+  return {};
 }
 
 }  // namespace
@@ -25,8 +25,8 @@ std::string first_live_team(const World& w, const std::string& except) {
 void update_outcome(World& w) {
   if (w.outcome != Outcome::Undecided) return;
   const LevelDef& L = w.level;
-  const Ship* player = w.player >= 0 ? &w.ships[w.player] : nullptr;
-  const std::string side = player ? player->team : w.ships.front().team;
+  const Ship* player = w.player ? &w.ship(w.player) : nullptr;
+  const TeamId side = player ? player->team : w.ships.front().team;
   if (L.lose == LoseKind::PlayerDestroyed && player && !player->alive)
     return decide(w, Outcome::Defeat, first_live_team(w, side));
   if (L.lose == LoseKind::Protect) {
@@ -48,11 +48,11 @@ void update_outcome(World& w) {
       if (w.tick >= L.win_ticks) decide(w, player ? Outcome::Victory : Outcome::TeamWon, side);
       break;
     case WinKind::LastTeamStanding: {
-      std::vector<std::string> teams;
+      std::vector<TeamId> teams;
       for (const Ship& s : w.ships)
         if (s.alive && std::find(teams.begin(), teams.end(), s.team) == teams.end()) teams.push_back(s.team);
       if (teams.size() > 1) break;
-      std::string winner = teams.empty() ? "none" : teams.front();
+      const TeamId winner = teams.empty() ? TeamId{} : teams.front();
       if (player) decide(w, player->team == winner ? Outcome::Victory : Outcome::Defeat, winner);
       else decide(w, Outcome::TeamWon, winner);
       break;

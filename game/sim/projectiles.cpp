@@ -16,9 +16,9 @@ namespace {
 void end_projectile(World& w, Projectile& p) {
   if (p.kind == SecondaryWeapon::Missile) {
     // The smoke stays behind and fades; the flame goes with the missile.
-    w.particles->release_owner(projectile_owner(p.serial));
+    w.particles->release_owner(p.particle_owner);
   } else {
-    w.particles->destroy_owner(projectile_owner(p.serial));
+    w.particles->destroy_owner(p.particle_owner);
   }
 }
 
@@ -37,28 +37,29 @@ void fire_secondary(World& w, Ship& s) {
   p.serial = w.next_projectile_serial++;
   p.kind = s.secondary;
   p.owner = s.id;
-  p.target = plasma ? -1 : s.target;
-  if (p.target >= 0 && !w.hostile(s, w.ships[p.target])) p.target = -1;
+  p.target = plasma ? ShipId{} : s.target;
+  if (p.target && !w.hostile(s, w.ship(p.target))) p.target = {};
+  p.particle_owner = allocate_owner(w);
   p.position = p.prev_position = s.position + s.orientation * hp;
   p.velocity = s.velocity + forward_of(s.orientation) * wd.speed;
   p.damage = wd.damage;
   p.turn_rate = wd.turn_rate * kDeg;
   p.hit_radius = wd.hit_radius;
   p.expire_tick = w.tick + std::max<int64_t>(1, seconds_to_ticks(w, wd.lifetime));
-  set_owner(w, projectile_owner(p.serial), p.position, s.orientation, p.velocity);
+  set_owner(w, p.particle_owner, p.position, s.orientation, p.velocity);
   SpawnParams sp;
-  sp.owner = projectile_owner(p.serial);
-  p.trail = spawn_fx(w, plasma ? kFxPlasmaBolt : kFxMissileTrail, sp);
+  sp.owner = p.particle_owner;
+  p.trail = spawn_fx(w, plasma ? w.fx.plasma_bolt : w.fx.missile_trail, sp);
   w.projectiles.push_back(std::move(p));
 }
 
 void move_projectiles(World& w) {
   for (Projectile& p : w.projectiles) {
     p.prev_position = p.position;
-    if (p.kind == SecondaryWeapon::Missile && p.target >= 0 && w.ships[p.target].alive) {
+    if (p.kind == SecondaryWeapon::Missile && p.target && w.ship(p.target).alive) {
       const double speed = safe_len(p.velocity);
       glm::dvec3 dir = safe_norm(p.velocity, glm::dvec3(0, 0, -1));
-      glm::dvec3 want = safe_norm(w.ships[p.target].position - p.position, dir);
+      glm::dvec3 want = safe_norm(w.ship(p.target).position - p.position, dir);
       double angle = std::acos(std::clamp(glm::dot(dir, want), -1.0, 1.0));
       double step = p.turn_rate * w.dt;
       if (angle > 1e-9) {
@@ -69,7 +70,7 @@ void move_projectiles(World& w) {
     }
     p.position += p.velocity * w.dt;
     glm::dquat q = glm::quatLookAt(safe_norm(p.velocity, glm::dvec3(0, 0, -1)), glm::dvec3(0, 1, 0.001));
-    set_owner(w, projectile_owner(p.serial), p.position, q, p.velocity);
+    set_owner(w, p.particle_owner, p.position, q, p.velocity);
   }
 }
 
@@ -77,7 +78,7 @@ void hit_projectiles(World& w) {
   size_t keep = 0;
   for (size_t i = 0; i < w.projectiles.size(); ++i) {
     Projectile& p = w.projectiles[i];
-    int hit_ship = -1;
+    ShipId hit_ship;
     double best_t = 2.0;
     bool on_shield = false;
     for (const Ship& s : w.ships) {
@@ -87,14 +88,14 @@ void hit_projectiles(World& w) {
       double t = segment_sphere(p.prev_position, p.position, s.position, r);
       if (t >= 0 && t < best_t) best_t = t, hit_ship = s.id, on_shield = shield_up;
     }
-    if (hit_ship >= 0) {
-      Ship& t = w.ships[hit_ship];
+    if (hit_ship) {
+      Ship& t = w.ship(hit_ship);
       glm::dvec3 point = p.prev_position + (p.position - p.prev_position) * best_t;
       SpawnParams sp;
       sp.position = point;
       sp.velocity = t.velocity;
-      spawn_fx(w, on_shield ? kFxShieldHit : kFxHullSparks, sp);
-      if (w.hostile(w.ships[p.owner], t)) apply_damage(w, t, p.damage, point, p.owner);
+      spawn_fx(w, on_shield ? w.fx.shield_hit : w.fx.hull_sparks, sp);
+      if (w.hostile(w.ship(p.owner), t)) apply_damage(w, t, p.damage, point, p.owner);
       end_projectile(w, p);
       continue;
     }

@@ -31,7 +31,7 @@ static void write_leaf(snapshot::Writer& out, const std::optional<ParticleWorld>
 namespace {
 
 constexpr uint64_t kMagic = snapshot::magic("ARCSNAP1");
-constexpr uint32_t kVersion = 2;
+constexpr uint32_t kVersion = 3;  // 3: typed ids (ships, teams, model slots, particle owners) as their u32 values
 
 using snapshot::Reader;
 using snapshot::Writer;
@@ -103,25 +103,42 @@ struct WorldReading {
   void read_leaf(Reader& in, const char* name, EffectHandle& e) { fields::FieldReader(in, *this).read(name, e.clusters); }
   void read_leaf(Reader& in, const char*, std::optional<ParticleWorld>& p) { p->load(in.bytes()); }
 
-  // Everything that holds a ship index indexes World::ships with it.
-  void validate(Reader& in, const char* name, int v, ShipRef) {
-    if (v < -1 || v >= int(w.ships.size()))
-      in.fail(std::string(name) + " " + std::to_string(v) + " is not a ship (−1 or 0.." + std::to_string(int(w.ships.size()) - 1) + ")");
+  // A typed id: its u32 value (validate checks what it refers to).
+  template <class Tag>
+  void read_leaf(Reader& in, const char*, Id<Tag>& id) {
+    id = Id<Tag>{in.u32()};
   }
-  void validate(Reader& in, const char* name, int v, ModelRef) {
-    if (v < -1 || v >= int(w.model_paths.size()))
-      in.fail(std::string(name) + " " + std::to_string(v) + " is not one of the level's " + std::to_string(w.model_paths.size()) +
-              " models");
+
+  // An id into a table of `count` entries, or null: whatever holds one indexes that table with it.
+  static void check_ref(Reader& in, const char* name, uint32_t v, size_t count, const char* table) {
+    if (v > count)
+      in.fail(std::string(name) + " " + std::to_string(v) + " is not one of the " + std::to_string(count) + " " + table +
+              " (0 for none, else 1.." + std::to_string(count) + ")");
   }
-  // The beam code indexes mounts and hit distances by channel.
+  void validate(Reader& in, const char* name, ShipId v, ShipRef) { check_ref(in, name, v.value, w.ships.size(), "ships"); }
+  void validate(Reader& in, const char* name, ModelSlot v, ModelRef) {
+    check_ref(in, name, v.value, w.model_paths.size(), "level's models");
+  }
+  void validate(Reader& in, const char* name, TeamId v, TeamRef) { check_ref(in, name, v.value, w.team_names.size(), "teams"); }
+  // A particle owner the world has handed out (allocate_owner); next_particle_owner is read first.
+  void validate(Reader& in, const char* name, OwnerId v, OwnerRef) {
+    if (v.value == 0 || v.value >= w.next_particle_owner)
+      in.fail(std::string(name) + " particle owner " + std::to_string(v.value) + " was never allocated (1.." +
+              std::to_string(w.next_particle_owner - 1) + ")");
+  }
+  // Every ship is on a team; the beam code indexes mounts and hit distances by channel.
   void after_read(Reader& in, const Ship& s) {
+    if (!s.team) in.fail("ship " + std::to_string(s.id.value) + " (" + s.name + "): has no team");
     if (s.beam_channels.size() > s.cls->beam.mounts.size() || s.beam_hit_distance.size() != s.beam_channels.size())
-      in.fail("ship " + std::to_string(s.id) + " (" + s.name + "): " + std::to_string(s.beam_channels.size()) +
+      in.fail("ship " + std::to_string(s.id.value) + " (" + s.name + "): " + std::to_string(s.beam_channels.size()) +
               " beam channels and " + std::to_string(s.beam_hit_distance.size()) + " hit distances for " +
               std::to_string(s.cls->beam.mounts.size()) + " mounts");
   }
+  void after_read(Reader& in, const World& world) {
+    if (world.next_particle_owner == 0) in.fail("next particle owner is 0 (owners start at 1)");
+  }
   void after_read(Reader& in, const Projectile& p) {
-    if (p.owner < 0) in.fail("projectile " + std::to_string(p.serial) + " has no owner");
+    if (!p.owner) in.fail("projectile " + std::to_string(p.serial) + " has no owner");
   }
 };
 

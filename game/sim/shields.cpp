@@ -15,10 +15,10 @@ namespace arc {
 void spawn_shield(World& w, Ship& s, int quarters) {
   if (!s.shield_fx.clusters.empty()) w.particles->destroy(s.shield_fx);
   SpawnParams sp;
-  sp.owner = ship_owner(s.id);
+  sp.owner = s.particle_owner;
   sp.scale = s.cls->shield_radius / 10.0;
   sp.intensity = quarters / 4.0;
-  s.shield_fx = spawn_fx(w, kFxShieldSphere, sp);
+  s.shield_fx = spawn_fx(w, w.fx.shield_sphere, sp);
   s.shield_density = quarters;
   s.shield_spawn_tick = w.tick;
   s.shown_shield_intensity = -1;

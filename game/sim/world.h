@@ -1,11 +1,11 @@
 // game/sim/world.h — the simulated state: ships, projectiles, the particle world, level state.
 //
 // World is plain data plus the particle world; Game (game/sim/game.h) steps it. Ships are kept
-// in a vector in id order (id = index), dead ships stay with alive = false so ids never move.
+// in a vector in id order (ShipId::from_index), dead ships stay with alive = false so ids never move.
 // Each ship keeps its previous tick's transform beside the current one, so the renderer can
-// interpolate by alpha without the simulation knowing about frames. Particle owners: ship i is
-// owner i + 1; projectile with serial s is owner kProjectileOwnerBase + s. A World copies
-// deeply (its particle world too); copies share the immutable level definitions.
+// interpolate by alpha without the simulation knowing about frames. Particle owners are
+// allocated by allocate_owner(): each ship gets one at level start, each projectile when fired.
+// A World copies deeply (its particle world too); copies share the immutable level definitions.
 //
 // Every struct here is followed by its field visitor (core/state_fields.h), the one list
 // of its fields that Game::hash, the snapshot (serialize.cpp) and Game::state_dump follow. The
@@ -23,7 +23,9 @@
 #include <glm/vec3.hpp>
 
 #include "game/sim/defs.h"
+#include "game/sim/effects.h"
 #include "game/sim/game.h"
+#include "game/sim/ids.h"
 #include "game/sim/input.h"
 #include "particles/particle_world.h"
 #include "core/state_fields.h"
@@ -31,10 +33,6 @@
 namespace arc {
 
 class EffectLibrary;
-
-constexpr uint32_t kProjectileOwnerBase = 1u << 24;
-inline uint32_t ship_owner(int id) { return static_cast<uint32_t>(id) + 1; }
-inline uint32_t projectile_owner(uint32_t serial) { return kProjectileOwnerBase + serial; }
 
 // The nose direction of an orientation: ship-local −Z.
 inline glm::dvec3 forward_of(const glm::dquat& q) { return q * glm::dvec3(0, 0, -1); }
@@ -57,12 +55,17 @@ inline constexpr fields::HashAt<kStateHashPass, W, As> state_hash;
 template <int W, fields::HashAs As = fields::HashAs::value>
 inline constexpr fields::HashAt<kPresentationHashPass, W, As> presentation_hash;
 
-// Saved fields the snapshot reader validates: an index into World::ships or World::model_paths
-// (−1 for none).
+// Saved fields the snapshot reader validates: an id into World::ships, World::model_paths or
+// World::team_names (0 for none, else index + 1 within the table), or a particle owner the world
+// has handed out (allocate_owner: 1..next_particle_owner - 1).
 struct ShipRef : fields::Saved {};
 struct ModelRef : fields::Saved {};
+struct TeamRef : fields::Saved {};
+struct OwnerRef : fields::Saved {};
 inline constexpr ShipRef ship_ref;
 inline constexpr ModelRef model_ref;
+inline constexpr TeamRef team_ref;
+inline constexpr OwnerRef owner_ref;
 // The settings a world is made with: the snapshot's header (serialize.cpp) holds them, restore
 // loads the level with them.
 struct LevelSettings {};
@@ -70,7 +73,7 @@ inline constexpr LevelSettings level_settings;
 
 struct AiState {
   AiMode mode = AiMode::Attack;
-  int target = -1;
+  ShipId target;
   int64_t mode_until = 0;      // tick at which the current evade / break-off ends
   int64_t next_think = 0;      // reaction time: decisions are refreshed at this tick
   int64_t tail_since = -1;     // tick it got on a player's tail (−1: not on one)
@@ -91,11 +94,12 @@ void visit_fields(A& a, V&& v) {
 
 struct Ship {
   // Definition
-  int id = 0;
+  ShipId id;
   std::string name;
-  std::string team;
+  TeamId team;
+  OwnerId particle_owner;             // its shield, exhausts and beams are attached to this owner
   const ShipClassDef* cls = nullptr;  // one of World::level.classes
-  int model = -1;                     // index in World::model_paths
+  ModelSlot model;                    // position in World::model_paths
   bool player = false;
   AiKind ai = AiKind::Fighter;
   // Motion (world frame; angular velocity in the ship frame, rad/s)
@@ -109,9 +113,9 @@ struct Ship {
   int64_t last_hit_tick = -1000000;   // shield regeneration waits after this
   int64_t shield_flash_tick = -1000000;
   int64_t death_tick = -1;
-  int last_attacker = -1;
+  ShipId last_attacker;
   int kills = 0;
-  int target = -1;  // the ship's current target (player: HUD target)
+  ShipId target;  // the ship's current target (player: HUD target)
   // Controls of this tick (from the InputFrame or the AI)
   InputFrame controls;
   bool afterburner_on = false;
@@ -122,7 +126,7 @@ struct Ship {
   bool beam_firing = false;
   std::vector<ClusterHandle> beam_channels;  // one per mount while firing
   std::vector<double> beam_hit_distance;     // per channel; < 0 = no hit this tick
-  int beam_target = -1;
+  ShipId beam_target;
   // Attached effects
   EffectHandle shield_fx;
   std::vector<EffectHandle> exhaust_fx;
@@ -139,7 +143,8 @@ void visit_fields(S& s, V&& v) {
   v("id", s.id, fields::checked, state_hash<0>);
   v("name", s.name, fields::checked, fields::unhashed);
   v("class", s.cls, fields::checked, fields::unhashed);  // saved as the class name
-  v("team", s.team, fields::saved, fields::unhashed);
+  v("team", s.team, team_ref, fields::unhashed);
+  v("particle_owner", s.particle_owner, owner_ref, state_hash<22>);
   v("player", s.player, fields::saved, fields::unhashed);
   v("ai", s.ai, fields::saved, fields::unhashed);
   v("position", s.position, fields::saved, state_hash<2>);
@@ -180,8 +185,9 @@ void visit_fields(S& s, V&& v) {
 struct Projectile {
   uint32_t serial = 0;
   SecondaryWeapon kind = SecondaryWeapon::Missile;
-  int owner = -1;
-  int target = -1;
+  ShipId owner;             // the ship that fired it
+  ShipId target;
+  OwnerId particle_owner;   // its trail is attached to this owner
   glm::dvec3 position{0.0}, velocity{0.0}, prev_position{0.0};
   double damage = 0, turn_rate = 0, hit_radius = 0;
   int64_t expire_tick = 0;
@@ -195,6 +201,7 @@ void visit_fields(P& p, V&& v) {
   v("kind", p.kind, fields::saved, state_hash<1>);
   v("owner", p.owner, ship_ref, state_hash<2>);
   v("target", p.target, ship_ref, state_hash<3>);
+  v("particle_owner", p.particle_owner, owner_ref, state_hash<7>);
   v("position", p.position, fields::saved, state_hash<4>);
   v("velocity", p.velocity, fields::saved, state_hash<5>);
   v("prev_position", p.prev_position, fields::saved, presentation_hash<0>);
@@ -219,7 +226,7 @@ void visit_fields(E& e, V&& v) {
 }
 
 struct Prop {
-  int model = -1;
+  ModelSlot model;
   std::string label;
   glm::dvec3 position{0.0};
   glm::dquat orientation{1, 0, 0, 0};
@@ -251,32 +258,38 @@ void visit_fields(C& c, V&& v) {
 class World {
  public:
   LevelDef level;
-  std::vector<std::string> model_paths;  // every model the level needs (load only these)
+  std::vector<std::string> team_names;   // in order of first appearance in the level, for TeamId
+  std::vector<std::string> model_paths;  // every model the level needs (load only these), for ModelSlot
   std::vector<Ship> ships;
   std::vector<Projectile> projectiles;
   std::vector<Prop> props;
   std::vector<ExplosionEvent> explosions;  // recent ones, for hull flashes
   std::shared_ptr<const EffectLibrary> effects;
+  GameEffects fx;                          // the effects the game spawns, resolved in `effects` at load
   std::optional<ParticleWorld> particles;  // made by init_world
   uint64_t seed = 1;
   int difficulty = 1;
   int64_t tick = 0;
   double dt = 1.0 / 60.0;
   uint32_t next_projectile_serial = 1;
+  uint32_t next_particle_owner = 1;  // allocate_owner()
   bool paused = false;
-  int player = -1;  // ship id of the player, -1 in attract levels
+  ShipId player;  // null in attract levels
   Outcome outcome = Outcome::Undecided;
-  std::string winner;  // winning team when decided
+  TeamId winner;  // winning team when decided (null: none)
   int64_t outcome_tick = -1;
   CameraMode camera_mode = CameraMode::Chase;
   CameraRig camera, prev_camera;
   GameOptions options;
   uint64_t steps = 0;  // step() calls, paused ones included
 
-  // The ship the camera and HUD follow: the player, else the first live ship.
-  int focus_ship() const;
+  Ship& ship(ShipId id) { return ships[id.index()]; }
+  const Ship& ship(ShipId id) const { return ships[id.index()]; }
+  // The ship the camera and HUD follow: the player, else the first live ship (null if none).
+  ShipId focus_ship() const;
   bool hostile(const Ship& a, const Ship& b) const { return a.team != b.team; }
-  int model_index(const std::string& path) const;
+  // A team's name as the level spells it; "none" for the null team.
+  const std::string& team_name(TeamId team) const;
 };
 
 // The hash's state pass: the counters and outcome, then every ship's and every projectile's
@@ -291,10 +304,11 @@ void visit_fields(W& w, V&& v) {
   v("tick", w.tick, fields::saved, state_hash<0>);
   v("steps", w.steps, fields::saved, fields::unhashed);  // in full_hash(): a paused step changes nothing else
   v("next_projectile_serial", w.next_projectile_serial, fields::saved, state_hash<7>);
+  v("next_particle_owner", w.next_particle_owner, fields::saved, state_hash<10>);
   v("paused", w.paused, fields::saved, state_hash<3>);
   v("player", w.player, ship_ref, fields::unhashed);  // set by the level
   v("outcome", w.outcome, fields::saved, state_hash<4>);
-  v("winner", w.winner, fields::saved, state_hash<5>);
+  v("winner", w.winner, team_ref, state_hash<5>);
   v("outcome_tick", w.outcome_tick, fields::saved, state_hash<6>);
   v("camera_mode", w.camera_mode, fields::saved, presentation_hash<3>);
   v("camera", w.camera, fields::saved, presentation_hash<4>);
@@ -304,10 +318,15 @@ void visit_fields(W& w, V&& v) {
   v("props", w.props, fields::checked, fields::unhashed);
   v("explosions", w.explosions, fields::saved, presentation_hash<2>);
   v("particles", w.particles, fields::saved, presentation_hash<6>);  // its own snapshot; hash_summary
+  v("team_names", w.team_names, fields::not_saved, fields::unhashed);    // from the level
   v("model_paths", w.model_paths, fields::not_saved, fields::unhashed);  // from the level
   v("effects", w.effects, fields::not_saved, fields::unhashed);          // the shared library
+  v("fx", w.fx, fields::not_saved, fields::unhashed);                    // resolved in `effects` at load
   v("dt", w.dt, fields::not_saved, fields::unhashed);                    // from the level's tick rate
 }
+
+// A particle owner no ship or projectile of this World has had before.
+inline OwnerId allocate_owner(World& w) { return OwnerId{w.next_particle_owner++}; }
 
 inline int64_t seconds_to_ticks(const World& w, double s) { return static_cast<int64_t>(std::llround(s / w.dt)); }
 

@@ -41,7 +41,7 @@ constexpr int kWidth = 1280, kHeight = 720;
 
 // A wall of effects: smoke (alpha), fire (half burn), sparks and beams (additive), every soft
 // method, all within a few units of a wall that fills the screen, some behind it.
-RenderView wall_stress(int wall_model) {
+RenderView wall_stress(ModelId wall_model) {
   RenderView v;
   v.camera.position = {0, 2, 18};
   v.camera.fov_y_radians = 0.9;

@@ -13,11 +13,11 @@ RenderView level_view(Renderer& r, const std::string& level, int ticks, int widt
   options.root_dir = root;
   Game game = Game::load_level(root + "/" + level, options);
   for (int t = 0; t < ticks; ++t) game.step(InputFrame{});
-  load_scene_resources(r, game.world(), root);
+  const std::vector<ModelId> models = load_scene_resources(r, game.world(), root);
   HudState hud;
   hud.show_hud = false;
   RenderView view;
-  build_render_view(game.world(), 1.0, CameraSettings{}, hud, width, height, view);
+  build_render_view(game.world(), models, 1.0, CameraSettings{}, hud, width, height, view);
   return view;
 }
 

@@ -17,7 +17,7 @@ arc::Game duel() {
 
 arc::HudLayer hud_of(const arc::Game& game, const arc::HudState& state, int width, int height) {
   arc::RenderView view;
-  arc::build_render_view(game.world(), 1.0, arc::CameraSettings{}, state, width, height, view);
+  arc::build_render_view(game.world(), {}, 1.0, arc::CameraSettings{}, state, width, height, view);
   return view.hud;
 }
 

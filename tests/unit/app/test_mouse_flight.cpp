@@ -39,7 +39,7 @@ struct LiveFlight {
     o.root_dir = ARCFIRE_SOURCE_DIR;
     return arc::Game::load_level(kDuel, o);
   }
-  const arc::Ship& me() const { return game.world().ships[size_t(game.world().player)]; }
+  const arc::Ship& me() const { return game.world().ship(game.world().player); }
 
   // One rendered frame: sample the devices, then every tick the frame owes, as window_loop does.
   template <class PerTick>

@@ -30,10 +30,10 @@ Game load(const std::string& level, int difficulty, uint64_t seed) {
   return Game::load_level(repo(level), o);
 }
 
-int ship_named(const World& w, const std::string& name) {
+ShipId ship_named(const World& w, const std::string& name) {
   for (const Ship& s : w.ships)
     if (s.name == name) return s.id;
-  return -1;
+  return {};
 }
 
 // A simple scripted pilot: turn the nose toward the nearest hostile (leading it a little), close
@@ -41,16 +41,16 @@ int ship_named(const World& w, const std::string& name) {
 // missiles when lined up. step_pursuit() also locks the nearest hostile so the missiles home.
 InputFrame pursue(const World& w) {
   InputFrame f;
-  const Ship& me = w.ships[w.player];
-  int target = -1;
+  const Ship& me = w.ship(w.player);
+  ShipId target;
   double best = 0;
   for (const Ship& s : w.ships) {
     if (!s.alive || !w.hostile(me, s)) continue;
     double d = glm::length(s.position - me.position);
-    if (target < 0 || d < best) target = s.id, best = d;
+    if (!target || d < best) target = s.id, best = d;
   }
-  if (target < 0) return f;
-  const Ship& t = w.ships[target];
+  if (!target) return f;
+  const Ship& t = w.ship(target);
   const glm::dvec3 rel = t.position - me.position;
   const double dist = glm::length(rel);
   const glm::dvec3 aim = t.position + (t.velocity - me.velocity) * (dist / 600.0);
@@ -83,9 +83,9 @@ struct FightStats {
 
 void step_pursuit(Game& g) {
   const World& w = g.world();
-  const Ship& me = w.ships[w.player];
+  const Ship& me = w.ship(w.player);
   if (!me.alive) return g.step(InputFrame{});
-  if (me.target < 0) return g.step(pursue(w), {Command::TargetNextHostile});
+  if (!me.target) return g.step(pursue(w), {Command::TargetNextHostile});
   g.step(pursue(w));
 }
 
@@ -93,31 +93,31 @@ FightStats run(const std::string& level, int difficulty, uint64_t seed, double m
   Game g = load(level, difficulty, seed);
   const World& w = g.world();
   FightStats st;
-  const int wing = ship_named(w, "Wingman");
+  const ShipId wing = ship_named(w, "Wingman");
   const int64_t limit = int64_t(max_s / w.dt);
   std::vector<bool> was_alive(w.ships.size(), true);
   while (int64_t(w.tick) < limit && w.outcome == Outcome::Undecided) {
-    if (w.player >= 0 && pursuit) step_pursuit(g);
+    if (w.player && pursuit) step_pursuit(g);
     else g.step(InputFrame{});
     for (const Ship& s : w.ships) {
-      if (s.alive && s.beam_firing && s.beam_target >= 0 && w.ships[s.beam_target].shield > 0)
+      if (s.alive && s.beam_firing && s.beam_target && w.ship(s.beam_target).shield > 0)
         st.shield_beam_s += w.dt;
-      if (was_alive[s.id] && !s.alive) {
-        was_alive[s.id] = false;
+      if (was_alive[s.id.index()] && !s.alive) {
+        was_alive[s.id.index()] = false;
         ++st.deaths;
         if (st.first_death_s < 0) st.first_death_s = w.tick * w.dt;
       }
     }
   }
   st.end_s = w.tick * w.dt;
-  if (w.player >= 0) {
-    const Ship& p = w.ships[w.player];
+  if (w.player) {
+    const Ship& p = w.ship(w.player);
     if (!p.alive) st.player_death_s = p.death_tick * w.dt;
     st.player_kills = p.kills;
   }
-  if (wing >= 0) {
-    if (!w.ships[wing].alive) st.wingman_death_s = w.ships[wing].death_tick * w.dt;
-    st.wingman_kills = w.ships[wing].kills;
+  if (wing) {
+    if (!w.ship(wing).alive) st.wingman_death_s = w.ship(wing).death_tick * w.dt;
+    st.wingman_kills = w.ship(wing).kills;
   }
   if (w.outcome != Outcome::Undecided) st.decided_s = w.outcome_tick * w.dt;
   return st;
@@ -217,8 +217,8 @@ TEST(Balance, DISABLED_Trace) {
     std::printf("%5.1f", w.tick * w.dt);
     for (const Ship& s : w.ships)
       std::printf(" | %s h%3.0f s%3.0f e%3.0f m%d %c d%4.0f", s.name.substr(0, 6).c_str(), s.hull, s.shield, s.energy,
-                  int(s.ai_state.mode), s.beam_firing ? (s.beam_target >= 0 ? 'H' : 'B') : '-',
-                  s.ai_state.target >= 0 ? glm::length(w.ships[s.ai_state.target].position - s.position) : -1.0);
+                  int(s.ai_state.mode), s.beam_firing ? (s.beam_target ? 'H' : 'B') : '-',
+                  s.ai_state.target ? glm::length(w.ship(s.ai_state.target).position - s.position) : -1.0);
     std::printf("\n");
   }
 }

@@ -34,8 +34,8 @@ TEST(BeamGeometry, StraightLineAtAShipHitsAndStallsOnTheShieldSphere) {
   Game g = facing_pair("beam_hit.json", -200);
   const World& w = g.world();
   const Ship& t = w.ships[1];
-  BeamHit hit = trace_beam(w, 0, {glm::dvec3(0, 0, -5), glm::dvec3(0, 0, -600)});
-  ASSERT_EQ(hit.ship, 1);
+  BeamHit hit = trace_beam(w, w.ships[0].id, {glm::dvec3(0, 0, -5), glm::dvec3(0, 0, -600)});
+  ASSERT_EQ(hit.ship, w.ships[1].id);
   EXPECT_TRUE(hit.on_shield);
   EXPECT_NEAR(glm::length(hit.point - t.position), t.cls->shield_radius, 1e-9);
   EXPECT_NEAR(hit.distance, 200.0 - 5.0 - t.cls->shield_radius, 1e-9);
@@ -43,8 +43,8 @@ TEST(BeamGeometry, StraightLineAtAShipHitsAndStallsOnTheShieldSphere) {
 
 TEST(BeamGeometry, BeamAimedAwayMisses) {
   Game g = facing_pair("beam_miss.json", -200);
-  BeamHit hit = trace_beam(g.world(), 0, {glm::dvec3(0, 0, -5), glm::dvec3(600, 0, -5)});
-  EXPECT_EQ(hit.ship, -1);
+  BeamHit hit = trace_beam(g.world(), g.world().ships[0].id, {glm::dvec3(0, 0, -5), glm::dvec3(600, 0, -5)});
+  EXPECT_FALSE(hit.ship);
   EXPECT_LT(hit.distance, 0.0);
 }
 
@@ -54,8 +54,8 @@ TEST(BeamGeometry, PolylineHitsOnTheRightSegmentAndDepletedShieldStopsAtTheHull)
   w.ships[1].shield = 0;
   // A jagged channel: the first segment misses, the second crosses the target.
   std::vector<glm::dvec3> line{{0, 0, 0}, {50, 0, -100}, {-50, 0, -300}};
-  BeamHit hit = trace_beam(w, 0, line);
-  ASSERT_EQ(hit.ship, 1);
+  BeamHit hit = trace_beam(w, w.ships[0].id, line);
+  ASSERT_EQ(hit.ship, w.ships[1].id);
   EXPECT_FALSE(hit.on_shield);
   EXPECT_NEAR(glm::length(hit.point - w.ships[1].position), w.ships[1].cls->collision_radius, 1e-9);
   EXPECT_GT(hit.distance, glm::length(line[1] - line[0]));
@@ -75,7 +75,7 @@ TEST(Beam, FiringAtATargetDrainsShieldThenHullAndCostsEnergy) {
   const double shield0 = w.ships[1].shield, hull0 = w.ships[1].hull;
   for (int i = 0; i < 30; ++i) g.step(fire());
   EXPECT_TRUE(w.ships[0].beam_firing);
-  EXPECT_EQ(w.ships[0].beam_target, 1);
+  EXPECT_EQ(w.ships[0].beam_target, w.ships[1].id);
   EXPECT_LT(w.ships[1].shield, shield0);
   EXPECT_DOUBLE_EQ(w.ships[1].hull, hull0);
   EXPECT_LT(w.ships[0].energy, w.ships[0].cls->energy);
@@ -110,13 +110,13 @@ TEST(Damage, FlowsShieldThenHullThenExplosion) {
   World& w = g.world_mut();
   Ship& t = w.ships[1];
   const double shield = t.shield, hull = t.hull;
-  apply_damage(w, t, shield * 0.5, t.position, 0);
+  apply_damage(w, t, shield * 0.5, t.position, w.ships[0].id);
   EXPECT_DOUBLE_EQ(t.shield, shield * 0.5);
   EXPECT_DOUBLE_EQ(t.hull, hull);
-  apply_damage(w, t, shield * 0.5 + 10.0, t.position, 0);
+  apply_damage(w, t, shield * 0.5 + 10.0, t.position, w.ships[0].id);
   EXPECT_DOUBLE_EQ(t.shield, 0.0);
   EXPECT_DOUBLE_EQ(t.hull, hull - 10.0);
-  apply_damage(w, t, hull, t.position, 0);
+  apply_damage(w, t, hull, t.position, w.ships[0].id);
   EXPECT_LE(t.hull, 0.0);
   EXPECT_TRUE(t.alive);  // deaths resolve inside the tick
   g.step(InputFrame{});
@@ -135,7 +135,7 @@ TEST(Damage, AttachedClustersGoWithTheirShipInTheSameTick) {
     attached.insert(attached.end(), e.clusters.begin(), e.clusters.end());
   ASSERT_FALSE(attached.empty());
   for (ClusterHandle c : attached) ASSERT_TRUE(w.particles->alive(c));
-  apply_damage(w, w.ships[1], 1e6, w.ships[1].position, 0);
+  apply_damage(w, w.ships[1], 1e6, w.ships[1].position, w.ships[0].id);
   g.step(InputFrame{});
   ASSERT_FALSE(w.ships[1].alive);
   for (ClusterHandle c : attached) EXPECT_FALSE(w.particles->alive(c));
@@ -149,7 +149,7 @@ TEST(Damage, SplashDamageReachesNeighboursOnlyWhenTheLevelEnablesIt) {
     std::string extra = splash ? R"( "splash": { "radius": 60, "damage": 50 },)" : "";
     Game g = Game::load_level(write_level("splash.json", test::level_text(ships, extra)), options());
     World& w = g.world_mut();
-    apply_damage(w, w.ships[1], 1e6, w.ships[1].position, 0);
+    apply_damage(w, w.ships[1], 1e6, w.ships[1].position, w.ships[0].id);
     g.step(InputFrame{});
     const Ship& c = w.ships[2];
     if (splash) EXPECT_LT(c.shield, c.cls->shield);
@@ -164,7 +164,7 @@ TEST(Shield, SphereDensityFollowsStrength) {
   const std::vector<ClusterHandle> full = w.ships[1].shield_fx.clusters;
   EXPECT_EQ(w.ships[1].shield_density, 4);
   const uint32_t particles_full = w.particles->stats().live_particles;
-  apply_damage(w, w.ships[1], w.ships[1].cls->shield * 0.6, w.ships[1].position, 0);
+  apply_damage(w, w.ships[1], w.ships[1].cls->shield * 0.6, w.ships[1].position, w.ships[0].id);
   g.step(InputFrame{});
   g.step(InputFrame{});
   EXPECT_EQ(w.ships[1].shield_density, 2);
@@ -176,7 +176,7 @@ TEST(Shield, SphereDensityFollowsStrength) {
 TEST(Shield, RegeneratesOnlyAfterTheDelay) {
   Game g = facing_pair("regen.json", -400);
   World& w = g.world_mut();
-  apply_damage(w, w.ships[1], 50, w.ships[1].position, 0);
+  apply_damage(w, w.ships[1], 50, w.ships[1].position, w.ships[0].id);
   const double after_hit = w.ships[1].shield;
   const int delay_ticks = int(std::llround(w.ships[1].cls->shield_regen_delay / w.dt));
   for (int i = 0; i < delay_ticks - 2; ++i) g.step(InputFrame{});
@@ -189,12 +189,12 @@ TEST(Missiles, HomeOnTheTargetAndHit) {
   Game g = facing_pair("missile.json", -300, "none", "", 150);
   World& w = g.world_mut();
   g.step(InputFrame{}, {Command::TargetNextHostile});
-  ASSERT_EQ(w.ships[0].target, 1);
+  ASSERT_EQ(w.ships[0].target, w.ships[1].id);
   InputFrame f;
   f.buttons = kFireSecondary;
   g.step(f);
   ASSERT_EQ(w.projectiles.size(), 1u);
-  EXPECT_EQ(w.projectiles[0].target, 1);
+  EXPECT_EQ(w.projectiles[0].target, w.ships[1].id);
   const double shield0 = w.ships[1].shield;
   for (int i = 0; i < 600 && w.ships[1].shield == shield0; ++i) g.step(InputFrame{});
   EXPECT_LT(w.ships[1].shield, shield0);

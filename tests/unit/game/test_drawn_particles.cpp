@@ -28,7 +28,7 @@ TEST(DrawnParticles, AttachedClusterStaysOnItsInterpolatedShip) {
   full.buttons = kAfterburner;
   for (int i = 0; i < 90; ++i) g.step(full);
   const World& w = g.world();
-  const Ship& me = w.ships.at(size_t(w.player));
+  const Ship& me = w.ship(w.player);
   ASSERT_FALSE(me.exhaust_fx.empty());
   ASSERT_FALSE(me.exhaust_fx[0].clusters.empty());
   const uint32_t exhaust = me.exhaust_fx[0].clusters[0].index;
@@ -40,8 +40,8 @@ TEST(DrawnParticles, AttachedClusterStaysOnItsInterpolatedShip) {
   glm::dvec3 tick_offset(0.0);
   for (double alpha : {1.0, 0.0, 0.25, 0.5, 0.75}) {
     RenderView v;
-    build_render_view(w, alpha, fixed, HudState{}, 1280, 720, v);
-    const glm::dvec3 hull = v.meshes.at(size_t(w.player)).position;
+    build_render_view(w, {}, alpha, fixed, HudState{}, 1280, 720, v);
+    const glm::dvec3 hull = v.meshes.at(w.player.index()).position;
     const glm::dvec3 offset = cluster_centre(v, exhaust) - hull;
     if (alpha == 1.0) tick_offset = offset;
     EXPECT_LT(glm::length(offset - tick_offset), 0.01 * travel) << "alpha " << alpha;

@@ -78,18 +78,18 @@ Coverage own_effect_coverage(bool cockpit, const std::string& dump_name) {
   fire.buttons = kFirePrimary;
   game.step(fire, cockpit ? std::vector<Command>{Command::CameraToggle} : std::vector<Command>{});
   const World& w = game.world();
-  const Ship& me = w.ships[size_t(w.player)];
+  const Ship& me = w.ship(w.player);
   for (int i = 0; i < 150 || me.last_hit_tick != w.tick; ++i) game.step(fire);
   EXPECT_EQ(me.last_hit_tick, w.tick);
   EXPECT_TRUE(me.beam_firing);
 
   Renderer renderer(RendererDesc{.offscreen = true});
   renderer.apply_settings(Settings::defaults());
-  load_scene_resources(renderer, w, ARCFIRE_SOURCE_DIR);
+  const std::vector<ModelId> models = load_scene_resources(renderer, w, ARCFIRE_SOURCE_DIR);
   HudState no_hud;
   no_hud.show_hud = false;
   RenderView view;
-  build_render_view(w, 1.0, CameraSettings{}, no_hud, kWidth, kHeight, view);
+  build_render_view(w, models, 1.0, CameraSettings{}, no_hud, kWidth, kHeight, view);
   RenderView without = view;
   const std::vector<uint32_t> own = own_clusters(me);
   std::erase_if(without.particles, [&](const ParticleInstance& p) {
@@ -179,11 +179,11 @@ TEST(TeamColors, BlueAndRedVipersWearTheirColours) {
   game.step(InputFrame{});
   Renderer renderer(RendererDesc{.offscreen = true});
   renderer.apply_settings(Settings::defaults());
-  load_scene_resources(renderer, game.world(), ARCFIRE_SOURCE_DIR);
+  const std::vector<ModelId> models = load_scene_resources(renderer, game.world(), ARCFIRE_SOURCE_DIR);
   HudState no_hud;
   no_hud.show_hud = false;
   RenderView view;
-  build_render_view(game.world(), 1.0, CameraSettings{}, no_hud, kWidth, kHeight, view);
+  build_render_view(game.world(), models, 1.0, CameraSettings{}, no_hud, kWidth, kHeight, view);
   renderer.render(view, kWidth, kHeight);
   const Image coloured = renderer.read_pixels();
   for (MeshInstance& m : view.meshes) m.team_color.a = 0.0f;

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#include <type_traits>
 
 #include "core/error.h"
 #include "core/rng.h"
@@ -12,6 +13,18 @@ namespace {
 
 using test::options;
 using test::repo;
+
+// The game's references are typed ids (game/sim/ids.h, particles/particle_ids.h): a team, a
+// model slot, a particle owner or a bare int given where a ship is meant does not compile.
+static_assert(!std::is_constructible_v<ShipId, TeamId>);
+static_assert(!std::is_constructible_v<ShipId, int>);
+static_assert(!std::is_constructible_v<TeamId, ShipId>);
+static_assert(!std::is_constructible_v<ModelSlot, ShipId>);
+static_assert(!std::is_constructible_v<OwnerId, ShipId>);
+static_assert(!std::is_constructible_v<EffectId, OwnerId>);
+static_assert(!std::is_assignable_v<decltype(Ship::target)&, int>);
+static_assert(!std::is_assignable_v<decltype(Projectile::owner)&, OwnerId>);
+static_assert(std::is_same_v<decltype(SpawnParams::owner), OwnerId>);
 
 // A scripted pilot: input is a pure function of the tick, so two runs see the same inputs.
 InputFrame scripted(uint64_t tick) {
@@ -110,9 +123,9 @@ TEST(PlayerInput, DrivesThePlayerShipOnly) {
   f.throttle = 127;
   f.yaw = 64;
   for (int i = 0; i < 60; ++i) g.step(f);
-  EXPECT_EQ(w.ships[w.player].controls, f);
-  EXPECT_GT(glm::length(w.ships[w.player].velocity), 10.0);
-  EXPECT_GT(forward_of(w.ships[w.player].orientation).x, 0.1);
+  EXPECT_EQ(w.ship(w.player).controls, f);
+  EXPECT_GT(glm::length(w.ship(w.player).velocity), 10.0);
+  EXPECT_GT(forward_of(w.ship(w.player).orientation).x, 0.1);
   EXPECT_NE(w.ships[1].controls, f);  // the enemy flies itself
 }
 
@@ -133,14 +146,14 @@ TEST(Targeting, NearestHostileNextHostileAndNext) {
   Game g = Game::load_level(repo("levels/skirmish.json"), options());
   const World& w = g.world();
   g.step(InputFrame{}, {Command::TargetNearest});
-  EXPECT_EQ(w.ships[w.player].target, 2);  // Red 1, not the wingman, who is closer
+  EXPECT_EQ(w.ship(w.player).target, w.ships[2].id);  // Red 1, not the wingman, who is closer
   g.step(InputFrame{}, {Command::TargetNextHostile});
-  EXPECT_EQ(w.ships[w.player].target, 3);
+  EXPECT_EQ(w.ship(w.player).target, w.ships[3].id);
   g.step(InputFrame{}, {Command::TargetNext});
-  EXPECT_EQ(w.ships[w.player].target, 4);
+  EXPECT_EQ(w.ship(w.player).target, w.ships[4].id);
   g.step(InputFrame{}, {Command::TargetNext});
   g.step(InputFrame{}, {Command::TargetNext});
-  EXPECT_EQ(w.ships[w.player].target, 1);  // next goes round every ship, the wingman included
+  EXPECT_EQ(w.ship(w.player).target, w.ships[1].id);  // next goes round every ship, the wingman included
 }
 
 TEST(Summary, HasShipsTickWinnerAndParticleCounts) {
@@ -161,10 +174,10 @@ TEST(Summary, HasShipsTickWinnerAndParticleCounts) {
 TEST(Outcome, PlayerDeathIsDefeat) {
   Game g = Game::load_level(repo("levels/duel.json"), options());
   World& w = g.world_mut();
-  w.ships[w.player].hull = -1;
+  w.ship(w.player).hull = -1;
   g.step(InputFrame{});
   EXPECT_EQ(w.outcome, Outcome::Defeat);
-  EXPECT_EQ(w.winner, "red");
+  EXPECT_EQ(w.team_name(w.winner), "red");
 }
 
 // Seed 0 means the level's own seed; the others check the outcome does not hinge on one seed.
@@ -179,9 +192,9 @@ TEST_P(AttractOutcome, IsDecidedWithinFiveMinutesOfGameTime) {
   const uint64_t limit = 5 * 60 * 60;
   while (w.outcome == Outcome::Undecided && g.tick() < limit) g.step(InputFrame{});
   EXPECT_EQ(w.outcome, Outcome::TeamWon) << g.state_dump();
-  EXPECT_TRUE(w.winner == "blue" || w.winner == "red") << w.winner;
+  EXPECT_TRUE(w.team_name(w.winner) == "blue" || w.team_name(w.winner) == "red") << w.team_name(w.winner);
   auto j = nlohmann::json::parse(g.summary_json());
-  EXPECT_EQ(j["winner"], w.winner);
+  EXPECT_EQ(j["winner"], w.team_name(w.winner));
   EXPECT_EQ(j["decided_tick"], w.outcome_tick);
   RecordProperty("decided_tick", std::to_string(g.tick()));
 }
@@ -206,7 +219,7 @@ TEST(Ai, FightersUseBothWeaponsEvadeAndBreakOff) {
       break_off = break_off || s.ai_state.mode == AiMode::BreakOff;
     }
     for (const Projectile& p : w.projectiles) {
-      if (w.ships[p.owner].ai != AiKind::Fighter) continue;
+      if (w.ship(p.owner).ai != AiKind::Fighter) continue;
       missile = missile || p.kind == SecondaryWeapon::Missile;
       plasma = plasma || p.kind == SecondaryWeapon::Plasma;
     }

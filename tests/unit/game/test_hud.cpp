@@ -31,7 +31,7 @@ Game range_game() {
 
 HudLayer hud_of(const World& w, int width = 1280, int height = 720) {
   RenderView v;
-  build_render_view(w, 1.0, CameraSettings{}, HudState{}, width, height, v);
+  build_render_view(w, {}, 1.0, CameraSettings{}, HudState{}, width, height, v);
   return v.hud;
 }
 
@@ -63,10 +63,10 @@ TEST(Hud, HitMarkerWhileTheBeamHitsAndNotBefore) {
   InputFrame fire;
   fire.buttons = kFirePrimary;
   for (int i = 0; i < 10; ++i) g.step(fire);
-  ASSERT_EQ(w.ships[1].last_attacker, 0);
+  ASSERT_EQ(w.ships[1].last_attacker, ShipId::from_index(0));
   ASSERT_GE(w.ships[1].last_hit_tick, w.tick - 3);  // the jagged channel may miss for a tick
   RenderView view;
-  build_render_view(w, 1.0, CameraSettings{}, HudState{}, 1280, 720, view);
+  build_render_view(w, {}, 1.0, CameraSettings{}, HudState{}, 1280, 720, view);
   const HudLayer& during = view.hud;
   glm::dvec2 c;
   ASSERT_TRUE(Projector::of(view.camera, 1280, 720).project(crosshair_point(w.ships[0], 1.0), c));
@@ -83,7 +83,7 @@ TEST(Hud, DamageFromBehindGlowsAtTheBottomEdgeAndPointsOnTheRing) {
   drone.position = drone.prev_position = glm::dvec3(0, 0, 400);  // behind the player
   const HudLayer calm = hud_of(w);
   w.ships[0].last_hit_tick = w.tick;
-  w.ships[0].last_attacker = 1;
+  w.ships[0].last_attacker = ShipId::from_index(1);
   const HudLayer hit = hud_of(w);
   int glow_at_bottom = 0;
   for (const HudQuad& q : hit.quads)
@@ -100,13 +100,13 @@ TEST(Hud, IncomingMissileWarningWithDistance) {
   EXPECT_FALSE(has_text(hud_of(w), "MISSILE "));  // "beam + MISSILES" is the weapon
   Projectile m;
   m.kind = SecondaryWeapon::Missile;
-  m.owner = 1;
-  m.target = 0;
+  m.owner = ShipId::from_index(1);
+  m.target = ShipId::from_index(0);
   m.position = m.prev_position = glm::dvec3(120, 0, 160);  // 200 m away, behind on the right
   w.projectiles.push_back(m);
   const HudLayer h = hud_of(w);
   EXPECT_TRUE(has_text(h, "MISSILE 200 m"));
-  m.target = 1;  // a missile on someone else is no warning
+  m.target = ShipId::from_index(1);  // a missile on someone else is no warning
   w.projectiles.back() = m;
   EXPECT_FALSE(has_text(hud_of(w), "MISSILE "));
 }
@@ -115,7 +115,7 @@ TEST(Hud, KillFeedNamesKillerAndVictimForAWhile) {
   Game g = range_game();
   World& w = g.world_mut();
   w.ships[1].hull = -1;
-  w.ships[1].last_attacker = 0;
+  w.ships[1].last_attacker = ShipId::from_index(0);
   g.step(InputFrame{});
   EXPECT_TRUE(has_text(hud_of(w), "Player destroyed Drone"));
   for (int i = 0; i < 9 * 60; ++i) g.step(InputFrame{});
@@ -132,7 +132,7 @@ TEST(Hud, RadarRangeFollowsTheNearestThreat) {
   w.ships[1].position = glm::dvec3(0, 0, -30000);
   EXPECT_EQ(radar_range(w, w.ships[0], rules), rules.radar_max_range);
   Projectile m;
-  m.target = 0;
+  m.target = ShipId::from_index(0);
   m.position = glm::dvec3(0, 0, 500);
   w.projectiles.push_back(m);
   EXPECT_EQ(radar_range(w, w.ships[0], rules), rules.radar_max_range);  // fits the two nearest threats

@@ -55,14 +55,14 @@ HudReading read_hud(const World& w, int width, int height) {
   h.focal = (height * 0.5) / std::tan(fov * 0.5);
   const Projection pr{w.camera.position, glm::conjugate(w.camera.orientation), h.focal, width * 0.5, height * 0.5};
   h.crosshair = {width * 0.5, height * 0.5};
-  const int focus = w.focus_ship();
-  if (focus < 0 || !w.ships[focus].alive) return h;
-  const Ship& me = w.ships[focus];
+  const ShipId focus = w.focus_ship();
+  if (!focus || !w.ship(focus).alive) return h;
+  const Ship& me = w.ship(focus);
   pr.project(me.position + forward_of(me.orientation) * me.cls->beam.range * 0.5, h.crosshair);
   h.energy = me.cls->energy > 0 ? me.energy / me.cls->energy : 0.0;
   h.plasma = me.secondary == SecondaryWeapon::Plasma;
-  if (me.target < 0 || !w.ships[me.target].alive) return h;
-  const Ship& t = w.ships[me.target];
+  if (!me.target || !w.ship(me.target).alive) return h;
+  const Ship& t = w.ship(me.target);
   h.has_target = true;
   h.distance = glm::length(t.position - me.position);
   glm::dvec2 px;
@@ -126,9 +126,9 @@ void TestPilot::act(const World& w, InputFrame& in, std::vector<Command>& comman
   const HudReading& seen = seen_[now];
   const HudReading& before = seen_[now > 0 ? now - 1 : 0];
   const glm::dvec2 hand = hand_offset(w);
-  const int me = w.focus_ship();
-  if (me < 0 || !w.ships[me].alive) return;
-  const ShipClassDef& cls = *w.ships[me].cls;
+  const ShipId me = w.focus_ship();
+  if (!me || !w.ship(me).alive) return;
+  const ShipClassDef& cls = *w.ship(me).cls;
   if (!seen.has_target) {
     // The Y key (next hostile), pressed again if nothing happened half a second later.
     if (w.tick - last_target_key_ > seconds_to_ticks(w, 0.5)) {

@@ -106,8 +106,8 @@ TEST(TestPilot, DISABLED_Trace) {
     const double e_off = std::acos(std::clamp(glm::dot(forward_of(e.orientation), -rel / dist), -1.0, 1.0)) / kDeg;
     std::printf("%5.1f d%5.0f | P h%3.0f s%3.0f e%3.0f off%4.0f %c | AI h%3.0f s%3.0f e%3.0f off%4.0f %c mode%d\n",
                 w.tick * w.dt, dist, p.hull, p.shield, p.energy, p_off,
-                p.beam_firing ? (p.beam_target >= 0 ? 'H' : 'B') : '-', e.hull, e.shield, e.energy, e_off,
-                e.beam_firing ? (e.beam_target >= 0 ? 'H' : 'B') : '-', int(e.ai_state.mode));
+                p.beam_firing ? (p.beam_target ? 'H' : 'B') : '-', e.hull, e.shield, e.energy, e_off,
+                e.beam_firing ? (e.beam_target ? 'H' : 'B') : '-', int(e.ai_state.mode));
   }
 }
 

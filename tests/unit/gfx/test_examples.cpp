@@ -15,7 +15,7 @@ TEST(RendererExample, DrawsAView) {
   REQUIRE_CONTEXT();
   // example begin
   Renderer renderer({.offscreen = true});
-  int ship = renderer.add_model(load_model(ARCFIRE_SOURCE_DIR "/assets/models/viper.glb"));
+  ModelId ship = renderer.add_model(load_model(ARCFIRE_SOURCE_DIR "/assets/models/viper.glb"));
   RenderView view;
   view.meshes.push_back({ship, {0, 0, -20}});
   renderer.set_sprites({load_sprite(ARCFIRE_SOURCE_DIR "/assets/textures/sprite_smoke.png")});
@@ -34,11 +34,13 @@ TEST(RendererExample, DrawsAView) {
 
 TEST(RenderViewExample, DescribesAFrame) {
   REQUIRE_CONTEXT();
+  Renderer renderer({.offscreen = true});
+  const ModelId ship = renderer.add_model(scenes::box_model({2, 1, 3}, {0.6f, 0.6f, 0.6f, 1}, glm::vec3(0.1f)));
   // example begin
   RenderView view;
   view.camera.position = {0.0, 2.0, 30.0};
   view.camera.fov_y_radians = 1.0;
-  view.meshes.push_back({.model = 0, .position = {0.0, 0.0, 0.0}});  // the first Renderer::add_model()
+  view.meshes.push_back({.model = ship, .position = {0.0, 0.0, 0.0}});  // ship: from Renderer::add_model()
   ParticleInstance spark{};
   spark.pos[2] = -30.0f;                   // relative to the camera: 30 units ahead
   spark.size = 0.5f;
@@ -47,8 +49,6 @@ TEST(RenderViewExample, DescribesAFrame) {
   view.particles.push_back(spark);
   view.hud.texts.push_back({8, 8, 1.0f, {1, 1, 1, 1}, "SHIELD 100"});
   // example end
-  Renderer renderer({.offscreen = true});
-  renderer.add_model(scenes::box_model({2, 1, 3}, {0.6f, 0.6f, 0.6f, 1}, glm::vec3(0.1f)));
   renderer.render(view, 160, 90);
   const FrameStats stats = renderer.last_stats();
   EXPECT_EQ(stats.particles_drawn, 1);

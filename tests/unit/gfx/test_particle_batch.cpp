@@ -127,8 +127,8 @@ struct ReachScene {
   ReachScene() {
     const ModelData wall = scenes::wall_model(6, 20, {0.3f, 0.4f, 0.5f, 1}, glm::vec3(0));
     boxes.push_back(cover_boxes(wall.primitives, 3));
-    view.meshes.push_back({0, {-3.2, 0, -10}});
-    view.meshes.push_back({7, {0, 0, -10.2}});  // an unknown model: no occluder
+    view.meshes.push_back({ModelId{1u}, {-3.2, 0, -10}});
+    view.meshes.push_back({ModelId{8u}, {0, 0, -10.2}});  // an unknown model: no occluder
     for (float z : {-9.8f, -5.0f}) view.particles.push_back(particle({-3, 0, z}, 0.5f, glm::vec3(1), 1.0f, 1.0f, SoftEdge::Linear));
     view.particles.push_back(particle({3, 0, -10}, 0.5f, glm::vec3(1), 1.0f, 1.0f, SoftEdge::Linear));
     view.particles.push_back(particle({-3, 0, -12}, 0.5f, glm::vec3(1), 1.0f, 1.0f, SoftEdge::Linear));

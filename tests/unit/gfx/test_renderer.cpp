@@ -55,7 +55,7 @@ TEST(Renderer, BurnBlendMatchesEquation3) {
   const glm::vec3 bgs[] = {{0.2f, 0.4f, 0.6f}, {0.9f, 0.1f, 0.3f}};
   const glm::vec3 fg(0.8f, 0.5f, 0.1f);
   const float alpha = 0.6f;
-  int wall_models[2] = {r->add_model(scenes::wall_model(100, 100, {0, 0, 0, 1}, bgs[0])),
+  ModelId wall_models[2] = {r->add_model(scenes::wall_model(100, 100, {0, 0, 0, 1}, bgs[0])),
                         r->add_model(scenes::wall_model(100, 100, {0, 0, 0, 1}, bgs[1]))};
   for (int b = 0; b < 2; ++b)
     for (float burn : {0.0f, 0.25f, 0.5f, 1.0f}) {
@@ -89,7 +89,7 @@ struct CutScene {
 CutScene cut_scene(Renderer& r, SoftEdge soft) {
   CutScene s;
   s.view = base_view();
-  int wall = r.add_model(scenes::wall_model(60, 60, {0, 0, 0, 1}, glm::vec3(0.05f, 0.05f, 0.1f)));
+  ModelId wall = r.add_model(scenes::wall_model(60, 60, {0, 0, 0, 1}, glm::vec3(0.05f, 0.05f, 0.1f)));
   s.view.meshes.push_back({wall, {0, 0, -12}, glm::angleAxis(glm::radians(60.0), glm::dvec3(0, 1, 0))});
   s.view.particles.push_back(particle({0, 0, -12}, 3.0f, glm::vec3(1.0f, 0.8f, 0.5f), 0.9f, 0.0f, soft));
   return s;
@@ -131,7 +131,7 @@ TEST(Renderer, SoftEdgesRemoveTheHardCut) {
 }
 
 // Meshes and particles near the origin, then everything (camera included) moved by 1e9.
-RenderView offset_scene(Renderer& r, int wall, int box, glm::dvec3 offset) {
+RenderView offset_scene(Renderer& r, ModelId wall, ModelId box, glm::dvec3 offset) {
   RenderView v = base_view();
   v.light_color = glm::vec3(1.0f, 0.95f, 0.9f);
   v.ambient = glm::vec3(0.1f);
@@ -152,8 +152,8 @@ TEST(Renderer, LargeCoordinatesRenderLikeTheOrigin) {
   REQUIRE_CONTEXT();
   auto r = make_renderer();
   r->set_sprites({scenes::soft_sprite(64)});
-  int wall = r->add_model(scenes::wall_model(80, 80, {0.5f, 0.5f, 0.55f, 1}, glm::vec3(0)));
-  int box = r->add_model(scenes::box_model({1.5f, 1.0f, 2.5f}, {0.7f, 0.3f, 0.2f, 1}, glm::vec3(0.05f)));
+  ModelId wall = r->add_model(scenes::wall_model(80, 80, {0.5f, 0.5f, 0.55f, 1}, glm::vec3(0)));
+  ModelId box = r->add_model(scenes::box_model({1.5f, 1.0f, 2.5f}, {0.7f, 0.3f, 0.2f, 1}, glm::vec3(0.05f)));
   r->render(offset_scene(*r, wall, box, glm::dvec3(0)), 320, 180);
   Image a = r->read_pixels();
   r->render(offset_scene(*r, wall, box, glm::dvec3(1e9, -1e9, 1e9)), 320, 180);
@@ -169,7 +169,7 @@ TEST(Renderer, DegenerateBillboardsGiveFinitePixels) {
   REQUIRE_CONTEXT();
   auto r = make_renderer(true);
   r->set_sprites({scenes::soft_sprite(32)});
-  int wall = r->add_model(scenes::wall_model(50, 50, {0.3f, 0.3f, 0.3f, 1}, glm::vec3(0.1f)));
+  ModelId wall = r->add_model(scenes::wall_model(50, 50, {0.3f, 0.3f, 0.3f, 1}, glm::vec3(0.1f)));
   RenderView v = base_view();
   v.meshes.push_back({wall, {0, 0, -10}});
   auto at_camera = particle({0, 0, 0}, 1.0f, glm::vec3(1, 0.5, 0.2), 0.8f, 0.3f, SoftEdge::Linear);
@@ -227,8 +227,8 @@ TEST(Renderer, ReversedAndStandardDepthAgree) {
   REQUIRE_CONTEXT();
   auto r = make_renderer();
   r->set_sprites({scenes::soft_sprite(64)});
-  int wall = r->add_model(scenes::wall_model(80, 80, {0.5f, 0.5f, 0.55f, 1}, glm::vec3(0)));
-  int box = r->add_model(scenes::box_model({1.5f, 1.0f, 2.5f}, {0.7f, 0.3f, 0.2f, 1}, glm::vec3(0.05f)));
+  ModelId wall = r->add_model(scenes::wall_model(80, 80, {0.5f, 0.5f, 0.55f, 1}, glm::vec3(0)));
+  ModelId box = r->add_model(scenes::box_model({1.5f, 1.0f, 2.5f}, {0.7f, 0.3f, 0.2f, 1}, glm::vec3(0.05f)));
   Image images[2];
   for (int i = 0; i < 2; ++i) {
     RenderSettings s = test::plain_settings();
@@ -330,7 +330,7 @@ TEST(Renderer, SoftEdgesSkipParticlesNoSurfaceCanReach) {
   REQUIRE_CONTEXT();
   auto r = make_renderer();
   r->set_sprites({scenes::soft_sprite(64)});
-  const int wall = r->add_model(scenes::wall_model(6, 20, {0.3f, 0.4f, 0.5f, 1}, glm::vec3(0)));
+  const ModelId wall = r->add_model(scenes::wall_model(6, 20, {0.3f, 0.4f, 0.5f, 1}, glm::vec3(0)));
   RenderView v = base_view();
   v.meshes.push_back({wall, {-3.2, 0, -10}});  // the left half of the view, at depth 10
   auto render = [&](SoftEdge m) {

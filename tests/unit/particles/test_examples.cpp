@@ -29,16 +29,19 @@ TEST(EffectLibraryExample, LoadsTheGameEffects) {
   EffectLibrary fx;
   fx.load_directory("assets/effects");
   const EffectDef& boom = fx.get("ship_explosion");
+  const EffectId explosion = fx.id("ship_explosion");   // fx.get(explosion) is the same definition
   std::filesystem::current_path(cwd);
   EXPECT_EQ(boom.name, "ship_explosion");
   EXPECT_FALSE(boom.clusters.empty());
+  EXPECT_EQ(&fx.get(explosion), &boom);
+  EXPECT_NE(fx.id("shield_sphere"), explosion);
 }
 
 TEST(ParticleWorldExample, SpawnStepCollect) {
   const std::string cwd = std::filesystem::current_path();
   std::filesystem::current_path(kRoot);
   const uint64_t level_seed = 7;
-  const uint32_t ship_owner = 1;
+  const OwnerId ship_owner{1u};
   const glm::dvec3 where(0, 0, -50), mount(2, 0, -4), forward(0, 0, -1);
   const glm::dvec3 ship_position(0, 0, -20), ship_velocity(0, 0, -30);
   const glm::dquat ship_rotation(1, 0, 0, 0);
@@ -51,8 +54,9 @@ TEST(ParticleWorldExample, SpawnStepCollect) {
   EffectLibrary fx;
   fx.load_directory("assets/effects");
   ParticleWorld world(ParticleConfig{.seed = level_seed}, &fx);
-  EffectHandle boom = world.spawn("ship_explosion", SpawnParams{.position = where});
-  ClusterHandle beam = world.spawn_lightning("lightning_beam", ship_owner, mount, forward);
+  const EffectId explosion = fx.id("ship_explosion");   // once, at load
+  EffectHandle boom = world.spawn(explosion, SpawnParams{.position = where});
+  ClusterHandle beam = world.spawn_lightning(fx.id("lightning_beam"), ship_owner, mount, forward);
   world.set_owner_transform(ship_owner, OwnerTransform{ship_position, ship_rotation, ship_velocity});
   world.step(tick, camera);
   world.collect(camera, particles, drawn_owners);
@@ -75,7 +79,7 @@ TEST(ParticleWorldDrawnOwners, AttachedClusterFollowsTheDrawnOwner) {
     "emitter": { "burst": 64 }, "particles": { "lifetime": 0 } } ] })",
                "shield.json");
   ParticleWorld world(ParticleConfig{.seed = 3}, &fx);
-  const uint32_t owner = 5;
+  const OwnerId owner{5u};
   const EffectHandle shield = world.spawn("shield", SpawnParams{.owner = owner});
   ParticleCamera camera;
   camera.position = {0, 0, 200};
@@ -95,14 +99,14 @@ TEST(ParticleWorldDrawnOwners, AttachedClusterFollowsTheDrawnOwner) {
   const glm::dvec3 offset = mean_position(at_tick, cluster) + camera.position - now;
   for (double alpha : {0.0, 0.25, 0.5, 0.75, 1.0}) {
     const glm::dvec3 drawn_at = prev + (now - prev) * alpha;
-    const std::vector<DrawnOwner> drawn{{owner, drawn_at, turn}, {owner + 1, glm::dvec3(1e6), turn}};
+    const std::vector<DrawnOwner> drawn{{owner, drawn_at, turn}, {OwnerId{6u}, glm::dvec3(1e6), turn}};
     std::vector<ParticleInstance> out;
     world.collect(camera, out, drawn);
     const glm::dvec3 centre = mean_position(out, cluster) + camera.position;
     EXPECT_NEAR(glm::length(centre - drawn_at - offset), 0.0, 1e-3) << "alpha " << alpha;
   }
   // An owner the list does not name keeps the tick's pose.
-  const std::vector<DrawnOwner> others{{owner + 1, glm::dvec3(1e6), turn}};
+  const std::vector<DrawnOwner> others{{OwnerId{6u}, glm::dvec3(1e6), turn}};
   std::vector<ParticleInstance> out;
   world.collect(camera, out, others);
   EXPECT_NEAR(glm::length(mean_position(out, cluster) + camera.position - now - offset), 0.0, 1e-3);

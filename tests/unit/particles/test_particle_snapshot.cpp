@@ -64,15 +64,15 @@ struct Scene {
 
   void spawn_ships() {
     for (uint32_t id = 1; id <= 3; ++id) {
-      world.set_owner_transform(id, owner_at(0, int(id)));
-      world.spawn("shield_sphere", SpawnParams{.owner = id, .scale = 1.1});
-      world.spawn("engine_exhaust", SpawnParams{.position = {0, 0, 4}, .owner = id, .priority = 0});
+      world.set_owner_transform(OwnerId{id}, owner_at(0, int(id)));
+      world.spawn("shield_sphere", SpawnParams{.owner = OwnerId{id}, .scale = 1.1});
+      world.spawn("engine_exhaust", SpawnParams{.position = {0, 0, 4}, .owner = OwnerId{id}, .priority = 0});
     }
   }
 
   void step(uint64_t t) {
-    for (uint32_t id = 1; id <= 3; ++id) world.set_owner_transform(id, owner_at(t, int(id)));
-    if (t % 50 == 3) beams.push_back(world.spawn_lightning("lightning_beam", 1 + uint32_t(t % 3), {0, 0, -5}, {0, 0, -1}));
+    for (uint32_t id = 1; id <= 3; ++id) world.set_owner_transform(OwnerId{id}, owner_at(t, int(id)));
+    if (t % 50 == 3) beams.push_back(world.spawn_lightning("lightning_beam", OwnerId{1 + uint32_t(t % 3)}, {0, 0, -5}, {0, 0, -1}));
     if (t % 50 == 40 && !beams.empty()) {
       world.destroy(beams.front());
       beams.erase(beams.begin());
@@ -82,7 +82,7 @@ struct Scene {
     if (t % 7 == 2) world.spawn("hull_sparks", SpawnParams{.position = {0, double(t % 11), 0}, .priority = 0});
     if (t % 13 == 5) world.spawn("shield_hit", SpawnParams{.position = {3, 1, double(t % 5)}, .priority = 0});
     if (t % 60 == 11) {
-      const uint32_t owner = 1000 + uint32_t(t);
+      const OwnerId owner{1000 + uint32_t(t)};
       world.set_owner_transform(owner, owner_at(t, 7));
       trails.push_back(world.spawn("missile_trail", SpawnParams{.owner = owner}));
     }

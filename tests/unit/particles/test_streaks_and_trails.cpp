@@ -142,9 +142,9 @@ TEST(Trails, ASpacingEmitterMovedInOneTickLaysItsParticlesAlongThePathAtAnySpeed
   for (double distance : {100.0, 1000.0}) {
     SCOPED_TRACE(distance);
     ParticleWorld w(ParticleConfig{.seed = 2}, &library());
-    w.set_owner_transform(1, OwnerTransform{});
-    w.spawn("trail", SpawnParams{.owner = 1});
-    w.set_owner_transform(1, OwnerTransform{.position = {distance, 0, 0}, .velocity = {distance * 60.0, 0, 0}});
+    w.set_owner_transform(OwnerId{1u}, OwnerTransform{});
+    w.spawn("trail", SpawnParams{.owner = OwnerId{1u}});
+    w.set_owner_transform(OwnerId{1u}, OwnerTransform{.position = {distance, 0, 0}, .velocity = {distance * 60.0, 0, 0}});
     const glm::dvec3 camera(distance * 0.5, 0, distance * 1.5);
     w.step(1, camera_at(camera));
     const std::vector<double> xs = trail_positions(w, camera);
@@ -156,11 +156,11 @@ TEST(Trails, ASpacingEmitterMovedInOneTickLaysItsParticlesAlongThePathAtAnySpeed
 
 TEST(Trails, SpacingCarriesAcrossTicksAndNothingIsEmittedAtRest) {
   ParticleWorld w(ParticleConfig{.seed = 2}, &library());
-  w.set_owner_transform(1, OwnerTransform{});
-  const EffectHandle trail = w.spawn("trail", SpawnParams{.owner = 1});
+  w.set_owner_transform(OwnerId{1u}, OwnerTransform{});
+  const EffectHandle trail = w.spawn("trail", SpawnParams{.owner = OwnerId{1u}});
   const glm::dvec3 camera(100, 0, 300);
   for (uint64_t t = 1; t <= 6; ++t) {
-    w.set_owner_transform(1, OwnerTransform{.position = {37.25 * double(std::min<uint64_t>(t, 5)), 0, 0}});
+    w.set_owner_transform(OwnerId{1u}, OwnerTransform{.position = {37.25 * double(std::min<uint64_t>(t, 5)), 0, 0}});
     w.step(t, camera_at(camera));
   }
   const std::vector<double> xs = trail_positions(w, camera);
@@ -178,16 +178,16 @@ TEST(Trails, SkippedTicksAndSnapshotsStayExact) {
   away.orientation = glm::angleAxis(M_PI, glm::dvec3(0, 1, 0));
   OwnerTransform missile{.position = {-50, 0, 0}};
   for (ParticleWorld* w : {&a, &b}) {
-    w->set_owner_transform(1, missile);
-    w->spawn("busy_trail", SpawnParams{.owner = 1});
+    w->set_owner_transform(OwnerId{1u}, missile);
+    w->spawn("busy_trail", SpawnParams{.owner = OwnerId{1u}});
   }
   uint32_t skipped = 0;
   std::vector<uint8_t> saved;
   for (uint64_t t = 1; t <= 90; ++t) {
     missile.velocity = {180.0 + 2.0 * double(t), 30.0 * std::sin(0.1 * double(t)), 0};
     missile.position += missile.velocity / 60.0;
-    a.set_owner_transform(1, missile);
-    b.set_owner_transform(1, missile);
+    a.set_owner_transform(OwnerId{1u}, missile);
+    b.set_owner_transform(OwnerId{1u}, missile);
     a.step(t, looking);
     b.step(t, t >= 20 && t < 70 ? away : looking);
     skipped += b.stats().skipped_clusters;
@@ -208,7 +208,7 @@ TEST(Trails, SkippedTicksAndSnapshotsStayExact) {
     missile.velocity = {180.0 + 2.0 * double(t), 30.0 * std::sin(0.1 * double(t)), 0};
     missile.position += missile.velocity / 60.0;
     if (t <= 45) continue;
-    c.set_owner_transform(1, missile);
+    c.set_owner_transform(OwnerId{1u}, missile);
     c.step(t, looking);
   }
   EXPECT_EQ(hash_of(c), hash_of(a));

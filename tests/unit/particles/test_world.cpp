@@ -77,16 +77,16 @@ TEST(World, SkippedClustersCatchUpBitForBitForEveryAnimationType) {
     ParticleWorld b(ParticleConfig{.seed = 3}, &library());
     OwnerTransform ship{{0, 0, 0}, glm::angleAxis(0.3, glm::dvec3(0, 1, 0)), {0, 0, 0}};
     for (ParticleWorld* w : {&a, &b}) {
-      w->set_owner_transform(1, ship);
-      if (fx == "beam") w->spawn_lightning(fx, 1, {0, 0, 0}, {0, 0, -1});
+      w->set_owner_transform(OwnerId{1u}, ship);
+      if (fx == "beam") w->spawn_lightning(fx, OwnerId{1u}, {0, 0, 0}, {0, 0, -1});
       else w->spawn(fx, SpawnParams{.position = {1, 2, 3}, .velocity = {3, 0, 0}});
     }
     uint32_t skipped = 0;
     for (uint64_t t = 1; t <= 90; ++t) {
       ship.position.x += 0.5;
       ship.orientation = glm::angleAxis(0.01, glm::dvec3(0, 0, 1)) * ship.orientation;
-      a.set_owner_transform(1, ship);
-      b.set_owner_transform(1, ship);
+      a.set_owner_transform(OwnerId{1u}, ship);
+      b.set_owner_transform(OwnerId{1u}, ship);
       a.step(t, looking_at_origin());
       b.step(t, t >= 20 && t < 70 ? looking_away() : looking_at_origin());
       skipped += b.stats().skipped_clusters;
@@ -133,8 +133,8 @@ TEST(World, CollectLeavesOutClustersOutsideTheFrustum) {
 TEST(World, AttachedShieldMovesAndTurnsWithItsOwner) {
   ParticleWorld w(ParticleConfig{}, &library());
   OwnerTransform t{{1000, 0, 0}, glm::dquat(1, 0, 0, 0), {}};
-  w.set_owner_transform(7, t);
-  EffectHandle e = w.spawn("shield", SpawnParams{.owner = 7});
+  w.set_owner_transform(OwnerId{7u}, t);
+  EffectHandle e = w.spawn("shield", SpawnParams{.owner = OwnerId{7u}});
   w.step(1, looking_at_origin());
   ParticleCamera cam;
   cam.position = {1000, 0, 50};
@@ -144,7 +144,7 @@ TEST(World, AttachedShieldMovesAndTurnsWithItsOwner) {
   // Move and turn the owner a quarter turn about Y, and move the camera with it.
   t.position = {2000, 500, 0};
   t.orientation = glm::angleAxis(M_PI / 2, glm::dvec3(0, 1, 0));
-  w.set_owner_transform(7, t);
+  w.set_owner_transform(OwnerId{7u}, t);
   w.step(2, looking_at_origin());
   ParticleCamera cam2;
   cam2.position = {2000, 500, 50};
@@ -164,21 +164,21 @@ TEST(World, AttachedShieldMovesAndTurnsWithItsOwner) {
 
 TEST(World, DestroyingTheOwnerDestroysAttachedClustersAtOnce) {
   ParticleWorld w(ParticleConfig{}, &library());
-  w.set_owner_transform(7, {});
-  w.set_owner_transform(8, {});
-  EffectHandle shield = w.spawn("shield", SpawnParams{.owner = 7});
-  ClusterHandle beam = w.spawn_lightning("beam", 7, {0, 0, -5}, {0, 0, -1});
-  EffectHandle other = w.spawn("shield", SpawnParams{.owner = 8});
+  w.set_owner_transform(OwnerId{7u}, {});
+  w.set_owner_transform(OwnerId{8u}, {});
+  EffectHandle shield = w.spawn("shield", SpawnParams{.owner = OwnerId{7u}});
+  ClusterHandle beam = w.spawn_lightning("beam", OwnerId{7u}, {0, 0, -5}, {0, 0, -1});
+  EffectHandle other = w.spawn("shield", SpawnParams{.owner = OwnerId{8u}});
   w.step(1, looking_at_origin());
   EXPECT_EQ(w.stats().live_clusters, 3u);
-  w.destroy_owner(7);
+  w.destroy_owner(OwnerId{7u});
   EXPECT_FALSE(w.alive(shield.clusters[0]));
   EXPECT_FALSE(w.alive(beam));
   EXPECT_TRUE(w.alive(other.clusters[0]));
   EXPECT_EQ(w.stats().live_clusters, 1u);
   EXPECT_EQ(w.stats().live_particles, 100u);
   // A stale handle stays dead even when its slot is reused.
-  EffectHandle again = w.spawn("shield", SpawnParams{.owner = 8});
+  EffectHandle again = w.spawn("shield", SpawnParams{.owner = OwnerId{8u}});
   EXPECT_FALSE(w.alive(shield.clusters[0]));
   EXPECT_TRUE(w.alive(again.clusters[0]));
   EXPECT_FALSE(ClusterHandle{});
@@ -186,8 +186,8 @@ TEST(World, DestroyingTheOwnerDestroysAttachedClustersAtOnce) {
 
 TEST(World, LightningIsAttachedCutAndReadable) {
   ParticleWorld w(ParticleConfig{.seed = 9}, &library());
-  w.set_owner_transform(1, {{0, 0, 0}, glm::dquat(1, 0, 0, 0), {}});
-  ClusterHandle ch = w.spawn_lightning("beam", 1, {0, 0, -2}, {0, 0, -1});
+  w.set_owner_transform(OwnerId{1u}, {{0, 0, 0}, glm::dquat(1, 0, 0, 0), {}});
+  ClusterHandle ch = w.spawn_lightning("beam", OwnerId{1u}, {0, 0, -2}, {0, 0, -1});
   std::vector<glm::dvec3> pts = w.lightning_points(ch);
   ASSERT_GE(pts.size(), 3u);  // available the tick it is spawned
   EXPECT_EQ(pts[0], glm::dvec3(0, 0, -2));
@@ -209,7 +209,7 @@ TEST(World, LightningIsAttachedCutAndReadable) {
   const glm::dvec3 hit = w.lightning_point_at(ch, 50.0);
   EXPECT_GT(glm::length(hit - glm::dvec3(0, 0, -2)), 40.0);
   // Moving the owner moves the channel.
-  w.set_owner_transform(1, {{0, 100, 0}, glm::dquat(1, 0, 0, 0), {}});
+  w.set_owner_transform(OwnerId{1u}, {{0, 100, 0}, glm::dquat(1, 0, 0, 0), {}});
   EXPECT_NEAR(w.lightning_points(ch)[1].y, 100.0, 1e-9);
   // The seed segment survives a sizzle; later segments change.
   const std::vector<glm::dvec3> before = w.lightning_points(ch);
@@ -221,8 +221,8 @@ TEST(World, LightningIsAttachedCutAndReadable) {
 
 TEST(World, FractionalSpawnRateAccumulates) {
   ParticleWorld w(ParticleConfig{.tick_seconds = 1.0 / 60.0}, &library());
-  w.set_owner_transform(2, {});
-  w.spawn("trickle", SpawnParams{.owner = 2});
+  w.set_owner_transform(OwnerId{2u}, {});
+  w.spawn("trickle", SpawnParams{.owner = OwnerId{2u}});
   for (uint64_t t = 1; t <= 60; ++t) w.step(t, looking_at_origin());
   EXPECT_EQ(w.stats().live_particles, 30u);  // 30 per second at 60 Hz: one every other tick
 }
@@ -266,10 +266,10 @@ TEST(World, OutputIsCameraRelativeAndIndependentOfWorldOffset) {
 
 TEST(World, CopyIsDeepAndStepsIdentically) {
   ParticleWorld w(ParticleConfig{.seed = 11}, &library());
-  w.set_owner_transform(1, {});
+  w.set_owner_transform(OwnerId{1u}, {});
   w.spawn("linear", {});
-  w.spawn("shield", SpawnParams{.owner = 1});
-  w.spawn_lightning("beam", 1, {}, {0, 0, -1});
+  w.spawn("shield", SpawnParams{.owner = OwnerId{1u}});
+  w.spawn_lightning("beam", OwnerId{1u}, {}, {0, 0, -1});
   for (uint64_t t = 1; t <= 10; ++t) w.step(t, looking_at_origin());
   ParticleWorld copy(w);
   EXPECT_EQ(hash_of(copy), hash_of(w));
@@ -278,7 +278,7 @@ TEST(World, CopyIsDeepAndStepsIdentically) {
     copy.step(t, looking_at_origin());
     ASSERT_EQ(hash_of(copy), hash_of(w)) << t;
   }
-  copy.destroy_owner(1);
+  copy.destroy_owner(OwnerId{1u});
   copy.step(41, looking_at_origin());
   w.step(41, looking_at_origin());
   EXPECT_NE(hash_of(copy), hash_of(w));
@@ -303,8 +303,8 @@ TEST(World, HashCoversParticleAttributesAndClusterState) {
 
 TEST(World, ShieldFlashBrightensNearTheImpactAndFades) {
   ParticleWorld w(ParticleConfig{}, &library());
-  w.set_owner_transform(1, {});
-  EffectHandle s = w.spawn("shield", SpawnParams{.owner = 1, .intensity = 0.2});
+  w.set_owner_transform(OwnerId{1u}, {});
+  EffectHandle s = w.spawn("shield", SpawnParams{.owner = OwnerId{1u}, .intensity = 0.2});
   w.step(1, looking_at_origin());
   std::vector<ParticleInstance> calm, lit, later;
   w.collect(looking_at_origin(), calm);
@@ -327,19 +327,19 @@ TEST(World, ShieldFlashBrightensNearTheImpactAndFades) {
 TEST(World, UnknownEffectIsInputError) {
   ParticleWorld w(ParticleConfig{}, &library());
   EXPECT_THROW(w.spawn("nope", {}), InputError);
-  EXPECT_THROW(w.spawn_lightning("linear", 1, {}, {0, 0, -1}), InputError);
+  EXPECT_THROW(w.spawn_lightning("linear", OwnerId{1u}, {}, {0, 0, -1}), InputError);
 }
 
 }  // namespace
 
 TEST(World, ReleasingAnOwnerLetsItsWorldSpaceTrailFadeAndDropsTheRest) {
   ParticleWorld w(ParticleConfig{}, &library());
-  w.set_owner_transform(9, {{500, 0, 0}, glm::dquat(1, 0, 0, 0), {}});
-  EffectHandle trail = w.spawn("linear", SpawnParams{.owner = 9});
-  EffectHandle shield = w.spawn("shield", SpawnParams{.owner = 9});
+  w.set_owner_transform(OwnerId{9u}, {{500, 0, 0}, glm::dquat(1, 0, 0, 0), {}});
+  EffectHandle trail = w.spawn("linear", SpawnParams{.owner = OwnerId{9u}});
+  EffectHandle shield = w.spawn("shield", SpawnParams{.owner = OwnerId{9u}});
   for (uint64_t t = 1; t <= 10; ++t) w.step(t, looking_at_origin());
   const uint32_t before = w.stats().live_particles;
-  w.release_owner(9);
+  w.release_owner(OwnerId{9u});
   EXPECT_FALSE(w.alive(shield.clusters[0]));  // it moved with the owner: gone with it
   ASSERT_TRUE(w.alive(trail.clusters[0]));    // world-space smoke stays and fades
   uint32_t last = w.stats().live_particles;
@@ -357,9 +357,9 @@ TEST(World, ReleasingAnOwnerLetsItsWorldSpaceTrailFadeAndDropsTheRest) {
 // it lives its "free_lifetime" (2 s by default); a channel on an owner lives until destroyed.
 TEST(World, AFreeLightningChannelEndsAfterItsFreeLifetime) {
   ParticleWorld w(ParticleConfig{.seed = 5}, &library());
-  w.set_owner_transform(1, OwnerTransform{});
+  w.set_owner_transform(OwnerId{1u}, OwnerTransform{});
   const EffectHandle free_bolt = w.spawn("beam", SpawnParams{});
-  const ClusterHandle held = w.spawn_lightning("beam", 1, {0, 0, 0}, {0, 0, -1});
+  const ClusterHandle held = w.spawn_lightning("beam", OwnerId{1u}, {0, 0, 0}, {0, 0, -1});
   for (uint64_t t = 1; t <= 120; ++t) w.step(t, looking_at_origin());
   EXPECT_TRUE(w.alive(free_bolt.clusters.at(0)));
   w.step(121, looking_at_origin());  // 120 ticks (2 s) after its first
