@@ -71,7 +71,7 @@ TEST(StateFields, HashWordsOfEachPassAreNumberedWithoutGapsOrClashes) {
     EXPECT_EQ(check_hash_words(hash_slots(camera, pass)), "");
     EXPECT_EQ(check_hash_words(hash_slots(world, pass)), "");
   }
-  EXPECT_EQ(hash_slots(ship, kStateHashPass).size(), 22u);
+  EXPECT_EQ(hash_slots(ship, kStateHashPass).size(), 23u);  // word 22: its particle owner
   EXPECT_EQ(hash_slots(ship, kPresentationHashPass).size(), 11u);
 }
 
