@@ -9,11 +9,6 @@
 #include "game/sim/world.h"
 
 namespace arc {
-namespace {
-
-const char* difficulty_name(int d) { return d == 0 ? "easy" : d == 2 ? "hard" : "normal"; }
-
-}  // namespace
 
 SessionRecorder::SessionRecorder(const std::string& path, const std::string& level_path, const Game& game,
                                  const std::string& build_id)
@@ -24,7 +19,7 @@ SessionRecorder::SessionRecorder(const std::string& path, const std::string& lev
   h.seed = w.seed;
   tick_rate_ = static_cast<uint64_t>(std::lround(1.0 / w.dt));
   h.tick_rate = static_cast<int>(tick_rate_);
-  h.difficulty = difficulty_name(w.difficulty);
+  h.difficulty = difficulty_name(static_cast<Difficulty>(w.difficulty));
   h.build = build_id;
   // The settings that change the simulation travel with the recording, so a session played
   // with --quality low replays exactly under any other quality.

@@ -23,15 +23,6 @@
 namespace arc {
 namespace {
 
-const char* difficulty_name(Difficulty d) {
-  switch (d) {
-    case Difficulty::Easy: return "easy";
-    case Difficulty::Normal: return "normal";
-    case Difficulty::Hard: return "hard";
-  }
-  return "normal";
-}
-
 // The pause menu. After victory or defeat Retry comes first. The AI's difficulty is part of
 // the simulated game, fixed when it starts, so a change says that it waits for the restart.
 struct PauseMenu {

@@ -21,6 +21,10 @@ class World;  // game/sim/world.h: ships, projectiles, particle world, level sta
 
 enum class Difficulty : uint8_t { Easy = 0, Normal = 1, Hard = 2 };
 constexpr Difficulty last_enumerator(Difficulty) { return Difficulty::Hard; }
+// "easy", "normal" or "hard", as level files, replay headers and the pause menu spell them.
+constexpr const char* difficulty_name(Difficulty d) {
+  return d == Difficulty::Easy ? "easy" : d == Difficulty::Hard ? "hard" : "normal";
+}
 
 struct GameOptions {
   Difficulty difficulty = Difficulty::Normal;
