@@ -23,28 +23,13 @@
 #include "game/sim/world.h"
 #include "gfx/renderer.h"
 #include "platform/platform.h"
+#include "gfx_test_util.h"
 #include "test_helpers.h"
 
 namespace arc {
 namespace {
 
 constexpr int kWidth = 1280, kHeight = 720;  // as a player sees it
-
-HeadlessContext* context(std::string& why) {
-  static std::unique_ptr<HeadlessContext> ctx;
-  static std::string error;
-  static bool tried = false;
-  if (!tried) {
-    tried = true;
-    try {
-      ctx = create_headless_context();
-    } catch (const std::exception& e) {
-      error = e.what();
-    }
-  }
-  why = error;
-  return ctx.get();
-}
 
 // The player between two red gunners that hold still and fire everything ahead: one in front
 // (beams and missiles hit the front of the player's shield, the player's beam hits it) and one
@@ -131,14 +116,14 @@ Coverage own_effect_coverage(bool cockpit, const std::string& dump_name) {
 
 TEST(OwnView, OwnEffectsStayOffTheCrosshairInTheChaseCamera) {
   std::string why;
-  if (!context(why)) GTEST_SKIP() << "no EGL context: " << why;
+  if (!test::headless(why)) GTEST_SKIP() << "no EGL context: " << why;
   const Coverage c = own_effect_coverage(false, "own_view_chase");
   EXPECT_LT(c.share, 0.05);
 }
 
 TEST(OwnView, OwnEffectsStayOffTheCrosshairInTheCockpit) {
   std::string why;
-  if (!context(why)) GTEST_SKIP() << "no EGL context: " << why;
+  if (!test::headless(why)) GTEST_SKIP() << "no EGL context: " << why;
   const Coverage c = own_effect_coverage(true, "own_view_cockpit");
   EXPECT_LT(c.share, 0.05);
   EXPECT_GT(c.own_particles, 0);  // the own beam is still drawn
@@ -169,7 +154,7 @@ TEST(TeamColors, ShipModelsMarkTheirTeamRegions) {
 // on the left and red ones on the right appear only with the team colours on.
 TEST(TeamColors, BlueAndRedVipersWearTheirColours) {
   std::string why;
-  if (!context(why)) GTEST_SKIP() << "no EGL context: " << why;
+  if (!test::headless(why)) GTEST_SKIP() << "no EGL context: " << why;
   const std::string level = test::write_level("team_frame.json", test::level_text(R"(
     { "name": "Blue", "class": "viper", "team": "blue", "ai": "none", "position": [-11, 0, 0] },
     { "name": "Red", "class": "viper", "team": "red", "ai": "none", "position": [11, 0, 0] })",
