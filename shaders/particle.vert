@@ -11,8 +11,6 @@ uniform float u_tan_half_y; // tan(fov_y / 2)
 uniform float u_size_clamp; // largest on-screen size as a fraction of screen height
 uniform float u_near;
 uniform vec3 u_linearize;   // view depth = x / (y·depth + z), denominator ≥ 0 in every depth mode
-uniform vec2 u_sprite_texels; // sprite array layer size in texels
-uniform float u_viewport_h;   // scene height in pixels
 out vec2 v_uv;
 out float v_depth;          // linear view depth of this fragment (varies along axis-locked quads)
 // Everything constant over one particle is flat, so a software rasteriser interpolates only the
@@ -23,7 +21,7 @@ flat out vec4 v_color;      // (rgb·alpha, alpha·(1 − burn)): burn folded in
 // one formula, no per-method branches, because a software rasteriser pays for every branch on
 // every pixel. The per-instance products are taken here, once per vertex.
 flat out vec4 v_soft;        // linearize.x·inv_extent, inv_extent, offset·inv_extent − bias, use texture alpha (0/1)
-flat out vec3 v_aux;         // contrast (0/1), sprite layer, texture LOD
+flat out vec2 v_aux;         // contrast (0/1), sprite layer
 const float kEps = 1e-6;
 
 void main() {
@@ -33,7 +31,7 @@ void main() {
   vec4 i_axis_rot = uintBitsToFloat(texelFetch(u_particles, first + 1));
   vec4 i_color = uintBitsToFloat(texelFetch(u_particles, first + 2));
   vec2 i_burn_extent = uintBitsToFloat(w3.xy);
-  uint i_sprite = w3.z & 0xFFFFu;                              // uint16 sprite
+  uint i_sprite = w3.z & 0xFFu;                                // uint8 sprite (then uint8 screen priority)
   uvec2 i_soft_board = uvec2((w3.z >> 16) & 0xFFu, w3.z >> 24);  // uint8 soft_edge, uint8 billboard
   vec2 corner = vec2((gl_VertexID & 1) != 0 ? 1.0 : -1.0, (gl_VertexID & 2) != 0 ? 1.0 : -1.0);
   vec3 c = (u_view * vec4(i_pos_size.xyz, 1.0)).xyz;
@@ -81,12 +79,5 @@ void main() {
   v_soft = m == 0u || clear ? vec4(0.0, 0.0, -1.0, 0.0)
          : m == 4u ? vec4(u_linearize.x * inv_e, inv_e, 1.0, 1.0)
                    : vec4(u_linearize.x * inv_e, inv_e, 0.0, 0.0);
-  // The mip level the rasteriser would derive from the uv derivatives: the quad lies parallel
-  // to the image plane (pushing it along the view ray keeps its screen footprint), so texels per
-  // pixel are constant over it; one explicit LOD per particle spares the per-pixel derivatives.
-  float px_per_unit = 0.5 * u_viewport_h / (dist * u_tan_half_y);
-  vec2 tex_per_px = u_sprite_texels / (2.0 * vec2(size, half_long) * px_per_unit);
-  vec2 sx = vec2(right.x, up.x) * tex_per_px, sy = vec2(right.y, up.y) * tex_per_px;
-  float rho = max(length(sx), length(sy));
-  v_aux = vec3(m == 2u ? 1.0 : 0.0, float(i_sprite), log2(max(rho, 1e-30)));
+  v_aux = vec2(m == 2u ? 1.0 : 0.0, float(i_sprite));
 }

@@ -55,6 +55,11 @@ Settings Settings::defaults() {
   s.define_choice("render.sky", "baked", {"baked", "exact"},
                   "nebula background: baked once per level into a cube map, or evaluated per pixel every frame");
   s.define_integer("render.sky_resolution", 256, 16, 1024, "texels along each face of the baked nebula cube map");
+  s.define_number("render.overdraw_budget", 3.0, 0.0, 64.0,
+                  "screen layers of particle blending per frame before the nearest, largest particles are shrunk,"
+                  " faded and dropped (low screen priority first); 0: no budget");
+  s.define_number("render.overdraw_near", 40.0, 1.0, 1e6,
+                  "distance in world units within which the overdraw budget reduces particles at full strength");
   // Particles
   s.define_integer("particles.budget", 200000, 1000, 4000000, "largest number of live particles");
   s.define_integer("particles.lightning_interval", 0, 0, 60,

@@ -2,7 +2,9 @@
 #include "gfx/image_compare.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <sstream>
 
 namespace arc {
@@ -48,6 +50,18 @@ void write_failure_images(const std::string& prefix, const Image& actual, const 
   save_image(prefix + "_actual.png", actual);
   if (expected.width == actual.width && expected.height == actual.height && expected.rgba.size() == actual.rgba.size())
     save_image(prefix + "_diff.png", difference_image(expected, actual));
+}
+
+double psnr_db(const Image& a, const Image& b) {
+  if (a.width != b.width || a.height != b.height || a.rgba.size() != b.rgba.size()) return std::nan("");
+  double sum = 0;
+  for (size_t i = 0; i < a.rgba.size(); i += 4)
+    for (size_t c = 0; c < 3; ++c) {
+      const double d = double(a.rgba[i + c]) - double(b.rgba[i + c]);
+      sum += d * d;
+    }
+  const double mse = sum / std::max<double>(1.0, double(a.rgba.size() / 4 * 3));
+  return mse > 0 ? 10.0 * std::log10(255.0 * 255.0 / mse) : std::numeric_limits<double>::infinity();
 }
 
 }  // namespace arc

@@ -28,6 +28,9 @@ struct ImageDiff {
 
 ImageDiff compare_images(const Image& expected, const Image& actual, const ImageCompareRule& rule = {});
 Image difference_image(const Image& expected, const Image& actual);  // |a−b|·8, alpha 255
+// Peak signal-to-noise ratio of the RGB channels in dB, 10·log10(255² / mean squared error);
+// +infinity for identical images, NaN when the sizes differ.
+double psnr_db(const Image& a, const Image& b);
 // Writes <prefix>_actual.png and <prefix>_diff.png (diff only when the sizes match).
 void write_failure_images(const std::string& prefix, const Image& actual, const Image& expected);
 

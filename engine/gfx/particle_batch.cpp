@@ -69,10 +69,20 @@ void ParticleBatch::prepare(const RenderView& v, const ViewProjection& vp, const
                             const ParticleBatchOptions& options) {
   visible = culled_offscreen = over_draw_limit = sorted = soft_shaded = 0;
   any_soft = any_contrast = false;
+  runs.clear();
   const glm::vec3 forward = -glm::vec3(glm::transpose(vp.view)[2]);  // camera −Z in world space
   cull_and_flag(v, vp, forward, model_boxes, options.soft_override);
+  const OverdrawFrame frame{glm::mat3(vp.view), 1.0f / vp.proj[1][1], float(v.camera.near_plane), options.size_clamp,
+                            options.width, options.height, v.time_seconds};
+  overdraw = budget_.apply(particles, areas, frame, options.overdraw);
   visible = int(particles.size());
   if (particles.empty()) return;
+  keys_.clear();
+  any_ordered_ = false;
+  for (const ParticleInstance& q : particles) {
+    keys_.push_back(sortable_bits(q.pos[0] * forward.x + q.pos[1] * forward.y + q.pos[2] * forward.z));
+    any_ordered_ = any_ordered_ || q.color[3] * (1.0f - q.burn) > 0.0f;
+  }
   // Pure additive particles need no order; as soon as one is alpha blended, the whole set is
   // ordered, because an additive glow in front of smoke must not be darkened by it.
   if (any_ordered_ && options.sorting != RenderSettings::Sorting::Off)
@@ -83,13 +93,14 @@ void ParticleBatch::prepare(const RenderView& v, const ViewProjection& vp, const
   if (particles.size() > options.max_particles) {
     over_draw_limit = int(particles.size() - options.max_particles);
     particles.erase(particles.begin(), particles.begin() + std::ptrdiff_t(particles.size() - options.max_particles));
+    areas.erase(areas.begin(), areas.begin() + std::ptrdiff_t(areas.size() - options.max_particles));
   }
-  // Which program and whether the depth copy is needed, from the particles that are drawn.
-  for (const ParticleInstance& q : particles) {
-    const bool soft = q.soft_edge != 0 && !(q.soft_edge & kSoftClear);
-    soft_shaded += soft;
-    any_soft = any_soft || soft;
-    any_contrast = any_contrast || (soft && q.soft_edge == uint8_t(SoftEdge::Contrast));
+  // Runs by program, from the particles that are drawn; the depth copy only for a soft run.
+  group_runs(particles, areas, options.max_runs, runs);
+  for (const ParticleInstance& q : particles) soft_shaded += needs_depth(q);
+  for (const ParticleRun& r : runs) {
+    any_soft = any_soft || r.soft;
+    any_contrast = any_contrast || r.contrast;
   }
 }
 
@@ -106,8 +117,6 @@ void ParticleBatch::cull_and_flag(const RenderView& v, const ViewProjection& vp,
   const glm::vec3 planes[4] = {glm::normalize(glm::vec3(1, 0, tx)), glm::normalize(glm::vec3(-1, 0, tx)),
                                glm::normalize(glm::vec3(0, 1, ty)), glm::normalize(glm::vec3(0, -1, ty))};
   particles.clear();
-  keys_.clear();
-  any_ordered_ = false;
   for (const ParticleInstance& p : v.particles) {
     bool dark = p.color[0] <= 0 && p.color[1] <= 0 && p.color[2] <= 0 && p.color[3] <= 0;
     float depth = p.pos[0] * fwd.x + p.pos[1] * fwd.y + p.pos[2] * fwd.z;
@@ -123,9 +132,7 @@ void ParticleBatch::cull_and_flag(const RenderView& v, const ViewProjection& vp,
     ParticleInstance q = p;
     if (soft_override >= 0) q.soft_edge = uint8_t(soft_override);
     if (q.soft_edge != 0 && !occluders_.soft_can_matter(q, b, near)) q.soft_edge |= kSoftClear;
-    any_ordered_ = any_ordered_ || q.color[3] * (1.0f - q.burn) > 0.0f;
     particles.push_back(q);
-    keys_.push_back(sortable_bits(depth));
   }
 }
 
@@ -133,8 +140,13 @@ void ParticleBatch::sort(RenderSettings::Sorting sorting, const glm::vec3& forwa
   if (sorting == RenderSettings::Sorting::Cluster) cluster_depth_keys(particles, forward, keys_);
   radix_sort_back_to_front(keys_, order_);
   sorted_.resize(particles.size());
-  for (size_t i = 0; i < order_.size(); ++i) sorted_[i] = particles[order_[i]];
+  sorted_areas_.resize(areas.size());
+  for (size_t i = 0; i < order_.size(); ++i) {
+    sorted_[i] = particles[order_[i]];
+    sorted_areas_[i] = areas[order_[i]];
+  }
   particles.swap(sorted_);
+  areas.swap(sorted_areas_);
   sorted = int(particles.size());
 }
 

@@ -3,13 +3,16 @@
 // From the view's particles and the frame's camera, prepare() keeps the visible ones (not dark,
 // not wholly behind the camera, not wholly outside a side of the frustum), applies the global
 // soft-edge override, flags with kSoftClear those no opaque mesh can reach (particle_occluders.h),
-// sorts back to front when any kept particle is alpha blended (DESIGN.md "Rendering": pure
-// additive ones need no order), and drops the farthest beyond the draw limit. The particle pass
-// uploads `particles` as they are and draws them in one call.
+// holds the frame to its screen-space overdraw budget (overdraw_budget.h), sorts back to front
+// when any kept particle is alpha blended (DESIGN.md "Rendering": pure additive ones need no
+// order), drops the farthest beyond the draw limit and splits the result into runs by shader
+// variant (particle_runs.h). The particle pass uploads `particles` as they are and draws each
+// run with its program.
 //
 //   ParticleBatch batch;
 //   batch.prepare(view, make_view_projection(view.camera, aspect, true, true), model_boxes, {});
 //   if (batch.any_soft) { /* copy the depth buffer first */ }
+//   for (const ParticleRun& run : batch.runs) { /* one draw each */ }
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -17,6 +20,8 @@
 #include <vector>
 
 #include "gfx/cover_boxes.h"
+#include "gfx/overdraw_budget.h"
+#include "gfx/particle_runs.h"
 #include "gfx/particle_occluders.h"
 #include "gfx/render_settings.h"
 #include "gfx/render_view.h"
@@ -28,11 +33,19 @@ struct ParticleBatchOptions {
   int soft_override = -1;  // RenderSettings::soft_override
   RenderSettings::Sorting sorting = RenderSettings::Sorting::Full;
   size_t max_particles = std::numeric_limits<size_t>::max();  // what one draw can pull
+  OverdrawOptions overdraw;  // the screen-space budget (0 layers: none, areas still estimated)
+  float size_clamp = 0.5f;   // RenderSettings::size_clamp, as particle.vert applies it
+  int width = 1280, height = 720;  // scene pixels, for the blended-area estimate
+  int max_runs = 24;         // draws the batch may be split into (particle_runs.h)
 };
 
 struct ParticleBatch {
-  // Copies of the kept particles in draw order, soft_edge overridden and flagged.
+  // Copies of the kept particles in draw order, soft_edge overridden and flagged, reduced by
+  // the overdraw budget; areas[i]: particles[i]'s estimated blended pixels.
   std::vector<ParticleInstance> particles;
+  std::vector<float> areas;
+  std::vector<ParticleRun> runs;  // spans of `particles`, one draw each
+  OverdrawStats overdraw;
   int visible = 0;           // kept before the draw limit (FrameStats::particles_drawn)
   int culled_offscreen = 0;  // quad wholly outside a side of the frustum
   int over_draw_limit = 0;   // farthest ones left out beyond max_particles
@@ -43,6 +56,7 @@ struct ParticleBatch {
 
   void prepare(const RenderView& view, const ViewProjection& vp, const ModelCoverBoxes& model_boxes,
                const ParticleBatchOptions& options);
+  void restart_smoothing() { budget_.reset(); }
 
  private:
   void cull_and_flag(const RenderView& view, const ViewProjection& vp, const glm::vec3& forward,
@@ -50,6 +64,8 @@ struct ParticleBatch {
   void sort(RenderSettings::Sorting sorting, const glm::vec3& forward);
   std::vector<uint32_t> keys_, order_;  // depth keys of `particles`, and the sorted order
   std::vector<ParticleInstance> sorted_;
+  std::vector<float> sorted_areas_;
+  OverdrawBudget budget_;  // keeps its smoothing from frame to frame
   OccluderSet occluders_;
   bool any_ordered_ = false;  // some kept particle has alpha·(1 − burn) > 0
 };

@@ -15,12 +15,32 @@ namespace {
 
 // Contrast power 2 (the default) squares instead of calling pow(); power 1 is the identity
 // curve, the plain soft program.
-const Program& choose_program(const ShaderPrograms& programs, const ParticleBatch& batch, float contrast_power) {
-  if (!batch.any_soft) return programs.particle_hard;
-  if (!batch.any_contrast) return programs.particle_soft;
+const Program& choose_program(const ShaderPrograms& programs, const ParticleRun& run, float contrast_power) {
+  if (!run.soft) return programs.particle_hard;
+  if (!run.contrast) return programs.particle_soft;
   if (contrast_power == 2.0f) return programs.particle_square;
   if (contrast_power == 1.0f) return programs.particle_soft;
   return programs.particle_contrast;
+}
+
+// The frame's uniforms of one particle program (each program the runs use, once a frame).
+void set_uniforms(const Program& particle, const RenderSettings& rs, const ParticleFrame& frame) {
+  glUniformMatrix4fv(particle.loc("u_view"), 1, GL_FALSE, glm::value_ptr(frame.vp.view));
+  glUniformMatrix4fv(particle.loc("u_proj"), 1, GL_FALSE, glm::value_ptr(frame.vp.proj));
+  glUniform1f(particle.loc("u_tan_half_y"), float(std::tan(frame.fov_y_radians * 0.5)));
+  glUniform1f(particle.loc("u_size_clamp"), rs.size_clamp);
+  glUniform1f(particle.loc("u_near"), frame.near_plane);
+  glUniform1f(particle.loc("u_inv_near_fade"), rs.near_fade > 0.0f ? 1.0f / rs.near_fade : 1e30f);
+  glUniform1f(particle.loc("u_contrast_power"), rs.contrast_power);
+  // view depth = x / (y·depth + z) with the denominator's sign made positive in every mode
+  // (standard depth has depth + B ≤ 0), so the shader guards it with one max().
+  const glm::vec2 linearize = frame.vp.linearize;
+  float lsign = linearize.x >= 0.0f ? 1.0f : -1.0f;
+  glUniform3f(particle.loc("u_linearize"), lsign * linearize.x, lsign, lsign * linearize.y);
+  glUniform1i(particle.loc("u_sprites"), 0);
+  glUniform1i(particle.loc("u_scene_depth"), 1);
+  glUniform1i(particle.loc("u_particles"), 2);
+  glUniform2f(particle.loc("u_inv_depth_size"), 1.0f / float(frame.scene_width), 1.0f / float(frame.scene_height));
 }
 
 }  // namespace
@@ -87,8 +107,6 @@ void ParticlePass::set_sprites(const std::vector<Image>& sprites, RenderSettings
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   apply_texture_filter(GL_TEXTURE_2D_ARRAY, filter);
-  sprite_w_ = w;
-  sprite_h_ = h;
 }
 
 void ParticlePass::set_texture_filter(RenderSettings::Filter filter) {
@@ -117,34 +135,14 @@ void ParticlePass::upload(const std::vector<ParticleInstance>& particles) {
   }
 }
 
-long long ParticlePass::draw(const ParticleBatch& batch, const ShaderPrograms& programs, const RenderSettings& rs,
-                             const ParticleFrame& frame) {
+int ParticlePass::draw(const ParticleBatch& batch, const ShaderPrograms& programs, const RenderSettings& rs,
+                       const ParticleFrame& frame, long long* fragments) {
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(rs.reversed_z ? GL_GREATER : GL_LESS);
   glDepthMask(GL_FALSE);
   glEnable(GL_BLEND);
   glBlendEquation(GL_FUNC_ADD);
   glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  const Program& particle = choose_program(programs, batch, rs.contrast_power);
-  glUseProgram(particle.id);
-  glUniformMatrix4fv(particle.loc("u_view"), 1, GL_FALSE, glm::value_ptr(frame.vp.view));
-  glUniformMatrix4fv(particle.loc("u_proj"), 1, GL_FALSE, glm::value_ptr(frame.vp.proj));
-  glUniform1f(particle.loc("u_tan_half_y"), float(std::tan(frame.fov_y_radians * 0.5)));
-  glUniform1f(particle.loc("u_size_clamp"), rs.size_clamp);
-  glUniform1f(particle.loc("u_near"), frame.near_plane);
-  glUniform1f(particle.loc("u_inv_near_fade"), rs.near_fade > 0.0f ? 1.0f / rs.near_fade : 1e30f);
-  glUniform1f(particle.loc("u_contrast_power"), rs.contrast_power);
-  // view depth = x / (y·depth + z) with the denominator's sign made positive in every mode
-  // (standard depth has depth + B ≤ 0), so the shader guards it with one max().
-  const glm::vec2 linearize = frame.vp.linearize;
-  float lsign = linearize.x >= 0.0f ? 1.0f : -1.0f;
-  glUniform3f(particle.loc("u_linearize"), lsign * linearize.x, lsign, lsign * linearize.y);
-  glUniform2f(particle.loc("u_sprite_texels"), float(sprite_w_), float(sprite_h_));
-  glUniform1f(particle.loc("u_viewport_h"), float(frame.scene_height));
-  glUniform1i(particle.loc("u_sprites"), 0);
-  glUniform1i(particle.loc("u_scene_depth"), 1);
-  glUniform1i(particle.loc("u_particles"), 2);
-  glUniform2f(particle.loc("u_inv_depth_size"), 1.0f / float(frame.scene_width), 1.0f / float(frame.scene_height));
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D_ARRAY, sprite_tex_);
   glActiveTexture(GL_TEXTURE1);
@@ -157,17 +155,34 @@ long long ParticlePass::draw(const ParticleBatch& batch, const ShaderPrograms& p
     if (!fragment_query_) glGenQueries(1, &fragment_query_);
     glBeginQuery(GL_SAMPLES_PASSED, fragment_query_);
   }
-  glDrawElements(GL_TRIANGLES, GLsizei(uploaded_ * 6), GL_UNSIGNED_INT, nullptr);
-  long long fragments = -1;
+  // One draw per run, each with its program; a program's uniforms are set the first time a
+  // run of the frame uses it.
+  std::vector<GLuint> ready;
+  GLuint current = 0;
+  int draws = 0;
+  for (const ParticleRun& run : batch.runs) {
+    const Program& particle = choose_program(programs, run, rs.contrast_power);
+    if (particle.id != current) {
+      glUseProgram(particle.id);
+      current = particle.id;
+      if (std::find(ready.begin(), ready.end(), current) == ready.end()) {
+        set_uniforms(particle, rs, frame);
+        ready.push_back(current);
+      }
+    }
+    const size_t first_index = size_t(run.first) * 6 * sizeof(uint32_t);
+    glDrawElements(GL_TRIANGLES, GLsizei(run.count * 6), GL_UNSIGNED_INT, reinterpret_cast<const void*>(first_index));
+    ++draws;
+  }
   if (count_fragments_) {
     glEndQuery(GL_SAMPLES_PASSED);
     GLuint64 samples = 0;
     glGetQueryObjectui64v(fragment_query_, GL_QUERY_RESULT, &samples);
-    fragments = static_cast<long long>(samples);
+    if (fragments) *fragments = static_cast<long long>(samples);
   }
   glDepthMask(GL_TRUE);
   glDisable(GL_BLEND);
-  return fragments;
+  return draws;
 }
 
 }  // namespace arc

@@ -3,9 +3,10 @@
 // Owns the sprite array texture, the buffer texture the vertex shader pulls ParticleInstance
 // from (shaders/particle.vert builds each quad from four RGBA32UI texels), and the index buffer
 // (two triangles per particle). draw() blends with depth test on and depth write off,
-// GL_ONE, GL_ONE_MINUS_SRC_ALPHA (controlled-additive "burn", Ilmonen 2006 §4), with the
-// cheapest program the batch allows: hard edges when no drawn particle is soft, the contrast
-// curve only when one uses it. The CPU half (culling, flags, sorting) is particle_batch.h.
+// GL_ONE, GL_ONE_MINUS_SRC_ALPHA (controlled-additive "burn", Ilmonen 2006 §4), one draw per
+// run of the batch (particle_runs.h) with the cheapest program the run allows: hard edges when
+// no particle of it is soft, the contrast curve only when one uses it. The CPU half (culling,
+// flags, budget, sorting, runs) is particle_batch.h.
 //
 //   ParticlePass particles(0);
 //   particles.set_sprites({load_sprite("assets/textures/sprite_smoke.png")}, settings.filter);
@@ -51,10 +52,11 @@ class ParticlePass {
   size_t max_particles_per_draw() const { return max_particles_per_draw_; }
 
   void upload(const std::vector<ParticleInstance>& particles);
-  // Draws what upload() received into the bound framebuffer. Returns the samples blended when
-  // counting fragments (an occlusion query read back at once, so it stalls), else −1.
-  long long draw(const ParticleBatch& batch, const ShaderPrograms& programs, const RenderSettings& settings,
-                 const ParticleFrame& frame);
+  // Draws what upload() received into the bound framebuffer, one draw per run of the batch,
+  // and returns the number of draws. When counting fragments, *fragments gets the samples
+  // blended (an occlusion query over all runs, read back at once, so it stalls).
+  int draw(const ParticleBatch& batch, const ShaderPrograms& programs, const RenderSettings& settings,
+           const ParticleFrame& frame, long long* fragments);
   void count_fragments(bool on) { count_fragments_ = on; }
 
  private:
@@ -64,7 +66,6 @@ class ParticlePass {
   size_t uploaded_ = 0;         // particles in vbo_
   size_t max_particles_per_draw_ = 0;
   GLuint sprite_tex_ = 0;
-  int sprite_w_ = 1, sprite_h_ = 1;
   bool count_fragments_ = false;
   GLuint fragment_query_ = 0;
 };

@@ -19,6 +19,11 @@ struct RenderSettings {
   float contrast_power = 2.0f;
   bool sky_exact = false;    // the nebula evaluated per pixel every frame, not looked up in a baked cube map
   int sky_resolution = 256;  // texels along a face of the baked cube map (16..1024)
+  // Screen layers of particle blending a frame may estimate before the nearest and largest
+  // particles are shrunk, faded and dropped (overdraw_budget.h); 0: no budget.
+  float overdraw_budget = 0.0f;
+  float overdraw_near = 40.0f;  // m: beyond this the budget's reductions weaken with distance squared
+  int max_particle_draws = 24;  // runs the particle batch may be split into (particle_runs.h); ≥ 1
 };
 
 }  // namespace arc

@@ -66,6 +66,11 @@ struct HudLayer {
 
 struct RenderView {
   CameraView camera;
+  // Game time of this frame in seconds (ticks and the interpolation alpha): what the renderer's
+  // frame-to-frame smoothing (the overdraw budget) measures time by, so a replayed or headless
+  // frame sequence renders the same as the live one. Standing still (0 → 0, a paused game)
+  // keeps the smoothing where it is; a jump back or of more than half a second restarts it.
+  double time_seconds = 0.0;
   glm::vec3 light_direction{-0.4f, -0.6f, -0.7f};  // direction light travels, world space
   glm::vec3 light_color{1.0f, 0.96f, 0.9f};
   glm::vec3 ambient{0.08f, 0.09f, 0.12f};

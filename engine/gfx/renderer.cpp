@@ -119,6 +119,8 @@ void Renderer::apply_settings(const Settings& s) {
   r.contrast_power = float(s.number("render.contrast_power"));
   r.sky_exact = s.choice("render.sky") == "exact";
   r.sky_resolution = int(s.integer("render.sky_resolution"));
+  r.overdraw_budget = float(s.number("render.overdraw_budget"));
+  r.overdraw_near = float(s.number("render.overdraw_near"));
   set_render_settings(r);
 }
 
@@ -153,6 +155,8 @@ void Renderer::render(const RenderView& v, int width, int height) {
   m.stats.particle_gpu_ms = m.timers.last_particle_gpu_ms();
 }
 
+void Renderer::restart_smoothing() { impl_->batch.restart_smoothing(); }
+
 void Renderer::Impl::clear_scene() {
   if (clip_control) glClipControl(GL_LOWER_LEFT, rs.reversed_z ? GL_ZERO_TO_ONE : GL_NEGATIVE_ONE_TO_ONE);
   targets.bind_scene();
@@ -167,8 +171,22 @@ void Renderer::Impl::clear_scene() {
 void Renderer::Impl::draw_particles(const RenderView& v, const ViewProjection& vp) {
   const auto t0 = std::chrono::steady_clock::now();
   stats.particles_in = int(v.particles.size());
-  batch.prepare(v, vp, meshes.cover_boxes(), {rs.soft_override, rs.sorting, particles.max_particles_per_draw()});
+  ParticleBatchOptions options;
+  options.soft_override = rs.soft_override;
+  options.sorting = rs.sorting;
+  options.max_particles = particles.max_particles_per_draw();
+  options.overdraw = {rs.overdraw_budget, rs.overdraw_near};
+  options.size_clamp = rs.size_clamp;
+  options.max_runs = std::max(1, rs.max_particle_draws);
+  options.width = targets.scene_width();
+  options.height = targets.scene_height();
+  batch.prepare(v, vp, meshes.cover_boxes(), options);
   stats.particles_drawn = batch.visible;
+  stats.overdraw_estimated_layers = batch.overdraw.estimated_layers;
+  stats.overdraw_budgeted_layers = batch.overdraw.budgeted_layers;
+  stats.particles_reduced = batch.overdraw.reduced;
+  stats.particles_dropped = batch.overdraw.dropped;
+  stats.overdraw_cap = batch.overdraw.cap;
   stats.culled_offscreen = batch.culled_offscreen;
   stats.over_draw_limit = batch.over_draw_limit;
   stats.sorted = batch.sorted;
@@ -186,9 +204,9 @@ void Renderer::Impl::draw_particles(const RenderView& v, const ViewProjection& v
   }
   const ParticleFrame frame{vp, v.camera.fov_y_radians, float(v.camera.near_plane), targets.depth_copy(),
                             targets.scene_width(), targets.scene_height()};
-  stats.particle_fragments = particles.draw(batch, programs, rs, frame);
-  ++stats.draw_calls;
-  ++stats.particle_draw_calls;
+  const int draws = particles.draw(batch, programs, rs, frame, &stats.particle_fragments);
+  stats.draw_calls += draws;
+  stats.particle_draw_calls += draws;
   stats.particle_pass_gpu_ms = timers.end_particle_pass();
   stats.particle_cpu_ms = ms_since(t0);
 }

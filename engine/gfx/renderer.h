@@ -50,7 +50,14 @@ struct FrameStats {
   int soft_shaded = 0;       // particles that read the depth copy: soft edges on and an opaque
                              // mesh within their reach (the others' soft factor is exactly 1)
   int draw_calls = 0;
-  int particle_draw_calls = 0;
+  int particle_draw_calls = 0;  // one per run of the particle batch (particle_runs.h)
+  // The overdraw budget (overdraw_budget.h): estimated blended layers (pixels ÷ scene pixels)
+  // before and after it, particles it shrank or faded, those it faded out, and its cap k.
+  double overdraw_estimated_layers = 0;
+  double overdraw_budgeted_layers = 0;
+  int particles_reduced = 0;
+  int particles_dropped = 0;
+  double overdraw_cap = 0;
   double particle_prep_ms = 0; // culling, soft-edge flags and sorting, before any GL call
   double particle_cpu_ms = 0;  // all of the pass on the CPU: preparation, upload, draw submission
                                // (on llvmpipe submission includes vertex work, binning and any
@@ -78,6 +85,9 @@ class Renderer {
   const RenderSettings& render_settings() const;
 
   void render(const RenderView& view, int width, int height);
+  // Forgets what smooths from frame to frame (the overdraw budget's cap): the next frame is
+  // drawn as if it were the first, e.g. after a cut to an unrelated view.
+  void restart_smoothing();
   Image read_pixels();                      // offscreen only; RGBA8, rows top to bottom
   std::vector<float> read_pixels_float();   // offscreen only; the scene buffer as RGBA floats, rows top to bottom
   FrameStats last_stats() const;

@@ -111,6 +111,7 @@ struct ClusterDef {
   SoftEdge soft_edge = SoftEdge::Off;
   double soft_extent = 0.0;          // m; 0 = the particle size
   int priority = -1;                 // −1 = the spawn's priority
+  ScreenPriority screen_priority = ScreenPriority::Normal;  // what an overdraw budget reduces first
 };
 
 struct EffectDef {

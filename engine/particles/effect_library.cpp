@@ -228,6 +228,8 @@ ClusterDef read_cluster(JsonObject o, int index) {
   c.owner_space = o.choice("space", "world", {"world", "owner"}) == "owner";
   c.lifetime = o.number("lifetime", 0.0, 0.0, 3600.0);
   c.priority = int(o.integer("priority", -1, -1, 100));
+  const std::string screen = o.choice("screen_priority", "normal", {"low", "normal", "high"});
+  c.screen_priority = screen == "low" ? ScreenPriority::Low : screen == "high" ? ScreenPriority::High : ScreenPriority::Normal;
   read_animation(o.require_object("animation"), c);
   if (c.animation == AnimationType::Sphere && c.sphere.radius_animation == RadiusAnimation::Contracting &&
       c.lifetime <= 0.0)

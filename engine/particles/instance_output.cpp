@@ -56,7 +56,8 @@ void append_instances(const Cluster& c, const ParticlePool& pool, const Pose& fr
     p.color[0] = pool.r[i] * a, p.color[1] = pool.g[i] * a, p.color[2] = pool.b[i] * a, p.color[3] = a;
     p.burn = std::clamp(pool.burn[i], 0.0f, 1.0f);
     p.soft_extent = soft_extent;
-    p.sprite = pool.sprite[i];
+    p.sprite = uint8_t(pool.sprite[i]);
+    p.screen_priority = uint8_t(d.screen_priority);
     p.soft_edge = uint8_t(d.soft_edge);
     p.billboard = uint8_t(lightning || streak ? Billboard::AxisLocked : Billboard::CameraFacing);
     p.cluster = cluster_id;

@@ -16,6 +16,11 @@ enum class SoftEdge : uint8_t {
   DensityExtent = 4,   // Krazanowski: texture alpha as the volume's extent
 };
 
+// Which particles the renderer's overdraw budget (render.overdraw_budget) shrinks, fades and
+// drops first when a frame would blend more screen layers than it allows: sparks and debris
+// before shields, smoke and trails, before beams and fireballs.
+enum class ScreenPriority : uint8_t { Low = 0, Normal = 1, High = 2 };
+
 enum class Billboard : uint8_t {
   CameraFacing = 0,  // rotated by `rotation` around the view axis
   AxisLocked = 1,    // long axis along `axis`, turned to face the camera around it
@@ -31,7 +36,8 @@ struct ParticleInstance {
   float color[4];   // rgb premultiplied by alpha (Ilmonen eq. 5: fgc = rgb·alpha), then alpha
   float burn;       // 0 = alpha blended, 1 = additive
   float soft_extent;  // depth extent of the volume for soft edges (world units); ≤ 0 → use size
-  uint16_t sprite;    // layer in the sprite array texture
+  uint8_t sprite;     // layer in the sprite array texture (at most 256 sprites)
+  uint8_t screen_priority;  // ScreenPriority: which particles an overdraw budget reduces first
   uint8_t soft_edge;  // SoftEdge
   uint8_t billboard;  // Billboard
   uint32_t cluster;   // cluster index, for per-cluster sorting

@@ -46,6 +46,8 @@ void build_render_view(const World& w, std::span<const ModelId> models, double a
   out.meshes.clear();
   out.particles.clear();
   out.starfield_seed = w.seed;
+  // Game time between the previous tick and this one (a paused game stands still).
+  out.time_seconds = (double(w.tick) - 1.0 + alpha) * w.dt;
 
   // Camera: the World's smoothed rig (deterministic), interpolated like everything else.
   const CameraMode mode = cs.mode.value_or(w.camera_mode);

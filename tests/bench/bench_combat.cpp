@@ -1,0 +1,271 @@
+// combat_view: frame rate where the player is. A recorded dogfight (tests/bench/combat_view.replay:
+// the duel flown by the test pilot of tests/unit/game/test_pilot.h, 30 s with beams, missiles,
+// shield hits and the enemy's explosion) is replayed once and, every second tick, rendered at
+// 1280×720 with the default settings, HUD on, from the chase camera and from the cockpit, each
+// camera by its own Renderer (the overdraw budget smooths over the frames it has drawn).
+// Every frame is timed alone (render + glFinish), and its blended particle pixels are counted
+// by the occlusion query. Every sixth sample each camera also renders the same frame without
+// the overdraw budget (its image error against the budgeted frame, PSNR) and with soft edges
+// off (what soft edges cost), interleaved with the timed frames of the same tick.
+//   combat_frame_p50_ms_<camera>, combat_frame_p99_ms_<camera>   frame time percentiles
+//   combat_blended_layers_p99_<camera>     blended particle pixels ÷ screen pixels, 99th percentile
+//   combat_budget_psnr_db_<camera>         frames the budget reduced against the same frames without
+//                                          it: PSNR of their mean squared error (and _min_db: the worst)
+//   combat_budget_active_share_<camera>    share of frames the budget reduced anything
+//   combat_estimate_over_measured_<camera> estimated blended layers (after the budget) ÷ measured, median
+//   combat_particle_draws_max_<camera>     particle draws (runs) in a frame, the most
+//   soft_edge_cost_ratio_combat_<camera>   per-effect soft edges ÷ soft edges off, median of pairs
+// ARCFIRE_GFX_DUMP=DIR saves the slowest frame of each camera (combat_slowest_<camera>.png).
+// ARCFIRE_BENCH_FRAMES=FILE.csv writes one line per timed frame (camera, tick, ms, stats).
+// ARCFIRE_BENCH_RECORD=1 records the dogfight anew into tests/bench/combat_view.replay first.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "bench_registry.h"
+#include "core/json.h"
+#include "game/app/scene_resources.h"
+#include "game/app/script_feeder.h"
+#include "game/app/session_recorder.h"
+#include "game/render/camera_settings.h"
+#include "game/render/hud_rules.h"
+#include "game/render/render_view_builder.h"
+#include "game/sim/world.h"
+#include "gfx/image_compare.h"
+#include "gfx/renderer.h"
+#include "platform/platform.h"
+#include "test_pilot.h"
+
+namespace arc {
+namespace {
+
+constexpr int kWidth = 1280, kHeight = 720;
+constexpr int kSampleEvery = 2;      // ticks between timed frames
+constexpr int kCompareEvery = 6;     // samples between budget-off and soft-off comparisons
+const char* const kScript = "/tests/bench/combat_view.replay";
+
+// The test pilot flies the duel on normal until a seed gives a win 15–25 s in (the enemy's
+// explosion then plays on screen); the session is recorded to 30 s like a live one.
+void record_dogfight(const std::string& root, const std::string& path) {
+  for (uint64_t seed = 1; seed <= 60; ++seed) {
+    GameOptions o;
+    o.root_dir = root;
+    o.difficulty_override = true;
+    o.difficulty = Difficulty::Normal;
+    o.seed_override = true;
+    o.seed = seed;
+    Game g = Game::load_level(root + "/levels/duel.json", o);
+    const std::string tmp = path + ".tmp-recording";
+    {
+      SessionRecorder rec(tmp, "levels/duel.json", g, "combat_view");
+      TestPilot pilot(seed);
+      InputFrame in;
+      std::vector<Command> keys;
+      while (g.world().tick < 1800) {
+        keys.clear();
+        pilot.act(g.world(), in, keys);
+        rec.record(g, in, keys);
+        g.step(in, keys);
+      }
+      rec.finish(g);
+    }
+    const World& w = g.world();
+    const bool good = w.outcome == Outcome::Victory && w.outcome_tick >= 900 && w.outcome_tick <= 1500;
+    std::printf("  recording: seed %llu %s at tick %lld\n", static_cast<unsigned long long>(seed),
+                good ? "won" : "rejected", static_cast<long long>(w.outcome_tick));
+    if (!good) continue;
+    std::ifstream in_file(tmp, std::ios::binary);
+    std::ostringstream text;
+    text << in_file.rdbuf();
+    const std::string body = text.str();
+    std::remove(tmp.c_str());
+    write_file_atomic(path, "# combat_view: the duel on normal flown by the test pilot (seed " + std::to_string(seed) +
+                                "), won at tick " + std::to_string(w.outcome_tick) +
+                                "; recorded by ARCFIRE_BENCH_RECORD=1 build/arcfire-bench --scene combat_view\n" + body);
+    return;
+  }
+  std::printf("  recording: no seed gave a win 15-25 s in; the script is unchanged\n");
+}
+
+double percentile(std::vector<double> v, double q) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  return v[std::min(v.size() - 1, size_t(q * double(v.size() - 1) + 0.5))];
+}
+
+struct CameraRun {
+  const char* name;
+  CameraMode mode;
+  std::unique_ptr<Renderer> main, no_budget, soft_off;
+  std::vector<ModelId> models;
+  std::vector<double> ms, layers, estimate_ratio, soft_ratio, budget_ratio, psnr;
+  double mse_sum = 0;  // over the compared frames the budget reduced
+  double psnr_min = std::numeric_limits<double>::infinity();
+  int compared = 0, active = 0, draws_max = 0, samples = 0;
+  double slowest_ms = 0;
+  Image slowest, worst_budgeted, worst_unbudgeted;  // the slowest frame; the worst-PSNR pair
+  uint64_t slowest_tick = 0, worst_tick = 0;
+};
+
+std::unique_ptr<Renderer> make_renderer(const std::string& root, Settings settings, const char* key, const char* value,
+                                        const World& world, std::vector<ModelId>* models) {
+  RendererDesc desc;
+  desc.offscreen = true;
+  desc.shader_dir = root + "/shaders";
+  auto r = std::make_unique<Renderer>(desc);
+  if (key) settings.set(key, value, "combat_view");
+  r->apply_settings(settings);
+  std::vector<ModelId> ids = load_scene_resources(*r, world, root);
+  if (models) *models = ids;
+  r->count_particle_fragments(true);
+  return r;
+}
+
+double timed_render(Renderer& r, const RenderView& v) {
+  const double t0 = bench::now_seconds();
+  r.render(v, kWidth, kHeight);
+  r.finish();
+  return (bench::now_seconds() - t0) * 1000.0;
+}
+
+// One sampled tick of one camera: the timed frame and, on comparison ticks, its two variants.
+void sample(CameraRun& c, const RenderView& view, bool compare, bool reverse, std::FILE* csv, uint64_t tick) {
+  const double ms = timed_render(*c.main, view);
+  const FrameStats st = c.main->last_stats();
+  if (csv)
+    std::fprintf(csv, "%s,%llu,%.3f,%d,%d,%.3f,%.3f,%lld,%d,%d,%d,%.4f,%.3f,%.3f\n", c.name, static_cast<unsigned long long>(tick),
+                 ms, st.particles_in, st.particles_drawn, st.overdraw_estimated_layers, st.overdraw_budgeted_layers,
+                 st.particle_fragments, st.particle_draw_calls, st.particles_reduced, st.soft_shaded, st.overdraw_cap,
+                 st.particle_prep_ms, st.particle_cpu_ms);
+  ++c.samples;
+  c.ms.push_back(ms);
+  const double measured = double(std::max(0LL, st.particle_fragments)) / (double(kWidth) * kHeight);
+  c.layers.push_back(measured);
+  if (measured > 0.01) c.estimate_ratio.push_back(st.overdraw_budgeted_layers / measured);
+  c.draws_max = std::max(c.draws_max, st.particle_draw_calls);
+  c.active += st.particles_reduced > 0;
+  if (c.samples > 10 && ms > c.slowest_ms) {  // past the first frames (shader variants, buffers)
+    c.slowest_ms = ms;
+    c.slowest = c.main->read_pixels();
+    c.slowest_tick = tick;
+  }
+  if (!compare) return;
+  const Image budgeted = c.main->read_pixels();
+  // The soft-off frame and the budget-off frame in alternating order around each other.
+  double off_ms = 0, nb_ms = 0;
+  if (reverse) {
+    off_ms = timed_render(*c.soft_off, view);
+    nb_ms = timed_render(*c.no_budget, view);
+  } else {
+    nb_ms = timed_render(*c.no_budget, view);
+    off_ms = timed_render(*c.soft_off, view);
+  }
+  c.soft_ratio.push_back(ms / off_ms);
+  c.budget_ratio.push_back(ms / nb_ms);
+  ++c.compared;
+  if (st.particles_reduced == 0) return;  // the same frame: nothing to compare
+  Image unbudgeted = c.no_budget->read_pixels();
+  const double psnr = psnr_db(budgeted, unbudgeted);
+  c.psnr.push_back(psnr);
+  if (psnr < c.psnr_min) {
+    c.psnr_min = psnr;
+    c.worst_tick = tick;
+    c.worst_budgeted = budgeted;
+    c.worst_unbudgeted = std::move(unbudgeted);
+  }
+  c.mse_sum += 255.0 * 255.0 / std::pow(10.0, psnr / 10.0);
+}
+
+void report(CameraRun& c) {
+  const std::string n = c.name;
+  const double p50 = percentile(c.ms, 0.5), p99 = percentile(c.ms, 0.99);
+  std::printf("  %-7s %d frames: p50 %.2f ms, p99 %.2f ms, max %.2f ms; blended layers p50 %.2f p99 %.2f;"
+              " budget active in %d; estimate/measured %.2f; draws ≤ %d; soft x%.3f; budget on/off x%.3f;"
+              " PSNR (budget against none) worst %.1f dB, median %.1f dB over %zu reduced of %d compared frames\n",
+              c.name, c.samples, p50, p99, percentile(c.ms, 1.0), percentile(c.layers, 0.5), percentile(c.layers, 0.99),
+              c.active, bench::median(c.estimate_ratio), c.draws_max, bench::median(c.soft_ratio),
+              bench::median(c.budget_ratio), std::isinf(c.psnr_min) ? 99.0 : c.psnr_min, bench::median(c.psnr), c.psnr.size(), c.compared);
+  bench::report_metric("combat_frame_p50_ms_" + n, p50);
+  bench::report_metric("combat_frame_p99_ms_" + n, p99);
+  bench::report_metric("combat_blended_layers_p99_" + n, percentile(c.layers, 0.99));
+  const double psnr_all = c.psnr.empty() ? 99.0 : 10.0 * std::log10(255.0 * 255.0 * double(c.psnr.size()) / c.mse_sum);
+  bench::report_metric("combat_budget_psnr_db_" + n, psnr_all);
+  bench::report_metric("combat_budget_psnr_min_db_" + n, std::isinf(c.psnr_min) ? 99.0 : c.psnr_min);
+  bench::report_metric("combat_budget_active_share_" + n, double(c.active) / std::max(1, c.samples));
+  bench::report_metric("combat_estimate_over_measured_" + n, bench::median(c.estimate_ratio));
+  bench::report_metric("combat_particle_draws_max_" + n, c.draws_max);
+  bench::report_metric("soft_edge_cost_ratio_combat_" + n, bench::median(c.soft_ratio));
+  std::printf("  %-7s slowest frame at tick %llu; worst budgeted frame at tick %llu\n", c.name,
+              static_cast<unsigned long long>(c.slowest_tick), static_cast<unsigned long long>(c.worst_tick));
+  if (const char* dir = std::getenv("ARCFIRE_GFX_DUMP")) {
+    if (c.slowest.width > 0) save_image(std::string(dir) + "/combat_slowest_" + n + ".png", c.slowest);
+    if (c.worst_budgeted.width > 0) {
+      save_image(std::string(dir) + "/combat_budget_worst_" + n + ".png", c.worst_budgeted);
+      save_image(std::string(dir) + "/combat_budget_worst_" + n + "_unbudgeted.png", c.worst_unbudgeted);
+    }
+  }
+}
+
+}  // namespace
+
+ARCFIRE_SCENE(combat_view) {
+  const std::string root = ARCFIRE_SOURCE_DIR;
+  const std::string path = root + kScript;
+  if (std::getenv("ARCFIRE_BENCH_RECORD")) record_dogfight(root, path);
+  std::unique_ptr<HeadlessContext> ctx;
+  try {
+    ctx = create_headless_context();
+  } catch (const std::exception& e) {
+    std::printf("skipped: no EGL context (%s)\n", e.what());
+    return;
+  }
+  const replay::Script script = replay::load_script(path);
+  const Settings settings = script_settings(script, Settings::defaults(), root);
+  GameOptions base;
+  base.root_dir = root;
+  Game game = Game::load_level(resolve_script_level(script, root), script_game_options(script, settings, base));
+  ScriptFeeder feeder(script);
+  HudState hud;
+  hud.rules = load_hud_rules(root + "/assets/settings/hud.json");
+  CameraRun cams[2] = {{"chase", CameraMode::Chase, {}, {}, {}, {}}, {"cockpit", CameraMode::Cockpit, {}, {}, {}, {}}};
+  for (CameraRun& c : cams) {
+    c.main = make_renderer(root, settings, nullptr, nullptr, game.world(), &c.models);
+    c.no_budget = make_renderer(root, settings, "render.overdraw_budget", "0", game.world(), nullptr);
+    c.soft_off = make_renderer(root, settings, "render.soft_edges", "off", game.world(), nullptr);
+  }
+  const uint64_t end = script.end_tick.value_or(1800);
+  RenderView view;
+  int samples = 0;
+  std::FILE* csv = nullptr;
+  if (const char* f = std::getenv("ARCFIRE_BENCH_FRAMES")) {
+    csv = std::fopen(f, "w");
+    if (!csv) {
+      std::fprintf(stderr, "arcfire-bench: ARCFIRE_BENCH_FRAMES='%s' cannot be written; name a file in a folder that exists\n", f);
+      std::exit(2);
+    }
+    std::fprintf(csv, "camera,tick,ms,particles_in,drawn,estimated_layers,budgeted_layers,fragments,draws,reduced,soft,cap,prep_ms,cpu_ms\n");
+  }
+  for (uint64_t tick = 0; tick < end; ++tick) {
+    feeder.step(game, tick);
+    if ((tick + 1) % kSampleEvery) continue;
+    const bool compare = samples % kCompareEvery == 0;
+    for (int k = 0; k < 2; ++k) {
+      CameraRun& c = cams[samples % 2 ? 1 - k : k];
+      build_render_view(game.world(), c.models, 1.0, CameraSettings{c.mode, 0}, hud, kWidth, kHeight, view);
+      sample(c, view, compare, (samples / kCompareEvery) % 2 == 1, csv, tick + 1);
+    }
+    ++samples;
+  }
+  if (csv) std::fclose(csv);
+  std::printf("  %s: %llu ticks, %s\n", kScript, static_cast<unsigned long long>(end), ctx->description().c_str());
+  for (CameraRun& c : cams) report(c);
+}
+
+}  // namespace arc

@@ -1,0 +1,179 @@
+// The overdraw budget on the CPU, no GL: the blended-area estimate, what it reduces first
+// (near before far, low screen priority before high, lightning thinned not shortened), that it
+// meets the budget, and that it never pops: smooth in distance and in time.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+
+#include "gfx/overdraw_budget.h"
+#include "scene_models.h"
+
+namespace arc {
+namespace {
+
+using scenes::particle;
+
+constexpr int kW = 1280, kH = 720;
+
+OverdrawFrame frame(double time = 0.0) {
+  OverdrawFrame f;
+  f.tan_half_y = std::tan(0.45f);
+  f.near = 0.1f;
+  f.size_clamp = 0.5f;
+  f.width = kW;
+  f.height = kH;
+  f.time_seconds = time;
+  return f;
+}
+
+// Half-size in pixels of a camera-facing particle of half-width `size` at `depth`.
+float half_px(float size, float depth) { return size * 0.5f * kH / (depth * std::tan(0.45f)); }
+
+TEST(OverdrawBudget, EstimatesTheClampedQuadAreaOnScreen) {
+  std::vector<ParticleInstance> ps = {particle({0, 0, -20}, 1.0f, glm::vec3(1), 1.0f, 1.0f)};
+  std::vector<float> areas;
+  OverdrawBudget b;
+  OverdrawStats s = b.apply(ps, areas, frame(), {});
+  const float h = half_px(1.0f, 20.0f);
+  ASSERT_EQ(areas.size(), 1u);
+  EXPECT_NEAR(areas[0], 4.0f * h * h, 1.0f);
+  EXPECT_NEAR(s.estimated_layers, 4.0 * h * h / (kW * kH), 1e-6);
+  // Half of it off the right edge: half the area. Past the size clamp (half the screen
+  // height across): the clamped size, as particle.vert draws it.
+  ps = {particle({20.0f * std::tan(0.45f) * kW / kH, 0, -20}, 1.0f, glm::vec3(1), 1.0f, 1.0f),
+        particle({0, 0, -1}, 50.0f, glm::vec3(1), 1.0f, 1.0f)};
+  b.reset();
+  b.apply(ps, areas, frame(), {});
+  EXPECT_NEAR(areas[0], 2.0f * h * h, 2.0f);
+  EXPECT_NEAR(areas[1], (0.5f * kH) * (0.5f * kH), 2.0f);
+}
+
+TEST(OverdrawBudget, UnderBudgetChangesNothing) {
+  std::vector<ParticleInstance> ps = {particle({0, 0, -5}, 1.0f, glm::vec3(1), 1.0f, 0.5f),
+                                      particle({1, 0, -30}, 0.5f, glm::vec3(0.5f), 0.5f, 0.0f)};
+  const std::vector<ParticleInstance> before = ps;
+  std::vector<float> areas;
+  OverdrawBudget b;
+  const OverdrawStats s = b.apply(ps, areas, frame(), {.budget_layers = 4.0f});
+  EXPECT_EQ(s.reduced, 0);
+  EXPECT_EQ(s.cap, 0.0);
+  ASSERT_EQ(ps.size(), before.size());
+  for (size_t i = 0; i < ps.size(); ++i) EXPECT_EQ(std::memcmp(&ps[i], &before[i], sizeof(ParticleInstance)), 0);
+}
+
+// A crowd: 30 big faint puffs a few metres from the eye and 200 small sparks far away.
+std::vector<ParticleInstance> crowd() {
+  std::vector<ParticleInstance> ps;
+  for (int i = 0; i < 30; ++i) ps.push_back(particle({float(i % 6) - 2.5f, float(i / 6) - 2.0f, -4.0f}, 0.9f, glm::vec3(0.3f), 0.3f, 0.0f));
+  for (int i = 0; i < 200; ++i) ps.push_back(particle({float(i % 20) * 4 - 40, float(i / 20) * 2 - 10, -150.0f}, 0.3f, glm::vec3(1), 1.0f, 1.0f));
+  return ps;
+}
+
+TEST(OverdrawBudget, MeetsTheBudgetByShrinkingTheNearestFirst) {
+  std::vector<ParticleInstance> ps = crowd();
+  const std::vector<ParticleInstance> before = ps;
+  std::vector<float> areas;
+  OverdrawBudget b;
+  const OverdrawStats s = b.apply(ps, areas, frame(), {.budget_layers = 1.5f, .near = 40.0f});
+  ASSERT_GT(s.estimated_layers, 2.5);  // the test needs a crowd over budget
+  EXPECT_NEAR(s.budgeted_layers, 1.5, 0.05);
+  ASSERT_EQ(ps.size(), before.size());
+  double sum = 0;
+  for (float a : areas) sum += a;
+  EXPECT_NEAR(sum / (kW * kH), s.budgeted_layers, 1e-3);
+  for (int i = 0; i < 30; ++i) EXPECT_LT(ps[size_t(i)].size, before[size_t(i)].size) << "near puff " << i;
+  for (size_t i = 30; i < ps.size(); ++i) EXPECT_EQ(ps[i].size, before[i].size) << "far spark " << i;
+  EXPECT_EQ(s.reduced, 30);
+}
+
+TEST(OverdrawBudget, ReducesLowPriorityBeforeHighAndThinsLightning) {
+  ParticleInstance spark = particle({-2, 0, -6}, 1.2f, glm::vec3(1), 1.0f, 1.0f);
+  spark.screen_priority = uint8_t(ScreenPriority::Low);
+  ParticleInstance shield = spark;
+  shield.pos[0] = 2;
+  shield.screen_priority = uint8_t(ScreenPriority::Normal);
+  ParticleInstance bolt = spark;
+  bolt.pos[0] = 0;
+  bolt.billboard = uint8_t(Billboard::AxisLocked);
+  bolt.axis[1] = 3.0f;
+  bolt.screen_priority = uint8_t(ScreenPriority::High);
+  std::vector<ParticleInstance> ps = {spark, shield, bolt};
+  std::vector<float> areas;
+  OverdrawBudget b;
+  const OverdrawStats s = b.apply(ps, areas, frame(), {.budget_layers = 0.05f});
+  ASSERT_EQ(ps.size(), 3u);
+  EXPECT_LT(ps[0].size, ps[1].size);  // same footprint: the spark is capped harder
+  EXPECT_LT(ps[1].size, spark.size);
+  EXPECT_LT(ps[0].color[3], ps[1].color[3]);  // and fades more
+  EXPECT_LT(ps[2].size, bolt.size);            // the bolt is thinned ...
+  EXPECT_EQ(ps[2].axis[1], bolt.axis[1]);      // ... not shortened
+  EXPECT_EQ(ps[2].color[0], bolt.color[0]);    // and not faded
+  EXPECT_EQ(s.reduced, 3);
+}
+
+TEST(OverdrawBudget, DropsLowPriorityParticlesFadedToNothing) {
+  std::vector<ParticleInstance> ps;
+  for (int i = 0; i < 20; ++i) {
+    ParticleInstance p = particle({0, 0, -0.6f}, 2.0f, glm::vec3(1), 1.0f, 1.0f);  // filling the screen
+    p.screen_priority = uint8_t(i % 2 ? ScreenPriority::Low : ScreenPriority::High);
+    ps.push_back(p);
+  }
+  std::vector<float> areas;
+  OverdrawBudget b;
+  const OverdrawStats s = b.apply(ps, areas, frame(), {.budget_layers = 1e-5f});
+  EXPECT_EQ(s.dropped, 10);
+  ASSERT_EQ(ps.size(), 10u);
+  for (const ParticleInstance& p : ps) EXPECT_EQ(p.screen_priority, uint8_t(ScreenPriority::High));
+  EXPECT_EQ(areas.size(), ps.size());
+}
+
+TEST(OverdrawBudget, IsSmoothInDistance) {
+  // One puff flying toward the camera among a fixed crowd: its drawn size changes by small
+  // steps for small steps in distance (no threshold where it snaps).
+  OverdrawBudget b;
+  float last = -1;
+  for (int step = 0; step <= 400; ++step) {
+    std::vector<ParticleInstance> ps = crowd();
+    const float z = -30.0f * std::pow(2.0f / 30.0f, float(step) / 400.0f);  // 30 m to 2 m, 0.7 % a step
+    ps.push_back(particle({1, 1, z}, 1.0f, glm::vec3(0.8f), 0.8f, 0.5f));
+    std::vector<float> areas;
+    b.reset();
+    b.apply(ps, areas, frame(), {.budget_layers = 2.0f});
+    const float drawn = std::min(ps.back().size, 0.5f * -z * std::tan(0.45f));  // particle.vert's size clamp
+    const float px = drawn * 0.5f * kH / (-z * std::tan(0.45f));
+    if (last >= 0) EXPECT_LT(std::abs(px - last), 0.05f * std::max(px, last) + 1.0f) << "z " << z;
+    last = px;
+  }
+}
+
+TEST(OverdrawBudget, IsSmoothInTime) {
+  // A crowd appears at once: the cap eases in over frames instead of snapping, every step
+  // shrinks a puff by a bounded factor, and within half a second the budget holds.
+  OverdrawBudget b;
+  std::vector<ParticleInstance> calm = {particle({0, 0, -50}, 0.5f, glm::vec3(1), 1.0f, 1.0f)};
+  std::vector<float> areas;
+  b.apply(calm, areas, frame(0.0), {.budget_layers = 1.0f});
+  const float clamp = 0.5f * 4.0f * std::tan(0.45f);  // particle.vert's size clamp at 4 m
+  auto drawn = [&](const ParticleInstance& p) { return std::min(p.size, clamp); };
+  float last = drawn(crowd()[0]);
+  OverdrawStats s;
+  for (int f = 1; f <= 30; ++f) {
+    std::vector<ParticleInstance> ps = crowd();
+    s = b.apply(ps, areas, frame(f / 60.0), {.budget_layers = 1.0f});
+    EXPECT_GE(drawn(ps[0]), 0.8f * last) << "frame " << f;
+    last = drawn(ps[0]);
+  }
+  EXPECT_LT(last, 0.6f * clamp);
+  EXPECT_NEAR(s.budgeted_layers, 1.0, 0.1);
+  // A frame that stands still keeps the cap; one half a second or more away starts afresh.
+  std::vector<ParticleInstance> ps = crowd();
+  b.apply(ps, areas, frame(30 / 60.0), {.budget_layers = 6.0f});
+  EXPECT_EQ(drawn(ps[0]), last);
+  ps = crowd();
+  s = b.apply(ps, areas, frame(2.0), {.budget_layers = 6.0f});
+  EXPECT_EQ(s.reduced, 0);
+}
+
+}  // namespace
+}  // namespace arc

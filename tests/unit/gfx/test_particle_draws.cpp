@@ -1,0 +1,110 @@
+// The particle pass drawn as runs and held to the overdraw budget, headless through EGL: the
+// runs give the one-draw picture, a frame under budget is untouched, and over budget the
+// near particles shrink, the blended fragments fall and the estimate matches the count.
+#include <gtest/gtest.h>
+
+#include "gfx/image_compare.h"
+#include "gfx_test_util.h"
+
+namespace arc {
+namespace {
+
+using scenes::particle;
+
+RenderView wall_view(Renderer& r) {
+  RenderView v;
+  v.camera.fov_y_radians = 0.9;
+  v.camera.near_plane = 0.1;
+  v.light_color = glm::vec3(0.6f);
+  v.starfield_seed = 3;
+  v.meshes.push_back({r.add_model(scenes::wall_model(8, 20, {0.4f, 0.45f, 0.5f, 1}, glm::vec3(0))), {-4.5, 0, -12}});
+  // Smoke (ordered) and sparks (additive), soft, some within reach of the wall on the left and
+  // the rest far from it on the right (flagged clear), in depth order interleaved.
+  for (int i = 0; i < 120; ++i) {
+    const float x = -7.0f + 0.12f * float(i), z = -11.0f - 0.8f * float(i % 5) + 0.5f * float(i % 3);
+    const bool additive = i % 3 != 0;
+    ParticleInstance p = particle({x, float(i % 7) - 3.0f, z}, 0.7f, additive ? glm::vec3(1, 0.6f, 0.2f) : glm::vec3(0.5f),
+                                  additive ? 0.8f : 0.5f, additive ? 1.0f : 0.0f, SoftEdge::Linear);
+    p.sprite = 0;
+    v.particles.push_back(p);
+  }
+  return v;
+}
+
+TEST(ParticleDraws, RunsGiveTheOneDrawPicture) {
+  REQUIRE_CONTEXT();
+  RendererDesc d;
+  d.offscreen = true;
+  Renderer r(d);
+  r.set_sprites({scenes::soft_sprite(64)});
+  const RenderView v = wall_view(r);
+  RenderSettings s = test::plain_settings();
+  s.max_particle_draws = 1;
+  r.set_render_settings(s);
+  r.render(v, 320, 180);
+  const Image one = r.read_pixels();
+  ASSERT_EQ(r.last_stats().particle_draw_calls, 1);
+  const int soft_one = r.last_stats().soft_shaded;
+  s.max_particle_draws = 24;
+  r.set_render_settings(s);
+  r.render(v, 320, 180);
+  const Image runs = r.read_pixels();
+  test::dump_if_asked("particle_runs", runs);
+  EXPECT_GT(r.last_stats().particle_draw_calls, 1);
+  EXPECT_LE(r.last_stats().particle_draw_calls, 24);
+  EXPECT_EQ(r.last_stats().soft_shaded, soft_one);
+  EXPECT_GT(soft_one, 0);
+  EXPECT_LT(soft_one, 120);
+  // Additive particles regrouped among themselves round in another order: at most 1/255.
+  EXPECT_LE(compare_images(one, runs).max_diff, 1);
+}
+
+TEST(ParticleDraws, BudgetLeavesAFrameUnderItUntouched) {
+  REQUIRE_CONTEXT();
+  RendererDesc d;
+  d.offscreen = true;
+  Renderer r(d);
+  r.set_sprites({scenes::soft_sprite(64)});
+  const RenderView v = wall_view(r);
+  RenderSettings s = test::plain_settings();
+  r.set_render_settings(s);
+  r.render(v, 320, 180);
+  const Image none = r.read_pixels();
+  s.overdraw_budget = 64.0f;
+  r.set_render_settings(s);
+  r.render(v, 320, 180);
+  EXPECT_EQ(r.last_stats().particles_reduced, 0);
+  EXPECT_EQ(compare_images(none, r.read_pixels()).max_diff, 0);
+}
+
+TEST(ParticleDraws, BudgetShrinksNearParticlesAndItsEstimateMatchesTheCount) {
+  REQUIRE_CONTEXT();
+  RendererDesc d;
+  d.offscreen = true;
+  Renderer r(d);
+  r.set_sprites({scenes::soft_sprite(64)});
+  RenderView v = wall_view(r);
+  for (int i = 0; i < 36; ++i)  // big puffs right at the eye
+    v.particles.push_back(particle({float(i % 6) - 2.5f, float(i / 6) * 0.5f - 1.25f, -2.5f}, 1.2f, glm::vec3(0.3f), 0.4f, 0.0f));
+  RenderSettings s = test::plain_settings();
+  r.set_render_settings(s);
+  r.count_particle_fragments(true);
+  r.render(v, 320, 180);
+  const FrameStats free = r.last_stats();
+  const double pixels = 320.0 * 180.0;
+  EXPECT_NEAR(free.overdraw_estimated_layers, double(free.particle_fragments) / pixels, 0.15 * free.overdraw_estimated_layers);
+  ASSERT_GT(free.overdraw_estimated_layers, 3.0);
+  s.overdraw_budget = 2.0f;
+  r.set_render_settings(s);
+  r.restart_smoothing();
+  r.render(v, 320, 180);
+  const FrameStats held = r.last_stats();
+  test::dump_if_asked("particle_budget", r.read_pixels());
+  EXPECT_GT(held.particles_reduced, 0);
+  EXPECT_NEAR(held.overdraw_budgeted_layers, 2.0, 0.1);
+  EXPECT_LT(held.particle_fragments, free.particle_fragments * 3 / 4);
+  EXPECT_NEAR(held.overdraw_budgeted_layers, double(held.particle_fragments) / pixels, 0.15 * held.overdraw_budgeted_layers);
+}
+
+}  // namespace
+}  // namespace arc
