@@ -58,11 +58,13 @@ void main() {
   // Ambient from above and a fill from the side away from the key, so the shadowed half of a
   // hull keeps its shape instead of going black.
   float fill = max(-dot(n, l), 0.0);
-  vec3 ambient = u_ambient * (1.0 + 0.5 * n.y + 1.5 * fill);
-  // Rim: grazing surfaces reflect the bright surroundings (ambient and a share of the key light).
+  vec3 ambient = u_ambient * (1.0 + 0.5 * n.y + 2.5 * fill);
+  // Rim: grazing surfaces reflect the surroundings, and a key light behind the hull (toward the
+  // eye) catches its outline the most, so a backlit ship is outlined instead of a black cut-out.
   float grazing = 1.0 - ndv;
-  float rim = grazing * grazing * grazing;
-  vec3 rim_light = (u_ambient * 4.0 + u_light_color * 0.06) * rim * mix(vec3(1.0), albedo, 0.5);
+  float rim = grazing * grazing;
+  float behind = max(dot(-v, l), 0.0);
+  vec3 rim_light = (u_ambient * 3.0 + u_light_color * (0.05 + 0.6 * behind * behind)) * rim * mix(vec3(1.0), albedo, 0.5);
   vec3 emissive = u_emissive;
   if (u_has_emissive_tex) emissive *= texture(u_emissive_tex, v_uv).rgb;
   // A team-coloured glow keeps the material's brightness and takes the team's hue.

@@ -107,7 +107,7 @@ void viper(const std::string& models_dir, const std::string& textures_dir) {
   add_both_sides(mb, loft({circle_z(-6.9, 0.07, 6, 2.5, -0.4), circle_z(-3.0, 0.12, 6, 2.5, -0.4),
                            circle_z(-1.5, 0.25, 6, 2.5, -0.4)},
                           {kTrim}, kTrim, kTrim));
-  running_lights(mb, 6.2, -0.35, 5.75, 0.3);
+  running_lights(mb, 6.2, -0.35, 5.72, 0.22);
   const ClassLook look{"viper", {0.8f, 0.81f, 0.83f, 1.0f}, {0.35f, 0.75f, 1.0f}, {.seed = 11, .rows = 8, .plates_per_row = 3}, 6.0};
   write_ship(mb, look, models_dir, textures_dir);
 }
