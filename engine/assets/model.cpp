@@ -396,6 +396,10 @@ class GltfReader {
       mat.base_color = glm::vec4(float(bc[0]), float(bc[1]), float(bc[2]), float(bc[3]));
       if (m.emissiveFactor.size() != 3) fail(name + ": emissiveFactor must have 3 numbers");
       mat.emissive = glm::vec3(float(m.emissiveFactor[0]), float(m.emissiveFactor[1]), float(m.emissiveFactor[2]));
+      mat.metallic = float(m.pbrMetallicRoughness.metallicFactor);
+      mat.roughness = float(m.pbrMetallicRoughness.roughnessFactor);
+      if (!(mat.metallic >= 0.0f && mat.metallic <= 1.0f && mat.roughness >= 0.0f && mat.roughness <= 1.0f))
+        fail(name + ": metallicFactor and roughnessFactor must be numbers in [0, 1]");
       if (auto ext = m.extensions.find("KHR_materials_emissive_strength"); ext != m.extensions.end()) {
         const auto& strength = ext->second.Get("emissiveStrength");
         if (strength.IsNumber()) mat.emissive *= float(strength.GetNumberAsDouble());

@@ -1,9 +1,9 @@
 // assets/model.h — glTF models as plain CPU data (no GL); images are in assets/image.h.
 //
 // load_model() reads .gltf or .glb through tinygltf: positions, normals, UVs, indices of any
-// component type, base-colour factor and texture, emissive factor (and texture), the share of
-// a material that takes a ship's team colour (extras.arcfire_team_color), with node transforms
-// baked into the vertices. Every failure throws arc::InputError("path: what is wrong").
+// component type, base-colour factor and texture, emissive factor (and texture), metallic and
+// roughness factors, the share of a material that takes a ship's team colour
+// (extras.arcfire_team_color), with node transforms baked into the vertices. Every failure throws arc::InputError("path: what is wrong").
 //
 // Details of load_model: the default scene (or every root node when the file has no scenes) is
 // walked with TRS or matrix node transforms; primitives must be triangles, indexed by
@@ -28,6 +28,10 @@ namespace arc {
 struct Material {
   glm::vec4 base_color{1.0f};
   glm::vec3 emissive{0.0f};
+  // glTF metallicFactor and roughnessFactor (a file without them reads glTF's defaults, 1 and
+  // 1); the mesh shader's specular colour and highlight size. Made in code: matte, non-metal.
+  float metallic = 0.0f;
+  float roughness = 1.0f;
   int base_color_image = -1;  // index into ModelData::images, -1 = none
   int emissive_image = -1;
   // extras.arcfire_team_color: how much this material takes the team colour of the ship that

@@ -1,4 +1,5 @@
-// gfx/mesh_pass.cpp — model upload and the lit opaque draw.
+// gfx/mesh_pass.cpp — model upload and the lit opaque draw (shaders/mesh.frag: key light with
+// a normalised highlight from the material's roughness, ambient and fill, a Fresnel rim).
 #include "gfx/mesh_pass.h"
 
 #include <cstddef>
@@ -115,6 +116,8 @@ int MeshPass::draw(const RenderView& v, const Program& mesh, const glm::mat4& vi
       if (p.material >= 0 && p.material < int(g.materials.size())) mat = g.materials[size_t(p.material)];
       glUniform4fv(mesh.loc("u_base_color"), 1, glm::value_ptr(mat.base_color));
       glUniform3fv(mesh.loc("u_emissive"), 1, glm::value_ptr(mat.emissive));
+      glUniform1f(mesh.loc("u_metallic"), mat.metallic);
+      glUniform1f(mesh.loc("u_roughness"), mat.roughness);
       glUniform1f(mesh.loc("u_team_mask"), mat.team_color * inst.team_color.a);
       bool has_base = mat.base_color_image >= 0 && mat.base_color_image < int(g.textures.size());
       bool has_em = mat.emissive_image >= 0 && mat.emissive_image < int(g.textures.size());

@@ -2,8 +2,10 @@
 //
 // add_model() uploads a ModelData (vertices, indices, textures with mipmaps) and keeps its
 // cover boxes (cover_boxes.h) for the particle batch's soft-edge reach test. draw() renders
-// every MeshInstance of a view with depth test and write on: directional light + ambient +
-// emissive, tint, flash and the team colour of the materials that take it, each placed
+// every MeshInstance of a view with depth test and write on: directional light with specular
+// highlights from each material's metallic and roughness factors, ambient and a fill light, a
+// Fresnel rim that outlines silhouettes, emissive, tint, flash and the team colour of the
+// materials that take it (albedo textures multiply it as detail), each placed
 // camera-relative (the translation subtracted in double).
 //
 //   MeshPass meshes;

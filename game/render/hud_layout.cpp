@@ -22,7 +22,8 @@ constexpr double kArrowMargin = 30.0;
 // own size, where its one-pixel strokes would blur away.
 double height_scale(int height) { return std::max(height / 720.0, 0.5); }
 double text_scale(double at_720, int height) { return std::max(at_720 * height_scale(height), 1.0); }
-constexpr double kGlyphAdvance = 7.0;  // pixels per character at text scale 1 (gfx/hud_font)
+constexpr double kGlyphAdvance = 7.0;     // pixels per character at text scale 1 (gfx/hud_font)
+constexpr double kGlyphLineHeight = 13.0; // pixels per line at text scale 1 (the font's size)
 
 std::string outcome_text(const World& w) {
   return w.outcome == Outcome::Victory  ? "VICTORY"
@@ -216,20 +217,25 @@ void hud_own(const World& w, const Ship& me, const Projector& pr, int width, int
   text(h, width - 260, height - 36, 1.2, kHudWhite, "kills " + std::to_string(me.kills));
 }
 
+// Labels centred on (the top centre at) their world point.
 void labels(const World& w, const Projector& pr, int width, int height, HudLayer& h) {
   auto put = [&](const glm::dvec3& p, const std::string& label) {
     glm::dvec2 px;
     if (label.empty() || !pr.project(p, px)) return;
     if (px.x < -100 || px.x > width + 100 || px.y < -20 || px.y > height + 20) return;
-    text(h, px.x - label.size() * 4.0, px.y, 1.0, kHudWhite, label);
+    centred_text(h, px.x, px.y, 1.0, kHudWhite, label);
   };
   for (const Prop& p : w.props) put(p.position + glm::dvec3(0, p.radius + 6.0 * p.scale, 0), p.label);
-  for (const EffectSpawnDef& e : w.level.effects) put(e.position + glm::dvec3(0, 12.0 * e.scale, 0), e.label);
-  // With a fixed camera nobody is "me", so ships get their names (the gallery), below them so
-  // they do not collide with labels of effects placed on them.
+  for (const EffectSpawnDef& e : w.level.effects)
+    put(e.has_label_at ? e.label_at : e.position + glm::dvec3(0, 12.0 * e.scale, 0), e.label);
+  // With a fixed camera nobody is "me", so ships get their labels (their names unless the level
+  // says otherwise), below them so they do not collide with labels of effects placed on them.
   if (w.camera_mode != CameraMode::Fixed) return;
-  for (const Ship& s : w.ships)
-    if (s.alive) put(s.position - glm::dvec3(0, s.cls->shield_radius + 6.0, 0), s.name);
+  for (size_t i = 0; i < w.ships.size() && i < w.level.ships.size(); ++i) {
+    const Ship& s = w.ships[i];
+    const ShipSpawnDef& def = w.level.ships[i];
+    if (s.alive) put(s.position - glm::dvec3(0, s.cls->shield_radius + 6.0, 0), def.has_label ? def.label : s.name);
+  }
 }
 
 }  // namespace
@@ -263,6 +269,16 @@ void layout_hud(const World& w, const CameraView& cam, const HudState& state, do
   hud_pause_menu(w, state, width, height, h);
   hud_messages(state, width, height, h);
   scale_hud(h, scale);
+}
+
+HudBox text_box(const HudText& t) {
+  size_t longest = 0, lines = 1, run = 0;
+  for (char c : t.text) {
+    run = c == '\n' ? 0 : run + 1;
+    lines += c == '\n' ? 1 : 0;
+    longest = std::max(longest, run);
+  }
+  return {t.x, t.y, t.x + longest * kGlyphAdvance * t.scale, t.y + lines * kGlyphLineHeight * t.scale};
 }
 
 std::vector<std::string> wrap_text(const std::string& original, size_t max_chars, size_t max_lines) {

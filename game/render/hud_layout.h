@@ -51,6 +51,14 @@ struct HudState {
 void layout_hud(const World& world, const CameraView& camera, const HudState& state, double alpha, int width,
                 int height, HudLayer& out);
 
+// The box a text of the layer covers, in the layer's pixels: every line of the bitmap font
+// (gfx/hud_font, ProggyClean) is 13 pixels high and each character 7 wide at scale 1. Tests
+// check with it that texts (the gallery's labels) neither overlap nor leave the screen.
+struct HudBox {
+  double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
+HudBox text_box(const HudText& t);
+
 // `text` broken at spaces (and inside words longer than a line; its own line breaks count as
 // spaces) into lines of at most `max_chars` characters; at most `max_lines`, the last ending
 // in "..." when text is cut.

@@ -2,8 +2,11 @@
 
 #include <filesystem>
 
+#include <glm/geometric.hpp>
+
 #include "core/error.h"
 #include "core/json.h"
+#include "particles/effect_def.h"
 #include "particles/effect_library.h"
 
 namespace arc {
@@ -147,6 +150,8 @@ void parse_ships(JsonObject& r, LevelDef& L, const std::string& root_dir) {
   for (JsonObject s : r.objects("ships")) {
     ShipSpawnDef d;
     d.name = s.require_string("name");
+    d.has_label = s.has("label");
+    d.label = s.string("label", "");
     JsonValue cls = s.require("class");
     d.ship_class = cls.string();
     d.team = s.require_string("team");
@@ -181,6 +186,30 @@ void parse_props(JsonObject& r, LevelDef& L) {
   }
 }
 
+bool has_lightning(const EffectLibrary& fx, const std::string& effect) {
+  for (const ClusterDef& c : fx.get(fx.id(effect)).clusters)
+    if (c.animation == AnimationType::Lightning) return true;
+  return false;
+}
+
+// "to" and "velocity" of an effect spawn, after its position and repeat_ticks.
+void parse_effect_motion(JsonObject& e, EffectSpawnDef& d, const EffectLibrary* fx) {
+  if (auto to = e.get("to")) {
+    d.has_target = true;
+    d.target = to->vec3(-kSpace, kSpace);
+    if (e.has("orientation")) e.fail_key("orientation", "give 'orientation' or 'to' (which aims the channel), not both");
+    if (!(glm::length(d.target - d.position) > 1.0e-3))
+      to->fail("'to' must lie away from 'position' (at least 1 mm): the channel runs from one to the other");
+    if (fx && !has_lightning(*fx, d.effect))
+      to->fail("'to' aims a lightning channel, and effect \"" + d.effect + "\" has no lightning cluster");
+  }
+  if (auto v = e.get("velocity")) {
+    d.velocity = v->vec3(-1.0e5, 1.0e5);
+    if (d.repeat_ticks == 0 && d.velocity != glm::dvec3(0.0))
+      v->fail("a moving effect needs 'repeat_ticks' above 0 (each spawn restarts at 'position'); allowed: [x, y, z] m/s");
+  }
+}
+
 void parse_effects(JsonObject& r, LevelDef& L, const EffectLibrary* fx) {
   for (JsonObject e : r.objects("effects")) {
     EffectSpawnDef d;
@@ -195,6 +224,9 @@ void parse_effects(JsonObject& r, LevelDef& L, const EffectLibrary* fx) {
     d.orientation_deg = orientation(e);
     d.scale = e.number("scale", 1.0, 1.0e-3, 1.0e4);
     d.repeat_ticks = static_cast<int>(e.integer("repeat_ticks", 0, 0, 1000000));
+    parse_effect_motion(e, d, fx);
+    d.has_label_at = e.has("label_at");
+    d.label_at = e.vec3("label_at", glm::dvec3(0.0), -kSpace, kSpace);
     e.finish();
     L.effects.push_back(std::move(d));
   }

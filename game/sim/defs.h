@@ -69,6 +69,8 @@ constexpr AiKind last_enumerator(AiKind) { return AiKind::Gunner; }
 
 struct ShipSpawnDef {
   std::string name;
+  std::string label;       // drawn below it with a fixed camera (the gallery); "" for none
+  bool has_label = false;  // false: the name is drawn
   std::string ship_class;  // key into LevelDef::classes
   std::string team;
   bool player = false;
@@ -94,6 +96,14 @@ struct EffectSpawnDef {
   glm::dvec3 orientation_deg{0.0};
   double scale = 1.0;
   int repeat_ticks = 0;  // 0 = once at the start
+  // "to": a lightning effect's channel is aimed from `position` at this point and cut there.
+  bool has_target = false;
+  glm::dvec3 target{0.0};
+  // m/s: each spawn moves from `position` at this velocity until the next (needs repeat_ticks).
+  glm::dvec3 velocity{0.0};
+  // Where the label's top centre is drawn; by default 12 m × scale above `position`.
+  bool has_label_at = false;
+  glm::dvec3 label_at{0.0};
 };
 
 enum class WinKind : uint8_t { DestroyAllHostiles = 0, SurviveTicks = 1, LastTeamStanding = 2 };

@@ -4,6 +4,8 @@
 
 #include <filesystem>
 
+#include <glm/geometric.hpp>
+
 #include "game/sim/geometry.h"
 #include "game/sim/world.h"
 #include "particles/effect_library.h"
@@ -41,16 +43,48 @@ void publish_owner_transforms(World& w) {
     if (s.alive) set_owner(w, s.particle_owner, s.position, s.orientation, s.velocity);
 }
 
+namespace {
+
+// Level effects that move are attached to owners of their own, numbered from here by their
+// index in the level: far beyond what allocate_owner hands out to ships and projectiles.
+constexpr uint32_t kLevelEffectOwnerBase = 0x80000000u;
+
+glm::dquat spawn_orientation(const EffectSpawnDef& e) {
+  if (!e.has_target) return orientation_from_degrees(e.orientation_deg);
+  // Forward (−Z) toward the target; the up hint leans off +Y so a vertical aim stays defined.
+  return glm::quatLookAt(safe_norm(e.target - e.position, glm::dvec3(0, 0, -1)), glm::dvec3(0, 1, 0.001));
+}
+
+}  // namespace
+
+OwnerId level_effect_owner(size_t index) { return OwnerId{kLevelEffectOwnerBase + uint32_t(index)}; }
+
 void spawn_level_effects(World& w) {
   for (size_t i = 0; i < w.level.effects.size(); ++i) {
     const EffectSpawnDef& e = w.level.effects[i];
-    bool due = e.repeat_ticks > 0 ? w.tick % e.repeat_ticks == 1 % e.repeat_ticks : w.tick == 1;
+    const bool due = e.repeat_ticks > 0 ? w.tick % e.repeat_ticks == 1 % e.repeat_ticks : w.tick == 1;
+    const bool moving = e.velocity != glm::dvec3(0.0) && e.repeat_ticks > 0;
+    const glm::dquat q = spawn_orientation(e);
+    if (moving) {
+      // The owner's place is a function of the tick: it restarts at `position` with each spawn,
+      // and the last spawn's trail, let go, stays where it was laid and fades.
+      const int64_t age = (w.tick - 1) % e.repeat_ticks;
+      if (due) w.particles->release_owner(level_effect_owner(i));
+      set_owner(w, level_effect_owner(i), e.position + e.velocity * (double(age) * w.dt), q, e.velocity);
+    }
     if (!due) continue;
     SpawnParams p;
-    p.position = e.position;
-    p.orientation = orientation_from_degrees(e.orientation_deg);
     p.scale = e.scale;
-    spawn_fx(w, w.fx.level[i], p);
+    if (moving) {
+      p.owner = level_effect_owner(i);
+    } else {
+      p.position = e.position;
+      p.orientation = q;
+    }
+    const EffectHandle spawned = spawn_fx(w, w.fx.level[i], p);
+    // Measured along the channel, so its zigzag ends a few per cent short of the target.
+    if (e.has_target)
+      for (ClusterHandle ch : spawned.clusters) w.particles->cut_lightning(ch, glm::length(e.target - e.position));
   }
 }
 

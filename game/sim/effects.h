@@ -37,7 +37,11 @@ EffectHandle spawn_fx(World& w, EffectId effect, const SpawnParams& p);
 void set_owner(World& w, OwnerId owner, const glm::dvec3& pos, const glm::dquat& q, const glm::dvec3& vel);
 // Every live ship's transform, for the clusters attached to it.
 void publish_owner_transforms(World& w);
-// The level's own effects, at tick 1 and then every repeat_ticks.
+// The level's own effects, at tick 1 and then every repeat_ticks: a lightning channel with a
+// target ("to") aimed at it and cut there; a moving effect attached to an owner of its own
+// (level_effect_owner) that travels from its position at its velocity until the next spawn.
 void spawn_level_effects(World& w);
+// The particle owner of the level's moving effect number `index` (outside allocate_owner's range).
+OwnerId level_effect_owner(size_t index);
 
 }  // namespace arc

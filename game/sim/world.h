@@ -325,7 +325,8 @@ void visit_fields(W& w, V&& v) {
   v("dt", w.dt, fields::not_saved, fields::unhashed);                    // from the level's tick rate
 }
 
-// A particle owner no ship or projectile of this World has had before.
+// A particle owner no ship or projectile of this World has had before. (Moving level effects
+// use owners of their own from 2^31 up, level_effect_owner in game/sim/effects.h.)
 inline OwnerId allocate_owner(World& w) { return OwnerId{w.next_particle_owner++}; }
 
 inline int64_t seconds_to_ticks(const World& w, double s) { return static_cast<int64_t>(std::llround(s / w.dt)); }

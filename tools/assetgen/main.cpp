@@ -23,7 +23,7 @@ int main(int argc, char** argv) {
     const auto textures = root / "assets" / "textures";
     std::filesystem::create_directories(models);
     std::filesystem::create_directories(textures);
-    const int n = arc::assetgen::write_models(models.string()) + arc::assetgen::write_sprites(textures.string());
+    const int n = arc::assetgen::write_models(models.string(), textures.string()) + arc::assetgen::write_sprites(textures.string());
     std::printf("arcfire-assetgen: wrote %d files under %s\n", n, root.string().c_str());
     return arc::kExitOk;
   } catch (const arc::InputError& e) {

@@ -4,6 +4,8 @@
 #include <cstring>
 #include <sstream>
 #include <stdexcept>
+#include <glm/common.hpp>
+#include <glm/vec2.hpp>
 #include <glm/geometric.hpp>
 #include <tiny_gltf.h>
 #include "core/json.h"
@@ -49,6 +51,95 @@ int add_accessor(tinygltf::Model& m, int view, int component, int type, size_t c
   a.count = count;
   m.accessors.push_back(a);
   return int(m.accessors.size() - 1);
+}
+
+// Box projection: the triangle's points on the plane its normal faces most, in tiles.
+glm::vec2 box_uv(const glm::dvec3& p, const glm::dvec3& n, double metres_per_tile) {
+  const glm::dvec3 a = glm::abs(n);
+  glm::dvec2 uv = a.x >= a.y && a.x >= a.z ? glm::dvec2(p.z, p.y) : a.y >= a.z ? glm::dvec2(p.x, p.z) : glm::dvec2(p.x, p.y);
+  return glm::vec2(uv / metres_per_tile);
+}
+
+// One primitive of the triangles of material `mat` (none: nothing added): positions, flat
+// normals, box-projected UVs when the model has a detail texture, and the smallest index type.
+void add_primitive(tinygltf::Model& m, tinygltf::Mesh& mesh, const std::vector<Tri>& tris, int mat, double uv_tile) {
+  std::vector<unsigned char>& buf = m.buffers[0].data;
+  std::vector<float> pos, nrm, uv;
+  std::vector<uint32_t> idx32;
+  glm::vec3 lo(1e30f), hi(-1e30f);
+  for (const auto& t : tris) {
+    if (t.material != mat) continue;
+    const glm::dvec3 nd = glm::normalize(glm::cross(t.b - t.a, t.c - t.a));
+    const glm::vec3 n(nd);
+    for (const glm::dvec3& p : {t.a, t.b, t.c}) {
+      const glm::vec3 pf(p);
+      lo = glm::min(lo, pf);
+      hi = glm::max(hi, pf);
+      pos.insert(pos.end(), {pf.x, pf.y, pf.z});
+      nrm.insert(nrm.end(), {n.x, n.y, n.z});
+      if (uv_tile > 0.0) {
+        const glm::vec2 st = box_uv(p, nd, uv_tile);
+        uv.insert(uv.end(), {st.x, st.y});
+      }
+      idx32.push_back(uint32_t(idx32.size()));
+    }
+  }
+  if (idx32.empty()) return;
+  const size_t count = idx32.size();
+  tinygltf::Primitive prim;
+  prim.mode = TINYGLTF_MODE_TRIANGLES;
+  prim.material = mat;
+  size_t at = buf.size();
+  append_bytes(buf, pos);
+  prim.attributes["POSITION"] = add_accessor(m, add_view(m, at, count * 12, TINYGLTF_TARGET_ARRAY_BUFFER),
+                                             TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, count);
+  m.accessors.back().minValues = {lo.x, lo.y, lo.z};
+  m.accessors.back().maxValues = {hi.x, hi.y, hi.z};
+  at = buf.size();
+  append_bytes(buf, nrm);
+  prim.attributes["NORMAL"] = add_accessor(m, add_view(m, at, count * 12, TINYGLTF_TARGET_ARRAY_BUFFER),
+                                           TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, count);
+  if (!uv.empty()) {
+    at = buf.size();
+    append_bytes(buf, uv);
+    prim.attributes["TEXCOORD_0"] = add_accessor(m, add_view(m, at, count * 8, TINYGLTF_TARGET_ARRAY_BUFFER),
+                                                 TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC2, count);
+  }
+  at = buf.size();
+  // The smallest index type that fits keeps the files small and exercises the u16 path.
+  if (count <= 65535) {
+    std::vector<uint16_t> idx16(idx32.begin(), idx32.end());
+    append_bytes(buf, idx16);
+    prim.indices = add_accessor(m, add_view(m, at, count * 2, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER),
+                                TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_TYPE_SCALAR, count);
+  } else {
+    append_bytes(buf, idx32);
+    prim.indices = add_accessor(m, add_view(m, at, count * 4, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER),
+                                TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, count);
+  }
+  mesh.primitives.push_back(prim);
+}
+
+// The detail texture as image 0 / texture 0: PNG bytes in the binary buffer, repeating.
+void add_detail_image(tinygltf::Model& m, const std::string& png) {
+  std::vector<unsigned char>& buf = m.buffers[0].data;
+  const size_t at = buf.size();
+  buf.insert(buf.end(), png.begin(), png.end());
+  while (buf.size() % 4) buf.push_back(0);
+  tinygltf::Image image;
+  image.name = "hull_detail";
+  image.mimeType = "image/png";
+  image.bufferView = add_view(m, at, png.size(), 0);
+  m.images.push_back(image);
+  tinygltf::Sampler sampler;
+  sampler.magFilter = TINYGLTF_TEXTURE_FILTER_LINEAR;
+  sampler.minFilter = TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR;
+  sampler.wrapS = sampler.wrapT = TINYGLTF_TEXTURE_WRAP_REPEAT;
+  m.samplers.push_back(sampler);
+  tinygltf::Texture texture;
+  texture.sampler = 0;
+  texture.source = 0;
+  m.textures.push_back(texture);
 }
 
 }  // namespace
@@ -138,6 +229,11 @@ Solid translated(const Solid& s, glm::dvec3 offset) {
   return m;
 }
 
+void MeshBuilder::set_detail_texture(std::string png_bytes, double metres_per_tile) {
+  detail_png_ = std::move(png_bytes);
+  metres_per_tile_ = metres_per_tile;
+}
+
 void MeshBuilder::add(const Solid& s) { tris_.insert(tris_.end(), s.tris.begin(), s.tris.end()); }
 
 void MeshBuilder::add_tri(int material, glm::dvec3 a, glm::dvec3 b, glm::dvec3 c) {
@@ -149,61 +245,18 @@ void MeshBuilder::write_glb(const std::string& path, const std::string& name, co
   m.asset.version = "2.0";
   m.asset.generator = "arcfire-assetgen";
   m.buffers.emplace_back();
-  std::vector<unsigned char>& buf = m.buffers[0].data;
   tinygltf::Mesh mesh;
   mesh.name = name;
-  for (size_t mat = 0; mat < materials.size(); ++mat) {
-    std::vector<float> pos, nrm;
-    std::vector<uint16_t> idx16;
-    std::vector<uint32_t> idx32;
-    glm::vec3 lo(1e30f), hi(-1e30f);
-    for (const auto& t : tris_) {
-      if (t.material != int(mat)) continue;
-      const glm::vec3 n = glm::vec3(glm::normalize(glm::cross(t.b - t.a, t.c - t.a)));
-      for (const glm::dvec3& p : {t.a, t.b, t.c}) {
-        const glm::vec3 pf(p);
-        lo = glm::min(lo, pf);
-        hi = glm::max(hi, pf);
-        pos.insert(pos.end(), {pf.x, pf.y, pf.z});
-        nrm.insert(nrm.end(), {n.x, n.y, n.z});
-        idx32.push_back(uint32_t(idx32.size()));
-      }
-    }
-    if (idx32.empty()) continue;
-    const size_t count = idx32.size();
-    tinygltf::Primitive prim;
-    prim.mode = TINYGLTF_MODE_TRIANGLES;
-    prim.material = int(mat);
-    size_t at = buf.size();
-    append_bytes(buf, pos);
-    prim.attributes["POSITION"] = add_accessor(m, add_view(m, at, count * 12, TINYGLTF_TARGET_ARRAY_BUFFER),
-                                               TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, count);
-    m.accessors.back().minValues = {lo.x, lo.y, lo.z};
-    m.accessors.back().maxValues = {hi.x, hi.y, hi.z};
-    at = buf.size();
-    append_bytes(buf, nrm);
-    prim.attributes["NORMAL"] = add_accessor(m, add_view(m, at, count * 12, TINYGLTF_TARGET_ARRAY_BUFFER),
-                                             TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, count);
-    at = buf.size();
-    // The smallest index type that fits keeps the files small and exercises the u16 path.
-    if (count <= 65535) {
-      for (uint32_t i : idx32) idx16.push_back(uint16_t(i));
-      append_bytes(buf, idx16);
-      prim.indices = add_accessor(m, add_view(m, at, count * 2, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER),
-                                  TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_TYPE_SCALAR, count);
-    } else {
-      append_bytes(buf, idx32);
-      prim.indices = add_accessor(m, add_view(m, at, count * 4, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER),
-                                  TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, count);
-    }
-    mesh.primitives.push_back(prim);
-  }
+  const bool detail = !detail_png_.empty();
+  for (size_t mat = 0; mat < materials.size(); ++mat) add_primitive(m, mesh, tris_, int(mat), detail ? metres_per_tile_ : 0.0);
+  if (detail) add_detail_image(m, detail_png_);
   for (const auto& def : materials) {
     tinygltf::Material mat;
     mat.name = def.name;
     mat.pbrMetallicRoughness.baseColorFactor = {def.base_color.r, def.base_color.g, def.base_color.b, def.base_color.a};
     mat.pbrMetallicRoughness.metallicFactor = def.metallic;
     mat.pbrMetallicRoughness.roughnessFactor = def.roughness;
+    if (detail && def.detail) mat.pbrMetallicRoughness.baseColorTexture.index = 0;
     mat.emissiveFactor = {def.emissive.r, def.emissive.g, def.emissive.b};
     if (def.team_color > 0.0f)
       mat.extras = tinygltf::Value(tinygltf::Value::Object{{"arcfire_team_color", tinygltf::Value(double(def.team_color))}});

@@ -7,6 +7,7 @@
 //
 //   Solid hull = loft({ring_z(-7, 0.01, 0.01, 8), ring_z(0, 1, 0.8, 8)}, {kHull}, kTrim, kTrim);
 //   MeshBuilder mb; mb.add(hull); mb.add(mirror_x(wing));
+//   mb.set_detail_texture(png_bytes, 6.0);   // optional: panel lines on materials marked `detail`
 //   mb.write_glb("assets/models/viper.glb", "viper", materials);
 #pragma once
 #include <string>
@@ -34,6 +35,7 @@ struct MaterialDef {
   float metallic = 0.0f;
   float roughness = 0.8f;
   float team_color = 0.0f;  // > 0: written as extras.arcfire_team_color (assets/model.h)
+  bool detail = false;      // multiplied by the model's detail texture (MeshBuilder::set_detail_texture)
 };
 
 // A ring in the plane z = const: a superellipse of half-width w, half-height h around (cx, cy).
@@ -56,11 +58,17 @@ class MeshBuilder {
   void add(const Solid& s);
   void add_tri(int material, glm::dvec3 a, glm::dvec3 b, glm::dvec3 c);
   size_t triangle_count() const { return tris_.size(); }
+  // A tiling detail texture (PNG bytes, sRGB colour) embedded in the .glb as the base colour
+  // texture of every material marked `detail`; UVs are a box projection of each triangle onto
+  // the plane its normal faces most, `metres_per_tile` metres to one repeat.
+  void set_detail_texture(std::string png_bytes, double metres_per_tile);
   // Flat normals: every triangle gets its own three vertices. Written atomically.
   void write_glb(const std::string& path, const std::string& name, const std::vector<MaterialDef>& materials) const;
 
  private:
   std::vector<Tri> tris_;
+  std::string detail_png_;
+  double metres_per_tile_ = 1.0;
 };
 
 }  // namespace arc::assetgen

@@ -7,21 +7,51 @@
 #include <map>
 #include <glm/geometric.hpp>
 #include "core/rng.h"
+#include "hull_textures.h"
 #include "mesh_builder.h"
 
 namespace arc::assetgen {
 namespace {
 
-enum Slot { kHull = 0, kTrim = 1, kGlow = 2, kTeamStripe = 3, kEngineGlow = 4 };
+enum Slot { kHull = 0, kTrim = 1, kGlow = 2, kTeamStripe = 3, kEngineGlow = 4, kPortLight = 5, kStarboardLight = 6 };
 
-// The last two slots take the team colour: stripes their albedo, nozzles their glow's hue (the
-// colours given here are what a ship of a team without a colour shows).
-std::vector<MaterialDef> ship_materials(glm::vec4 hull, glm::vec3 glow) {
-  return {{"hull", hull, {0, 0, 0}, 0.4f, 0.55f},
-          {"trim", {0.16f, 0.17f, 0.19f, 1.0f}, {0, 0, 0}, 0.6f, 0.45f},
-          {"glow", {0.1f, 0.1f, 0.1f, 1.0f}, glow, 0.0f, 1.0f},
-          {"team_stripe", {0.8f, 0.8f, 0.82f, 1.0f}, {0, 0, 0}, 0.3f, 0.5f, 1.0f},
-          {"engine_glow", {0.1f, 0.1f, 0.1f, 1.0f}, glow, 0.0f, 1.0f, 1.0f}};
+// How each class looks: hull and trim colours (distinct in tone and hue from each other and
+// from the default team colours, so class and team read apart), the glow of its canopy and
+// engines, and its plating pattern.
+struct ClassLook {
+  std::string name;
+  glm::vec4 hull;
+  glm::vec3 glow;
+  HullPattern plating;
+  double metres_per_tile;
+};
+
+// The last two team slots take the team colour: stripes their albedo, nozzles their glow's hue
+// (the colours given here are what a ship of a team without a colour shows). Hull, trim and
+// stripes carry the plating detail texture; running lights are red to port, green to starboard.
+std::vector<MaterialDef> ship_materials(const ClassLook& look) {
+  const glm::vec4 trim(glm::vec3(look.hull) * 0.32f, 1.0f);
+  return {{"hull", look.hull, {0, 0, 0}, 0.3f, 0.42f, 0.0f, true},
+          {"trim", trim, {0, 0, 0}, 0.7f, 0.35f, 0.0f, true},
+          {"glow", {0.1f, 0.1f, 0.1f, 1.0f}, look.glow, 0.0f, 1.0f},
+          {"team_stripe", {0.8f, 0.8f, 0.82f, 1.0f}, {0, 0, 0}, 0.3f, 0.5f, 1.0f, true},
+          {"engine_glow", {0.1f, 0.1f, 0.1f, 1.0f}, look.glow, 0.0f, 1.0f, 1.0f},
+          {"port_light", {0.1f, 0.1f, 0.1f, 1.0f}, {1.0f, 0.1f, 0.06f}, 0.0f, 1.0f},
+          {"starboard_light", {0.1f, 0.1f, 0.1f, 1.0f}, {0.12f, 1.0f, 0.3f}, 0.0f, 1.0f}};
+}
+
+// Plating texture into textures_dir, embedded into the model too; then the model itself.
+void write_ship(MeshBuilder& mb, const ClassLook& look, const std::string& models_dir, const std::string& textures_dir) {
+  mb.set_detail_texture(write_hull_texture(textures_dir + "/hull_" + look.name + ".png", look.plating),
+                        look.metres_per_tile);
+  mb.write_glb(models_dir + "/" + look.name + ".glb", look.name, ship_materials(look));
+}
+
+// A pair of running lights: small glowing blocks centred at (±x, y, z), red on the left (−X).
+void running_lights(MeshBuilder& mb, double x, double y, double z, double size = 0.45) {
+  const glm::dvec3 half(size * 0.5);
+  mb.add(box(glm::dvec3(x, y, z) - half, glm::dvec3(x, y, z) + half, kStarboardLight));
+  mb.add(box(glm::dvec3(-x, y, z) - half, glm::dvec3(-x, y, z) + half, kPortLight));
 }
 
 // An engine pod along +Z ending in a recessed, glowing nozzle whose centre is at (x, y, z_end).
@@ -59,7 +89,7 @@ void add_both_sides(MeshBuilder& mb, const Solid& right) {
 }
 
 // Viper: nimble fighter, ~14 m. Dart nose, swept wings, twin engines at x = ±1.6, z = 7.
-void viper(const std::string& dir) {
+void viper(const std::string& models_dir, const std::string& textures_dir) {
   MeshBuilder mb;
   mb.add(loft({ring_z(-7.6, 0.02, 0.02, 8, 0, -0.1), ring_z(-5.8, 0.45, 0.35, 8, 0, -0.1, 2.6),
                ring_z(-3.5, 0.9, 0.7, 8, 0, 0.0, 2.6), ring_z(-0.5, 1.25, 0.9, 8, 0, 0.05, 3.0),
@@ -77,11 +107,13 @@ void viper(const std::string& dir) {
   add_both_sides(mb, loft({circle_z(-6.9, 0.07, 6, 2.5, -0.4), circle_z(-3.0, 0.12, 6, 2.5, -0.4),
                            circle_z(-1.5, 0.25, 6, 2.5, -0.4)},
                           {kTrim}, kTrim, kTrim));
-  mb.write_glb(dir + "/viper.glb", "viper", ship_materials({0.55f, 0.62f, 0.72f, 1.0f}, {0.35f, 0.75f, 1.0f}));
+  running_lights(mb, 6.2, -0.35, 5.72, 0.22);
+  const ClassLook look{"viper", {0.8f, 0.81f, 0.83f, 1.0f}, {0.35f, 0.75f, 1.0f}, {.seed = 11, .rows = 8, .plates_per_row = 3}, 6.0};
+  write_ship(mb, look, models_dir, textures_dir);
 }
 
 // Warden: heavy gunship, ~21 m. Bulky chined hull, side gun pods, three engines at z = 10.
-void warden(const std::string& dir) {
+void warden(const std::string& models_dir, const std::string& textures_dir) {
   MeshBuilder mb;
   mb.add(loft({ring_z(-10.2, 1.2, 0.6, 8, 0, -0.5, 3.0), ring_z(-8.8, 2.2, 1.2, 8, 0, -0.3, 3.5),
                ring_z(-4.0, 2.9, 1.9, 8, 0, 0.0, 3.5), ring_z(3.0, 3.2, 2.0, 8, 0, 0.1, 3.5),
@@ -104,11 +136,14 @@ void warden(const std::string& dir) {
                           {kTrim}, kTrim, kTrim));
   add_both_sides(mb, engine(3.0, 0.0, 5.5, 10.0, 0.95, 8));
   mb.add(engine(0.0, 0.0, 5.0, 10.5, 1.15, 8));
-  mb.write_glb(dir + "/warden.glb", "warden", ship_materials({0.62f, 0.58f, 0.44f, 1.0f}, {1.0f, 0.55f, 0.2f}));
+  running_lights(mb, 6.33, -0.5, 0.5, 0.45);
+  const ClassLook look{"warden", {0.58f, 0.57f, 0.37f, 1.0f}, {1.0f, 0.55f, 0.2f},
+                       {.seed = 12, .rows = 6, .plates_per_row = 2, .hatch_share = 0.35}, 9.0};
+  write_ship(mb, look, models_dir, textures_dir);
 }
 
 // Dart: interceptor, ~13 m. Long needle, forward-swept fins, one big engine at z = 6.
-void dart(const std::string& dir) {
+void dart(const std::string& models_dir, const std::string& textures_dir) {
   MeshBuilder mb;
   mb.add(loft({ring_z(-7.2, 0.01, 0.01, 8), ring_z(-4.5, 0.3, 0.3, 8), ring_z(-1.0, 0.6, 0.6, 8, 0, 0.05, 2.4),
                ring_z(2.5, 0.85, 0.75, 8, 0, 0.05, 2.6), ring_z(4.2, 0.95, 0.8, 8, 0, 0.0, 2.6)},
@@ -130,7 +165,9 @@ void dart(const std::string& dir) {
   // Dorsal and ventral tail fins give the needle a clear side profile.
   mb.add(fin(0.0, 0.6, 2.4, 2.2, 3.0, 4.4, 1.3, 0.2, kTeamStripe));
   mb.add(fin(0.0, -0.6, -1.7, 2.6, 2.4, 4.2, 1.2, 0.2, kTeamStripe));
-  mb.write_glb(dir + "/dart.glb", "dart", ship_materials({0.72f, 0.22f, 0.18f, 1.0f}, {0.5f, 1.0f, 0.6f}));
+  running_lights(mb, 4.22, 0.15, -0.6, 0.28);
+  const ClassLook look{"dart", {0.42f, 0.43f, 0.5f, 1.0f}, {0.5f, 1.0f, 0.6f}, {.seed = 13, .rows = 10, .plates_per_row = 4}, 5.0};
+  write_ship(mb, look, models_dir, textures_dir);
 }
 
 // Wall: a 40 × 40 m armour panel in the XY plane facing +Z, 1 m thick, with raised plates,
@@ -209,13 +246,13 @@ void asteroid(const std::string& dir) {
 
 }  // namespace
 
-int write_models(const std::string& dir) {
-  viper(dir);
-  warden(dir);
-  dart(dir);
+int write_models(const std::string& dir, const std::string& textures_dir) {
+  viper(dir, textures_dir);
+  warden(dir, textures_dir);
+  dart(dir, textures_dir);
   wall(dir);
   asteroid(dir);
-  return 5;
+  return 8;
 }
 
 }  // namespace arc::assetgen

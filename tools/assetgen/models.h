@@ -5,7 +5,9 @@
 
 namespace arc::assetgen {
 
-// Writes every model into dir (e.g. "assets/models"); returns the number of files written.
-int write_models(const std::string& dir);
+// Writes every model into dir (e.g. "assets/models") and the ships' plating textures
+// (hull_<class>.png, also embedded in their models) into textures_dir; returns the number of
+// files written.
+int write_models(const std::string& dir, const std::string& textures_dir);
 
 }  // namespace arc::assetgen

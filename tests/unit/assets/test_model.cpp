@@ -49,12 +49,8 @@ TEST_P(GeneratedShip, LoadsAsAWellFormedShipFacingMinusZ) {
   EXPECT_GE(m.radius, 0.5f * size.z);
   EXPECT_LE(m.radius, glm::length(size));
   ASSERT_GE(m.materials.size(), 2u);
-  // The glowing parts (nozzles, canopy) exist, and on balance sit behind the nose: the ship
-  // faces −Z with its engines at the back.
-  int emissive_material = -1;
-  for (size_t i = 0; i < m.materials.size(); ++i)
-    if (glm::length(m.materials[i].emissive) > 0.1f) emissive_material = int(i);
-  ASSERT_GE(emissive_material, 0);
+  // The glowing parts (nozzles, canopy, running lights) exist, and on balance sit behind the
+  // nose: the ship faces −Z with its engines at the back.
   float nose_z = 0.0f;
   for (const auto& p : m.primitives)
     for (const auto& v : p.positions) nose_z = std::min(nose_z, v.z);
@@ -62,10 +58,55 @@ TEST_P(GeneratedShip, LoadsAsAWellFormedShipFacingMinusZ) {
   double glow_z = 0.0;
   size_t glow_vertices = 0;
   for (const auto& p : m.primitives)
-    if (p.material == emissive_material)
+    if (p.material >= 0 && glm::length(m.materials[size_t(p.material)].emissive) > 0.1f)
       for (const auto& v : p.positions) glow_z += v.z, ++glow_vertices;
   ASSERT_GT(glow_vertices, 0u);
   EXPECT_GT(glow_z / double(glow_vertices), 0.0);
+}
+
+// Hull detail (issue 14 item 4): the hull's material carries the plating texture, mapped by
+// UVs, with dark panel lines on mostly light plates; a red running light to port (−X) and a
+// green one to starboard (+X) glow; hull and trim have a highlight (not fully rough).
+TEST_P(GeneratedShip, HullHasPlatingAndRunningLights) {
+  const ModelData m = load_model(GetParam().file);
+  ASSERT_FALSE(m.materials.empty());
+  const Material& hull = m.materials[0];
+  ASSERT_GE(hull.base_color_image, 0);
+  const Image& plating = m.images[size_t(hull.base_color_image)];
+  std::vector<int> histogram(256, 0);
+  for (size_t i = 0; i < plating.rgba.size(); i += 4) ++histogram[plating.rgba[i]];
+  int dark = 0, light = 0;
+  for (int v = 0; v < 110; ++v) dark += histogram[size_t(v)];
+  for (int v = 191; v < 256; ++v) light += histogram[size_t(v)];
+  const int texels = plating.width * plating.height;
+  EXPECT_GT(dark, texels / 50) << "panel lines";
+  EXPECT_GT(light, texels / 2) << "plates";
+  EXPECT_LT(hull.roughness, 0.8f);
+  for (const auto& p : m.primitives)
+    if (p.material == 0) EXPECT_EQ(p.uvs.size(), p.positions.size());
+  auto side_of = [&](auto is_colour) {
+    double x = 0.0;
+    size_t n = 0;
+    for (const auto& p : m.primitives)
+      if (p.material >= 0 && is_colour(m.materials[size_t(p.material)].emissive))
+        for (const auto& v : p.positions) x += v.x, ++n;
+    return n ? x / double(n) : 0.0;
+  };
+  EXPECT_LT(side_of([](glm::vec3 e) { return e.r > 0.8f && e.g < 0.3f && e.b < 0.3f; }), -1.0) << "red to port";
+  EXPECT_GT(side_of([](glm::vec3 e) { return e.g > 0.8f && e.r < 0.3f && e.b < 0.5f; }), 1.0) << "green to starboard";
+}
+
+// Each class reads by its hull colour: every pair differs clearly, and none is close to the
+// default team colours (blue [0.22, 0.5, 1], red [1, 0.2, 0.12]) that paint their stripes.
+TEST(GeneratedShips, ClassesDifferInHullColour) {
+  std::vector<glm::vec3> hulls;
+  for (const char* name : {"viper", "warden", "dart"})
+    hulls.push_back(glm::vec3(load_model(std::string("assets/models/") + name + ".glb").materials.at(0).base_color));
+  for (size_t i = 0; i < hulls.size(); ++i) {
+    for (size_t j = i + 1; j < hulls.size(); ++j) EXPECT_GT(glm::length(hulls[i] - hulls[j]), 0.2f) << i << " " << j;
+    EXPECT_GT(glm::length(hulls[i] - glm::vec3(0.22f, 0.5f, 1.0f)), 0.45f) << i;
+    EXPECT_GT(glm::length(hulls[i] - glm::vec3(1.0f, 0.2f, 0.12f)), 0.45f) << i;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Assets, GeneratedShip,

@@ -60,10 +60,12 @@ TEST(LevelFiles, RequiredLevelsHaveTheirShapes) {
   LevelDef attract = load_level_def(kRoot + "/levels/attract.json", kRoot);
   for (const ShipSpawnDef& s : attract.ships) EXPECT_EQ(s.ai, AiKind::Fighter) << s.name;
   LevelDef gallery = load_level_def(kRoot + "/levels/gallery.json", kRoot);
-  std::set<std::string> effects;
+  // Every effect has a labelled cell of its own (unlabelled spawns are a cell's backdrop).
+  std::set<std::string> effects, labels;
   for (const EffectSpawnDef& e : gallery.effects) {
+    if (e.label.empty()) continue;
     effects.insert(e.effect);
-    EXPECT_FALSE(e.label.empty());
+    EXPECT_TRUE(labels.insert(e.label).second) << "label used twice: " << e.label;
   }
   for (const auto& e : std::filesystem::directory_iterator(kRoot + "/assets/effects"))
     if (e.path().extension() == ".json") EXPECT_TRUE(effects.count(e.path().stem().string())) << e.path();
@@ -212,6 +214,39 @@ TEST(LevelErrors, BadAiDifficultyFileIsReportedInThatFile) {
   EXPECT_NE(m.find("'tail_break_s' must be above zero"), std::string::npos) << m;
   m = error_for("{ \"easy\": {" + row + R"( "tail_limit_s": 0, "tail_break_s": 0 } })");
   EXPECT_NE(m.find("normal"), std::string::npos) << m;
+}
+
+// "to", "velocity" and ship labels (the gallery's cells): each misuse is one positioned line.
+TEST(LevelErrors, EffectTargetsAndVelocitiesAreChecked) {
+  auto with_effect = [](const std::string& effect) {
+    std::string t = kGood;
+    return t.replace(t.find("\"ships\""), 0, "\"effects\": [" + effect + "],\n  ");
+  };
+  auto fx = load_effect_library(kRoot);
+  auto error_with_library = [&](const std::string& text) -> std::string {
+    try {
+      parse_level_def(text, "bad.json", kRoot, fx.get());
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  const std::string beam = R"({ "effect": "lightning_beam", "position": [0, 0, 0], )";
+  EXPECT_EQ(error_with_library(with_effect(beam + R"("to": [30, 0, 0], "repeat_ticks": 60 })")), "");
+  std::string e = error_with_library(with_effect(beam + R"("orientation": [90, 0, 0], "to": [30, 0, 0] })"));
+  EXPECT_EQ(e.rfind("bad.json:6:", 0), 0u) << e;
+  EXPECT_NE(e.find("'orientation' or 'to'"), std::string::npos) << e;
+  e = error_with_library(with_effect(beam + R"("to": [0, 0, 0] })"));
+  EXPECT_EQ(e.rfind("bad.json:6:74: 'to' must lie away from 'position'", 0), 0u) << e;
+  e = error_with_library(with_effect(R"({ "effect": "shield_hit", "to": [1, 0, 0] })"));
+  EXPECT_EQ(e.rfind("bad.json:6:47: 'to' aims a lightning channel", 0), 0u) << e;
+  e = error_with_library(with_effect(R"({ "effect": "plasma_bolt", "velocity": [10, 0, 0] })"));
+  EXPECT_EQ(e.rfind("bad.json:6:54: a moving effect needs 'repeat_ticks'", 0), 0u) << e;
+  e = error_with_library(with_effect(R"({ "effect": "plasma_bolt", "label_at": [1, 2] })"));
+  EXPECT_EQ(e.rfind("bad.json:6:54: 'label_at' must be", 0), 0u) << e;
+  std::string t = kGood;
+  e = error_of(t.replace(t.find("\"player\": true"), 0, "\"label\": 3, "));
+  EXPECT_EQ(e.rfind("bad.json:7:63: 'label' must be a string", 0), 0u) << e;
 }
 
 TEST(LevelErrors, UnknownEffectIsReportedAtItsPosition) {
