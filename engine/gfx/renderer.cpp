@@ -25,6 +25,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <stdexcept>
 
 #include "gfx/gpu_timers.h"
@@ -78,6 +79,14 @@ struct Renderer::Impl {
   void clear_scene();
   void draw_particles(const RenderView& v, const ViewProjection& vp);
 };
+
+std::string describe_particle_stats(const FrameStats& s) {
+  char line[160];
+  std::snprintf(line, sizeof line, "particles %d, %d reduced | %d draws | %.1f screens blended (%.1f before the budget)",
+                s.particles_drawn, s.particles_reduced, s.particle_draw_calls, s.overdraw_budgeted_layers,
+                s.overdraw_estimated_layers);
+  return line;
+}
 
 Renderer::Renderer(const RendererDesc& desc) {
   int ver = epoxy_gl_version();

@@ -67,6 +67,10 @@ struct FrameStats {
   double particle_pass_gpu_ms = -1;   // GL_TIME_ELAPSED of this frame's particle pass (time_gpu_passes); −1 if not timed
 };
 
+// One line of a frame's particle figures for an on-screen counter: particles drawn (and how
+// many the overdraw budget reduced), particle draws, estimated blended layers.
+std::string describe_particle_stats(const FrameStats& s);
+
 class Renderer {
  public:
   // Throws PlatformError-like std::runtime_error when GL is older than 3.3 or shaders fail.

@@ -299,6 +299,7 @@ void WindowSession::draw() {
   if (width > 0 && height > 0) {
     build_render_view(w, models_, clock_->alpha(), CameraSettings{}, hud_, width, height, view_);
     renderer_->render(view_, width, height);
+    if (hud_.show_fps) hud_.frame_stats = describe_particle_stats(renderer_->last_stats());
     if (want_screenshot_) {
       // Read the frame just drawn, before the swap leaves the back buffer undefined.
       std::string path = screenshot_path();

@@ -248,7 +248,10 @@ void layout_hud(const World& w, const CameraView& cam, const HudState& state, do
   const double scale = hud_canvas_scale(std::max(height, 1));
   width = std::max(1, int(std::lround(std::max(width, 1) / scale)));
   height = std::max(1, int(std::lround(std::max(height, 1) / scale)));
-  if (state.show_fps) text(h, width - 120, 12, 1.0, kHudWhite, fmt("%.0f fps", state.fps));
+  if (state.show_fps) {
+    text(h, width - 120, 12, 1.0, kHudWhite, fmt("%.0f fps", state.fps));
+    if (!state.frame_stats.empty()) text(h, width / 2 - 300, 4, 0.8, kHudWhite, state.frame_stats);
+  }
   if (state.show_hud) {
     const Projector pr = Projector::of(cam, width, height);
     text(h, 24, 16, 1.2, kHudWhite, w.level.objective);

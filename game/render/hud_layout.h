@@ -38,6 +38,7 @@ struct HudState {
   bool show_hud = true;     // flight HUD, objective and labels (benchmark frames turn it off)
   bool show_fps = false;    // FPS counter (F3)
   double fps = 0;           // shown when show_fps
+  std::string frame_stats;  // shown under it when show_fps: the renderer's particle figures
   int pause_selection = 0;  // highlighted pause-menu item while the game is paused
   std::vector<std::string> pause_items{"Resume", "Restart", "Difficulty: normal", "Quit"};
   HudReticle reticle;

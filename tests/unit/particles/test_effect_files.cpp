@@ -112,6 +112,16 @@ TEST(EffectFiles, UnknownShapeAndSoftEdge) {
                "\"density_extent\"");
 }
 
+TEST(EffectFiles, ScreenPriorityIsLowNormalOrHigh) {
+  expect_error(with("\"sprite\": \"spark\",", "\"sprite\": \"spark\", \"screen_priority\": \"urgent\","), "\"urgent\"",
+               "\"low\", \"normal\"");
+  EffectLibrary lib;
+  lib.load_directory(ARCFIRE_SOURCE_DIR "/assets/effects");
+  EXPECT_EQ(lib.get("lightning_beam").clusters[0].screen_priority, ScreenPriority::High);
+  EXPECT_EQ(lib.get("hull_sparks").clusters[0].screen_priority, ScreenPriority::Low);
+  EXPECT_EQ(lib.get("shield_sphere").clusters[0].screen_priority, ScreenPriority::Normal);
+}
+
 TEST(EffectFiles, KeyframesMustNotGoBack) {
   expect_error(with("\"lifetime\": [0.5, 1] }", "\"lifetime\": [0.5, 1] }, \"curves\": { \"alpha\": [[0.5, 1], [0.2, 0]] }"),
                "0.2, 0]", "must not decrease");
