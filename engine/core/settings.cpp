@@ -55,6 +55,13 @@ Settings Settings::defaults() {
   s.define_choice("render.sky", "baked", {"baked", "exact"},
                   "nebula background: baked once per level into a cube map, or evaluated per pixel every frame");
   s.define_integer("render.sky_resolution", 256, 16, 1024, "texels along each face of the baked nebula cube map");
+  s.define_flag("render.hdr", true,
+                "linear-light float scene with a filmic tone curve (on), or 8-bit display colours as before (off)");
+  s.define_number("render.exposure", 1.0, 0.05, 16.0, "scene brightness scale before the tone curve (render.hdr on)");
+  s.define_choice("render.bloom", "low", {"off", "low", "high"},
+                  "glow around light brighter than white (render.hdr on): none, soft or strong");
+  s.define_choice("render.antialias", "fxaa", {"off", "fxaa", "msaa2", "msaa4"},
+                  "edge anti-aliasing: FXAA filter on the final image, or 2x/4x multisampling of the opaque pass");
   // Particles
   s.define_integer("particles.budget", 200000, 1000, 4000000, "largest number of live particles");
   s.define_integer("particles.lightning_interval", 0, 0, 60,

@@ -35,6 +35,8 @@ struct RendererDesc {
   std::string shader_dir = ARCFIRE_SOURCE_DIR "/shaders";
   bool offscreen = false;  // resolve into an RGBA8 target for read_pixels() instead of the window
   bool float_scene = false;  // RGBA16F scene buffer: NaN/Inf survive to read_pixels_float()
+  // The float format of the HDR scene buffer (render.hdr): measured on llvmpipe, see post_pass.h.
+  HdrFormat hdr_format = HdrFormat::R11fG11fB10f;
   // Particles one draw can pull from its buffer texture: GL_MAX_TEXTURE_BUFFER_SIZE / 4, or
   // this when it is smaller and not 0 (tests use it to reach the limit).
   size_t max_particles_per_draw = 0;

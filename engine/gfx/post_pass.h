@@ -1,0 +1,51 @@
+// gfx/post_pass.h — from the scene buffer to the output: tone mapping and edge anti-aliasing.
+//
+// The last scene pass before the HUD, replacing the plain resolve where it has work to do:
+//   hdr off, no FXAA   the scene colour is blitted to the output as before (RenderTargets::resolve)
+//   hdr on             scene (+ bloom) × exposure through the ACES fit, encoded sRGB
+//                      (shaders/tonemap.frag), into the output, or with FXAA into an RGBA8 image
+//                      of the scene's size that the FXAA pass then filters into the output
+//   hdr off, FXAA      the 8-bit scene colour filtered by FXAA into the output
+// The HUD draws afterwards onto the output, so the filter never touches it.
+//
+//   PostPass post;
+//   post.run({targets.scene_color(), scene_w, scene_h, bloom_tex, 0.1f, 1.0f, true, true}, programs, targets,
+//            1280, 720);
+#pragma once
+#include <epoxy/gl.h>
+
+#include "gfx/render_targets.h"
+#include "gfx/shader_programs.h"
+
+namespace arc {
+
+struct PostInput {
+  GLuint scene = 0;
+  int scene_w = 1, scene_h = 1;
+  GLuint bloom = 0;             // the bloom chain's sum, or 0 for none
+  float bloom_strength = 0.0f;  // what one unit of the chain's sum adds to the scene
+  float exposure = 1.0f;
+  bool hdr = false;
+  bool fxaa = false;
+};
+
+class PostPass {
+ public:
+  PostPass();
+  ~PostPass();
+  PostPass(const PostPass&) = delete;
+  PostPass& operator=(const PostPass&) = delete;
+
+  // Leaves the output bound with a width × height viewport, blending and depth test off.
+  void run(const PostInput& in, const ShaderPrograms& programs, const RenderTargets& targets, int width, int height);
+
+ private:
+  void ensure_tonemapped(int w, int h);
+  void tonemap(const PostInput& in, const ShaderPrograms& programs) const;
+  void fxaa(GLuint image, int w, int h, const ShaderPrograms& programs) const;
+  GLuint vao_ = 0;
+  GLuint ldr_fbo_ = 0, ldr_tex_ = 0;  // the tone-mapped image FXAA reads
+  int ldr_w_ = 0, ldr_h_ = 0;
+};
+
+}  // namespace arc
