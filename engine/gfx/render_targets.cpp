@@ -11,10 +11,11 @@ namespace arc {
 RenderTargets::RenderTargets(bool offscreen, bool float_scene) : offscreen_(offscreen), float_scene_(float_scene) {}
 
 RenderTargets::~RenderTargets() {
-  GLuint tex[] = {scene_color_, copy_depth_, target_color_};
-  glDeleteTextures(3, tex);
-  GLuint rbs[] = {scene_depth_, ms_color_, ms_depth_};
-  glDeleteRenderbuffers(3, rbs);
+  GLuint tex[] = {scene_color_, copy_depth_, target_color_, ms_color_};
+  glDeleteTextures(4, tex);
+  GLuint rbs[] = {scene_depth_, ms_depth_};
+  glDeleteRenderbuffers(2, rbs);
+  glDeleteVertexArrays(1, &resolve_vao_);
   GLuint fbos[] = {scene_fbo_, copy_fbo_, target_fbo_, ms_fbo_};
   glDeleteFramebuffers(4, fbos);
 }
@@ -83,20 +84,21 @@ void RenderTargets::allocate_multisampled(int sw, int sh) {
   if (format_.samples <= 1) return;
   if (!ms_fbo_) {
     glGenFramebuffers(1, &ms_fbo_);
-    glGenRenderbuffers(1, &ms_color_);
+    glGenTextures(1, &ms_color_);
     glGenRenderbuffers(1, &ms_depth_);
+    glGenVertexArrays(1, &resolve_vao_);
   }
   GLint max_samples = 1;
   glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
   const int samples = std::min(format_.samples, int(max_samples));
-  glBindRenderbuffer(GL_RENDERBUFFER, ms_color_);
-  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, scene_internal_, sw, sh);
   glBindRenderbuffer(GL_RENDERBUFFER, ms_depth_);
   glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT32F, sw, sh);
   GLint got = 0;
   glGetRenderbufferParameteriv(GL_RENDERBUFFER, GL_RENDERBUFFER_SAMPLES, &got);
+  glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, ms_color_);
+  glTexImage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, got, scene_internal_, sw, sh, GL_TRUE);
   glBindFramebuffer(GL_FRAMEBUFFER, ms_fbo_);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, ms_color_);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D_MULTISAMPLE, ms_color_, 0);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, ms_depth_);
   if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
     throw std::runtime_error("multisampled scene framebuffer incomplete");
@@ -128,15 +130,28 @@ void RenderTargets::bind_opaque() const {
   glViewport(0, 0, scene_w_, scene_h_);
 }
 
-void RenderTargets::resolve_opaque() const {
+void RenderTargets::resolve_opaque(const Program& hdr_resolve) const {
   if (samples_ <= 1) return;
   glBindFramebuffer(GL_READ_FRAMEBUFFER, ms_fbo_);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, scene_fbo_);
-  // Colour is averaged over the samples; depth takes one sample's value (depth is never
-  // averaged), which is what the particles test against and the soft-edge copy reads.
-  glBlitFramebuffer(0, 0, scene_w_, scene_h_, 0, 0, scene_w_, scene_h_, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT,
-                    GL_NEAREST);
+  // Depth takes one sample's value (depth is never averaged): what the particles test against
+  // and the soft-edge copy reads.
+  const bool blit_colour = !format_.hdr;
+  glBlitFramebuffer(0, 0, scene_w_, scene_h_, 0, 0, scene_w_, scene_h_,
+                    GL_DEPTH_BUFFER_BIT | (blit_colour ? GL_COLOR_BUFFER_BIT : 0), GL_NEAREST);
   bind_scene();
+  if (blit_colour) return;
+  glDisable(GL_DEPTH_TEST);
+  glDepthMask(GL_FALSE);
+  glDisable(GL_BLEND);
+  glUseProgram(hdr_resolve.id);
+  glUniform1i(hdr_resolve.loc("u_scene_ms"), 0);
+  glUniform1i(hdr_resolve.loc("u_samples"), samples_);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, ms_color_);
+  glBindVertexArray(resolve_vao_);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDepthMask(GL_TRUE);
 }
 
 void RenderTargets::copy_depth() const {

@@ -25,6 +25,7 @@
 
 #include "assets/model.h"
 #include "gfx/render_settings.h"
+#include "gfx/shader_programs.h"
 
 namespace arc {
 
@@ -61,8 +62,10 @@ class RenderTargets {
   // Binds what the opaque passes draw into: the multisampled target with MSAA, else the scene.
   void bind_opaque() const;
   // With MSAA: averages the opaque target's colour into the scene colour and copies one
-  // sample's depth into the scene depth, then binds the scene. Without: nothing.
-  void resolve_opaque() const;
+  // sample's depth into the scene depth, then binds the scene. Without: nothing. An HDR scene
+  // is averaged by `hdr_resolve` (shaders/msaa_resolve.frag, as if tone-mapped), an 8-bit one
+  // by a blit.
+  void resolve_opaque(const Program& hdr_resolve) const;
   // Blits the scene's depth into the depth copy, then binds the scene framebuffer again.
   void copy_depth() const;
   GLuint depth_copy() const { return copy_depth_; }
@@ -83,7 +86,8 @@ class RenderTargets {
   SceneFormat format_;
   GLenum scene_internal_ = GL_RGBA8;
   GLuint scene_fbo_ = 0, scene_color_ = 0, scene_depth_ = 0;
-  GLuint ms_fbo_ = 0, ms_color_ = 0, ms_depth_ = 0;
+  GLuint ms_fbo_ = 0, ms_color_ = 0, ms_depth_ = 0;  // ms_color_: a multisample texture
+  GLuint resolve_vao_ = 0;
   int samples_ = 0;
   GLuint copy_fbo_ = 0, copy_depth_ = 0;
   GLuint target_fbo_ = 0, target_color_ = 0;

@@ -169,7 +169,7 @@ void Renderer::render(const RenderView& v, int width, int height) {
   m.clear_scene();
   m.stats.draw_calls += m.sky.draw(v, m.programs, vp, m.rs, scene_h);
   m.stats.draw_calls += m.meshes.draw(v, m.programs.mesh, vp.view_proj, m.rs.reversed_z, m.rs.hdr);
-  m.targets.resolve_opaque();
+  m.targets.resolve_opaque(m.programs.msaa_resolve);
   m.draw_particles(v, vp);
   m.post_process(width, height);
   m.stats.draw_calls += m.hud.draw(v.hud, m.programs.hud, width, height);

@@ -90,7 +90,7 @@ ShaderPrograms::ShaderPrograms(std::string shader_dir) : dir_(std::move(shader_d
 
 ShaderPrograms::~ShaderPrograms() {
   for (Program* p : {&sky, &sky_exact, &stars, &mesh, &hud, &particle_hard, &particle_soft, &particle_contrast,
-                     &particle_square, &bloom_prefilter, &bloom_down, &bloom_up, &tonemap, &tonemap_bloom, &fxaa})
+                     &particle_square, &bloom_prefilter, &bloom_down, &bloom_up, &tonemap, &tonemap_bloom, &fxaa, &msaa_resolve})
     glDeleteProgram(p->id);
 }
 
@@ -127,7 +127,8 @@ void ShaderPrograms::build_all() {
                         {&bloom_up, "post.vert", "bloom_up.frag", ""},
                         {&tonemap, "post.vert", "tonemap.frag", "#define BLOOM 0\n"},
                         {&tonemap_bloom, "post.vert", "tonemap.frag", "#define BLOOM 1\n"},
-                        {&fxaa, "post.vert", "fxaa.frag", ""}};
+                        {&fxaa, "post.vert", "fxaa.frag", ""},
+                        {&msaa_resolve, "post.vert", "msaa_resolve.frag", ""}};
   std::vector<GLuint> built;
   for (auto& s : specs) built.push_back(build_program(dir_, s.vs, s.fs, s.defines, err));
   bool all = std::all_of(built.begin(), built.end(), [](GLuint id) { return id != 0; });

@@ -41,6 +41,7 @@ class ShaderPrograms {
   // Post passes over post.vert's full-screen triangle: the bloom chain's first step (threshold
   // and Karis average), its other steps down and up, the tone map without and with bloom, FXAA.
   Program bloom_prefilter, bloom_down, bloom_up, tonemap, tonemap_bloom, fxaa;
+  Program msaa_resolve;  // the HDR scene's multisampled colour, averaged as if tone-mapped
 
  private:
   void build_all();  // throws with the compiler's text; leaves the old programs on failure
