@@ -21,7 +21,7 @@ std::string allowed_text(const SettingDef& d) {
     case SettingDef::Kind::Number: return "a number in [" + num_text(d.min) + ", " + num_text(d.max) + "]";
     case SettingDef::Kind::Integer:
       return "an integer in [" + num_text(d.min) + ", " + num_text(d.max) + "]";
-    case SettingDef::Kind::Flag: return "true or false";
+    case SettingDef::Kind::Flag: return "true or false (or on/off, 1/0)";
     case SettingDef::Kind::Choice: {
       std::vector<std::string> q;
       for (auto& c : d.choices) q.push_back(c);
