@@ -6,7 +6,7 @@ uniform sampler2D u_source;
 uniform vec2 u_texel;  // 1 / source size
 out vec4 o_color;
 
-vec3 tap(float x, float y) { return texture(u_source, v_uv + vec2(x, y) * u_texel).rgb; }
+vec3 tap(float x, float y) { return textureLod(u_source, v_uv + vec2(x, y) * u_texel, 0.0).rgb; }
 
 void main() {
   vec3 s = tap(0.0, 0.0) * 4.0;

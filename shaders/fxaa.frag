@@ -18,12 +18,12 @@ const float kEdgeSharpness = 8.0;
 float luma(vec3 c) { return dot(c, vec3(0.299, 0.587, 0.114)); }
 
 void main() {
-  vec4 m = texture(u_image, v_uv);
+  vec4 m = textureLod(u_image, v_uv, 0.0);
   float l_m = luma(m.rgb);
-  float l_nw = luma(texture(u_image, v_uv + vec2(-0.5, 0.5) * u_texel).rgb);
-  float l_ne = luma(texture(u_image, v_uv + vec2(0.5, 0.5) * u_texel).rgb) + 1.0 / 384.0;
-  float l_sw = luma(texture(u_image, v_uv + vec2(-0.5, -0.5) * u_texel).rgb);
-  float l_se = luma(texture(u_image, v_uv + vec2(0.5, -0.5) * u_texel).rgb);
+  float l_nw = luma(textureLod(u_image, v_uv + vec2(-0.5, 0.5) * u_texel, 0.0).rgb);
+  float l_ne = luma(textureLod(u_image, v_uv + vec2(0.5, 0.5) * u_texel, 0.0).rgb) + 1.0 / 384.0;
+  float l_sw = luma(textureLod(u_image, v_uv + vec2(-0.5, -0.5) * u_texel, 0.0).rgb);
+  float l_se = luma(textureLod(u_image, v_uv + vec2(0.5, -0.5) * u_texel, 0.0).rgb);
   float l_max = max(max(l_nw, l_ne), max(l_sw, l_se));
   float l_min = min(min(l_nw, l_ne), min(l_sw, l_se));
   float contrast = max(l_max, l_m) - min(l_min, l_m);
@@ -32,12 +32,12 @@ void main() {
   float gy = (l_nw + l_ne) - (l_sw + l_se);
   vec2 dir1 = vec2(gy, -gx);
   dir1 *= inversesqrt(max(dot(dir1, dir1), 1e-12));
-  vec3 n1 = texture(u_image, v_uv - dir1 * 0.5 * u_texel).rgb;
-  vec3 p1 = texture(u_image, v_uv + dir1 * 0.5 * u_texel).rgb;
+  vec3 n1 = textureLod(u_image, v_uv - dir1 * 0.5 * u_texel, 0.0).rgb;
+  vec3 p1 = textureLod(u_image, v_uv + dir1 * 0.5 * u_texel, 0.0).rgb;
   float dir_min = max(min(abs(dir1.x), abs(dir1.y)) * kEdgeSharpness, 1e-6);
   vec2 dir2 = clamp(dir1 / dir_min, -2.0, 2.0);
-  vec3 n2 = texture(u_image, v_uv - dir2 * 2.0 * u_texel).rgb;
-  vec3 p2 = texture(u_image, v_uv + dir2 * 2.0 * u_texel).rgb;
+  vec3 n2 = textureLod(u_image, v_uv - dir2 * 2.0 * u_texel, 0.0).rgb;
+  vec3 p2 = textureLod(u_image, v_uv + dir2 * 2.0 * u_texel, 0.0).rgb;
   vec3 two = (n1 + p1) * 0.5;
   vec3 four = (n2 + p2) * 0.25 + (n1 + p1) * 0.25;
   float l_four = luma(four);

@@ -19,9 +19,9 @@ vec3 linear_to_srgb(vec3 c) {
 }
 
 void main() {
-  vec3 c = texture(u_scene, v_uv).rgb;
+  vec3 c = textureLod(u_scene, v_uv, 0.0).rgb;
 #if BLOOM
-  c += texture(u_bloom, v_uv).rgb * u_bloom_strength;
+  c += textureLod(u_bloom, v_uv, 0.0).rgb * u_bloom_strength;
 #endif
   o_color = vec4(linear_to_srgb(aces_fit(max(c, vec3(0.0)) * u_exposure)), 1.0);
 }

@@ -31,7 +31,7 @@ void BloomPass::allocate(int scene_w, int scene_h) {
       glGenFramebuffers(1, &l.fbo);
     }
     glBindTexture(GL_TEXTURE_2D, l.tex);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_R11F_G11F_B10F, w, h, 0, GL_RGB, GL_FLOAT, nullptr);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, w, h, 0, GL_RGBA, GL_FLOAT, nullptr);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -64,16 +64,18 @@ GLuint BloomPass::run(GLuint scene, int scene_w, int scene_h, const ShaderProgra
   glBindVertexArray(vao_);
   draw(programs.bloom_prefilter, scene, scene_w, scene_h, levels_[0]);
   for (size_t i = 1; i < levels_.size(); ++i)
-    draw(programs.bloom_down, levels_[i - 1].tex, levels_[i - 1].w, levels_[i - 1].h, levels_[i]);
-  // Up the chain: each level's tent-filtered image is added onto the next larger level.
+    draw(i == 1 ? programs.bloom_down_karis : programs.bloom_down, levels_[i - 1].tex, levels_[i - 1].w,
+         levels_[i - 1].h, levels_[i]);
+  // Up the chain: each level's tent-filtered image is added onto the next larger level, down
+  // to level 1.
   glEnable(GL_BLEND);
   glBlendEquation(GL_FUNC_ADD);
   glBlendFunc(GL_ONE, GL_ONE);
-  for (size_t i = levels_.size() - 1; i > 0; --i)
+  for (size_t i = levels_.size() - 1; i > 1; --i)
     draw(programs.bloom_up, levels_[i].tex, levels_[i].w, levels_[i].h, levels_[i - 1]);
   glDisable(GL_BLEND);
   glDepthMask(GL_TRUE);
-  return levels_[0].tex;
+  return levels_[1].tex;
 }
 
 }  // namespace arc

@@ -1,16 +1,18 @@
 // gfx/bloom_pass.h — the glow of bright light: a downsample/upsample chain over the HDR scene.
 //
 // After Jimenez, "Next Generation Post Processing in Call of Duty: Advanced Warfare" (SIGGRAPH
-// 2014): the first level is half the scene's size and takes only light above a soft-knee
-// threshold (with Karis' average against flicker); each further level halves again through the
-// 13-tap downsample, six levels in all; then from the smallest up each level is 3×3-tent
-// filtered and added onto the next larger one. The largest level then holds the sum of all
-// levels, which the tone-map pass adds to the scene (post_pass.h). Everything runs at half
-// resolution or less in float (R11F_G11F_B10F): about 0.4 of one full-screen layer in pixels.
+// 2014), cut down for a software rasteriser: the first level is half the scene's size, one
+// bilinear tap per pixel (the mean of 2×2 scene pixels) through a soft-knee threshold; each
+// further level halves again through the 13-tap downsample (the first of them with Karis'
+// average against flicker), six levels in all; then from the smallest up each level is 3×3-tent
+// filtered and added onto the next larger one, up to the second level (a quarter of the scene's
+// size), which the tone-map pass samples once per pixel (post_pass.h). The half-size level is
+// only a step down: tent-filtering back up into it would cost more than all the other levels
+// together. Targets are RGBA16F (llvmpipe reads and writes it faster than R11F_G11F_B10F).
 //
 //   BloomPass bloom;
 //   GLuint glow = bloom.run(targets.scene_color(), scene_w, scene_h, programs);
-//   // glow: level 0, (scene_w / 2) × (scene_h / 2), holds kLevels levels' sum
+//   // glow: (scene_w / 4) × (scene_h / 4), the sum of levels 1 to 5
 #pragma once
 #include <epoxy/gl.h>
 
@@ -32,9 +34,10 @@ class BloomPass {
   BloomPass& operator=(const BloomPass&) = delete;
 
   // Runs the chain over `scene` (a float texture of scene_w × scene_h) and returns the texture
-  // of its largest level. Leaves blending off and no framebuffer bound in particular.
+  // holding the sum (the quarter-size level). Leaves blending off, no framebuffer bound in
+  // particular.
   GLuint run(GLuint scene, int scene_w, int scene_h, const ShaderPrograms& programs);
-  int levels() const { return int(levels_.size()); }
+  int summed_levels() const { return kLevels - 1; }  // levels the returned texture adds up
 
  private:
   struct Level {

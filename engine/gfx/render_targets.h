@@ -33,7 +33,7 @@ namespace arc {
 // (hdr_format), and how many samples the opaque passes take (0 or 1: no MSAA).
 struct SceneFormat {
   bool hdr = false;
-  HdrFormat hdr_format = HdrFormat::R11fG11fB10f;
+  HdrFormat hdr_format = HdrFormat::Rgba16f;
   int samples = 0;
   bool operator==(const SceneFormat& o) const { return hdr == o.hdr && hdr_format == o.hdr_format && samples == o.samples; }
 };

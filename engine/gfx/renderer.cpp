@@ -170,6 +170,7 @@ void Renderer::render(const RenderView& v, int width, int height) {
   m.stats.draw_calls += m.sky.draw(v, m.programs, vp, m.rs, scene_h);
   m.stats.draw_calls += m.meshes.draw(v, m.programs.mesh, vp.view_proj, m.rs.reversed_z, m.rs.hdr);
   m.targets.resolve_opaque(m.programs.msaa_resolve);
+  m.stats.msaa_samples = m.targets.samples();
   m.draw_particles(v, vp);
   m.post_process(width, height);
   m.stats.draw_calls += m.hud.draw(v.hud, m.programs.hud, width, height);
@@ -238,8 +239,8 @@ void Renderer::Impl::post_process(int width, int height) {
   in.fxaa = rs.antialias == RenderSettings::Antialias::Fxaa;
   if (rs.hdr && rs.bloom > 0.0f) {
     in.bloom = bloom.run(in.scene, in.scene_w, in.scene_h, programs);
-    in.bloom_strength = rs.bloom / float(bloom.levels());
-    stats.draw_calls += 2 * bloom.levels() - 1;
+    in.bloom_strength = rs.bloom / float(bloom.summed_levels());
+    stats.draw_calls += BloomPass::kLevels + BloomPass::kLevels - 2;
   }
   post.run(in, programs, targets, width, height);
   stats.draw_calls += (rs.hdr || in.fxaa) ? 1 + (rs.hdr && in.fxaa) : 0;

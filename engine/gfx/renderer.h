@@ -36,7 +36,7 @@ struct RendererDesc {
   bool offscreen = false;  // resolve into an RGBA8 target for read_pixels() instead of the window
   bool float_scene = false;  // RGBA16F scene buffer: NaN/Inf survive to read_pixels_float()
   // The float format of the HDR scene buffer (render.hdr): measured on llvmpipe, see post_pass.h.
-  HdrFormat hdr_format = HdrFormat::R11fG11fB10f;
+  HdrFormat hdr_format = HdrFormat::Rgba16f;
   // Particles one draw can pull from its buffer texture: GL_MAX_TEXTURE_BUFFER_SIZE / 4, or
   // this when it is smaller and not 0 (tests use it to reach the limit).
   size_t max_particles_per_draw = 0;
@@ -53,6 +53,7 @@ struct FrameStats {
                              // mesh within their reach (the others' soft factor is exactly 1)
   int draw_calls = 0;
   int particle_draw_calls = 0;
+  int msaa_samples = 0;        // samples of the opaque pass (0: no MSAA; drivers may give more than asked)
   double particle_prep_ms = 0; // culling, soft-edge flags and sorting, before any GL call
   double particle_cpu_ms = 0;  // all of the pass on the CPU: preparation, upload, draw submission
                                // (on llvmpipe submission includes vertex work, binning and any

@@ -26,10 +26,11 @@ RenderView dark_view() {
   return v;
 }
 
-std::unique_ptr<Renderer> make_renderer(bool float_scene) {
+std::unique_ptr<Renderer> make_renderer(bool float_scene, HdrFormat format = HdrFormat::Rgba16f) {
   RendererDesc d;
   d.offscreen = true;
   d.float_scene = float_scene;
+  d.hdr_format = format;
   return std::make_unique<Renderer>(d);
 }
 
@@ -73,9 +74,12 @@ TEST(Hdr, BurnBlendMatchesEquation3InFloatWithoutClamping) {
   expect_equation3_in_float(*r, 2e-3f);
 }
 
-TEST(Hdr, BurnBlendHoldsInTheDefaultSceneFormat) {
+TEST(Hdr, BurnBlendHoldsInBothSceneFormats) {
   REQUIRE_CONTEXT();
-  auto r = make_renderer(false);  // R11F_G11F_B10F: 6- and 5-bit mantissas, so 1/32 relative
+  auto r = make_renderer(false);  // the renderer's default, RGBA16F
+  r->set_render_settings(hdr_settings());
+  expect_equation3_in_float(*r, 2e-3f);
+  r = make_renderer(false, HdrFormat::R11fG11fB10f);  // 6- and 5-bit mantissas: 1/32 relative
   r->set_render_settings(hdr_settings());
   expect_equation3_in_float(*r, 1.0f / 32.0f);
 }
