@@ -161,7 +161,7 @@ RenderView ship_view(Renderer& r) {
   v.starfield_seed = 0;
   v.light_color = glm::vec3(1.4f);
   v.ambient = glm::vec3(0.3f);
-  v.light_direction = glm::vec3(0.2f, -0.3f, -1.0f);
+  v.light_direction = glm::vec3(1.0f, -0.3f, -0.3f);  // from the side: no highlight on the wall
   ModelId ship = r.add_model(load_model(ARCFIRE_SOURCE_DIR "/assets/models/viper.glb"));
   // A black wall behind it hides the stars, whose single-pixel points would dominate the measure.
   v.meshes.push_back({r.add_model(scenes::wall_model(400, 400, {0, 0, 0, 1}, glm::vec3(0))), {0, 0, -80}});
