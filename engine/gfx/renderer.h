@@ -3,10 +3,12 @@
 // Needs a current GL context (platform/ makes one: a GLFW window or EGL headless). Each frame
 // draws into an internal scene framebuffer at the window size × render.scale, then resolves it
 // to the window (default framebuffer) or, with RendererDesc::offscreen, to an RGBA8 target that
-// read_pixels() returns. The frame is a fixed sequence of passes, one file pair each (sky_pass,
-// mesh_pass, particle_batch + particle_pass, hud_pass over render_targets, shader_programs and
-// gpu_timers); which pass reads what the previous one wrote is stated once, at the top of
-// renderer.cpp. Depth is reversed-Z with a float buffer when clip control exists, standard
+// read_pixels() returns. With render.hdr the scene is linear light in a float buffer, and the
+// resolve is a tone map (with bloom and FXAA as set); without it, 8-bit display values blitted
+// as before. The frame is a fixed sequence of passes, one file pair each (sky_pass, mesh_pass,
+// particle_batch + particle_pass, bloom_pass, post_pass, hud_pass over render_targets,
+// shader_programs and gpu_timers); which pass reads what the previous one wrote is stated once,
+// at the top of renderer.cpp. Depth is reversed-Z with a float buffer when clip control exists, standard
 // otherwise. All positions reach the GPU relative to the camera (double subtraction, then float).
 //
 // Example, compiled as RendererExample.DrawsAView in tests/unit/gfx/test_examples.cpp:
