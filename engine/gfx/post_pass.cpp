@@ -5,10 +5,18 @@
 
 namespace arc {
 
-PostPass::PostPass() { glGenVertexArrays(1, &vao_); }
+PostPass::PostPass() {
+  glGenVertexArrays(1, &vao_);
+  glGenSamplers(1, &nearest_);
+  glSamplerParameteri(nearest_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glSamplerParameteri(nearest_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glSamplerParameteri(nearest_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(nearest_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
 
 PostPass::~PostPass() {
   glDeleteVertexArrays(1, &vao_);
+  glDeleteSamplers(1, &nearest_);
   glDeleteTextures(1, &ldr_tex_);
   glDeleteFramebuffers(1, &ldr_fbo_);
 }
@@ -33,8 +41,10 @@ void PostPass::ensure_tonemapped(int w, int h) {
   ldr_h_ = h;
 }
 
-// Into the bound framebuffer, over its viewport.
-void PostPass::tonemap(const PostInput& in, const ShaderPrograms& programs) const {
+// Into the bound framebuffer, over its viewport. When that is the scene's size each pixel reads
+// exactly one scene texel, so the scene is sampled nearest (one texel read instead of four on
+// a software rasteriser); otherwise bilinearly, like the blit it replaces.
+void PostPass::tonemap(const PostInput& in, const ShaderPrograms& programs, bool same_size) const {
   const Program& p = in.bloom ? programs.tonemap_bloom : programs.tonemap;
   glUseProgram(p.id);
   glUniform1i(p.loc("u_scene"), 0);
@@ -45,7 +55,9 @@ void PostPass::tonemap(const PostInput& in, const ShaderPrograms& programs) cons
   glBindTexture(GL_TEXTURE_2D, in.bloom);
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, in.scene);
+  glBindSampler(0, same_size ? nearest_ : 0);
   glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindSampler(0, 0);
 }
 
 void PostPass::fxaa(GLuint image, int w, int h, const ShaderPrograms& programs) const {
@@ -71,14 +83,14 @@ void PostPass::run(const PostInput& in, const ShaderPrograms& programs, const Re
     ensure_tonemapped(in.scene_w, in.scene_h);
     glBindFramebuffer(GL_FRAMEBUFFER, ldr_fbo_);
     glViewport(0, 0, in.scene_w, in.scene_h);
-    tonemap(in, programs);
+    tonemap(in, programs, true);
     image = ldr_tex_;
   }
   targets.bind_output(width, height);
   if (in.fxaa)
     fxaa(image, in.scene_w, in.scene_h, programs);
   else
-    tonemap(in, programs);
+    tonemap(in, programs, in.scene_w == width && in.scene_h == height);
   glBindVertexArray(0);
 }
 

@@ -41,9 +41,10 @@ class PostPass {
 
  private:
   void ensure_tonemapped(int w, int h);
-  void tonemap(const PostInput& in, const ShaderPrograms& programs) const;
+  void tonemap(const PostInput& in, const ShaderPrograms& programs, bool same_size) const;
   void fxaa(GLuint image, int w, int h, const ShaderPrograms& programs) const;
   GLuint vao_ = 0;
+  GLuint nearest_ = 0;                // sampler for reading the scene texel for texel
   GLuint ldr_fbo_ = 0, ldr_tex_ = 0;  // the tone-mapped image FXAA reads
   int ldr_w_ = 0, ldr_h_ = 0;
 };
