@@ -11,6 +11,7 @@ uniform float u_tan_half_y; // tan(fov_y / 2)
 uniform float u_size_clamp; // largest on-screen size as a fraction of screen height
 uniform float u_near;
 uniform vec3 u_linearize;   // view depth = x / (y·depth + z), denominator ≥ 0 in every depth mode
+uniform bool u_linear;        // HDR: decode the sRGB-picked colour to linear light
 out vec2 v_uv;
 out float v_depth;          // linear view depth of this fragment (varies along axis-locked quads)
 // Everything constant over one particle is flat, so a software rasteriser interpolates only the
@@ -23,6 +24,20 @@ flat out vec4 v_color;      // (rgb·alpha, alpha·(1 − burn)): burn folded in
 flat out vec4 v_soft;        // linearize.x·inv_extent, inv_extent, offset·inv_extent − bias, use texture alpha (0/1)
 flat out vec2 v_aux;         // contrast (0/1), sprite layer
 const float kEps = 1e-6;
+
+vec3 srgb_to_linear(vec3 c) {
+  vec3 lo = c / 12.92, hi = pow((c + 0.055) / 1.055, vec3(2.4));
+  return mix(hi, lo, vec3(lessThanEqual(c, vec3(0.04045))));
+}
+
+// The instance colour is rgb·alpha of an sRGB-picked rgb; in linear light it is
+// linear(rgb)·alpha, so the decode goes through the straight colour (eq. 5 unchanged after it).
+// A zero alpha with colour (pure light) is decoded as it stands.
+vec3 instance_rgb(vec4 c) {
+  if (!u_linear) return c.rgb;
+  float a = c.a > kEps ? c.a : 1.0;
+  return srgb_to_linear(max(c.rgb / a, vec3(0.0))) * a;
+}
 
 void main() {
   int first = (gl_VertexID >> 2) * 4;
@@ -71,7 +86,7 @@ void main() {
   if (push > 0.0 && pd > u_near) p *= max(pd - push, u_near * 1.001) / pd;
   gl_Position = u_proj * vec4(p, 1.0);
   v_uv = vec2(corner.x * 0.5 + 0.5, 0.5 - corner.y * 0.5);
-  v_color = vec4(i_color.rgb, i_color.a * (1.0 - i_burn_extent.x));
+  v_color = vec4(instance_rgb(i_color), i_color.a * (1.0 - i_burn_extent.x));
   v_depth = -p.z;
   float inv_e = 1.0 / extent;
   // (zb − z − offset)·inv_e + bias with zb = lx / den: off (0) gives the constant 1, and

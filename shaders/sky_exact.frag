@@ -8,8 +8,21 @@ uniform vec2 u_tan_half;    // tan(fov_x/2), tan(fov_y/2)
 uniform vec3 u_lobe_a;      // seeded directions of the nebula lobes
 uniform vec3 u_lobe_b;
 uniform float u_seed;
+uniform bool u_linear;      // HDR: output scene light that tone-maps back to the picked tints
 out vec4 o_color;
 
+vec3 srgb_to_linear(vec3 c) {
+  vec3 lo = c / 12.92, hi = pow((c + 0.055) / 1.055, vec3(2.4));
+  return mix(hi, lo, vec3(lessThanEqual(c, vec3(0.04045))));
+}
+// The backdrop keeps the look it was picked with: a display colour is decoded and taken back
+// through the tone map's ACES fit (tonemap.frag), so at exposure 1 it comes out as it went in,
+// instead of the curve's toe swallowing the faint nebula.
+vec3 display_to_scene(vec3 display) {
+  vec3 y = min(srgb_to_linear(display), vec3(0.99));
+  vec3 a = 2.51 - 2.43 * y, b = 0.03 - 0.59 * y;
+  return (-b + sqrt(b * b + 4.0 * a * 0.14 * y)) / (2.0 * a);
+}
 float hash3(vec3 p) { return fract(sin(dot(p, vec3(12.9898, 78.233, 37.719)) + u_seed) * 43758.5453); }
 float noise3(vec3 p) {
   vec3 i = floor(p), f = fract(p);
@@ -26,5 +39,5 @@ void main() {
   vec3 c = vec3(0.006, 0.007, 0.014);
   c += a * n * n * vec3(0.16, 0.05, 0.20);
   c += b * n * n * vec3(0.03, 0.11, 0.17);
-  o_color = vec4(c, 1.0);
+  o_color = vec4(u_linear ? display_to_scene(c) : c, 1.0);
 }

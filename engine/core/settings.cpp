@@ -21,7 +21,7 @@ std::string allowed_text(const SettingDef& d) {
     case SettingDef::Kind::Number: return "a number in [" + num_text(d.min) + ", " + num_text(d.max) + "]";
     case SettingDef::Kind::Integer:
       return "an integer in [" + num_text(d.min) + ", " + num_text(d.max) + "]";
-    case SettingDef::Kind::Flag: return "true or false";
+    case SettingDef::Kind::Flag: return "true or false (or on/off, 1/0)";
     case SettingDef::Kind::Choice: {
       std::vector<std::string> q;
       for (auto& c : d.choices) q.push_back(c);
@@ -60,6 +60,13 @@ Settings Settings::defaults() {
                   " faded and dropped (low screen priority first); 0: no budget");
   s.define_number("render.overdraw_near", 40.0, 1.0, 1e6,
                   "distance in world units within which the overdraw budget reduces particles at full strength");
+  s.define_flag("render.hdr", true,
+                "linear-light float scene with a filmic tone curve (on), or 8-bit display colours as before (off)");
+  s.define_number("render.exposure", 1.0, 0.05, 16.0, "scene brightness scale before the tone curve (render.hdr on)");
+  s.define_choice("render.bloom", "low", {"off", "low", "high"},
+                  "glow around light brighter than white (render.hdr on): none, soft or strong");
+  s.define_choice("render.antialias", "fxaa", {"off", "fxaa", "msaa2", "msaa4"},
+                  "edge anti-aliasing: FXAA filter on the final image, or 2x/4x multisampling of the opaque pass");
   // Particles
   s.define_integer("particles.budget", 200000, 1000, 4000000, "largest number of live particles");
   s.define_integer("particles.lightning_interval", 0, 0, 60,

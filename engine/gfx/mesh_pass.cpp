@@ -8,6 +8,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat3x3.hpp>
 
+#include "gfx/color_space.h"
 #include "gfx/texture_filter.h"
 
 namespace arc {
@@ -20,21 +21,27 @@ MeshPass::~MeshPass() {
       glDeleteBuffers(1, &p.ibo);
     }
     if (!model.textures.empty()) glDeleteTextures(GLsizei(model.textures.size()), model.textures.data());
+    if (!model.textures_linear.empty())
+      glDeleteTextures(GLsizei(model.textures_linear.size()), model.textures_linear.data());
   }
 }
 
 int MeshPass::add_model(const ModelData& model, RenderSettings::Filter filter) {
   GpuModel g;
   g.materials = model.materials;
-  for (const Image& img : model.images) {
-    GLuint t = 0;
-    glGenTextures(1, &t);
-    glBindTexture(GL_TEXTURE_2D, t);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, img.width, img.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
-    glGenerateMipmap(GL_TEXTURE_2D);
-    apply_texture_filter(GL_TEXTURE_2D, filter);
-    g.textures.push_back(t);
-  }
+  // Each image twice: as stored for the 8-bit scene, and as GL_SRGB8_ALPHA8 for HDR, whose
+  // sampler decodes base colour and emissive (sRGB in glTF) to linear before filtering.
+  for (const Image& img : model.images)
+    for (bool linear : {false, true}) {
+      GLuint t = 0;
+      glGenTextures(1, &t);
+      glBindTexture(GL_TEXTURE_2D, t);
+      glTexImage2D(GL_TEXTURE_2D, 0, linear ? GL_SRGB8_ALPHA8 : GL_RGBA8, img.width, img.height, 0, GL_RGBA,
+                   GL_UNSIGNED_BYTE, img.rgba.data());
+      glGenerateMipmap(GL_TEXTURE_2D);
+      apply_texture_filter(GL_TEXTURE_2D, filter);
+      (linear ? g.textures_linear : g.textures).push_back(t);
+    }
   for (const MeshPrimitive& prim : model.primitives) g.prims.push_back(upload_primitive(prim));
   models_.push_back(std::move(g));
   boxes_.push_back(arc::cover_boxes(model.primitives, 3));
@@ -75,13 +82,17 @@ MeshPass::GpuPrimitive MeshPass::upload_primitive(const MeshPrimitive& prim) {
 
 void MeshPass::set_texture_filter(RenderSettings::Filter filter) {
   for (auto& model : models_)
-    for (GLuint t : model.textures) {
-      glBindTexture(GL_TEXTURE_2D, t);
-      apply_texture_filter(GL_TEXTURE_2D, filter);
-    }
+    for (const auto* textures : {&model.textures, &model.textures_linear})
+      for (GLuint t : *textures) {
+        glBindTexture(GL_TEXTURE_2D, t);
+        apply_texture_filter(GL_TEXTURE_2D, filter);
+      }
 }
 
-int MeshPass::draw(const RenderView& v, const Program& mesh, const glm::mat4& view_proj, bool reversed_z) const {
+int MeshPass::draw(const RenderView& v, const Program& mesh, const glm::mat4& view_proj, bool reversed_z,
+                   bool linear) const {
+  // Colours picked on screen are decoded for the linear scene; light and scale factors are not.
+  auto color = [linear](glm::vec3 c) { return linear ? srgb_to_linear(c) : c; };
   int draw_calls = 0;
   glEnable(GL_DEPTH_TEST);
   glDepthMask(GL_TRUE);
@@ -110,12 +121,13 @@ int MeshPass::draw(const RenderView& v, const Program& mesh, const glm::mat4& vi
     glUniform3fv(mesh.loc("u_tint"), 1, glm::value_ptr(inst.tint));
     glUniform1f(mesh.loc("u_emissive_boost"), inst.emissive_boost);
     glUniform3fv(mesh.loc("u_flash"), 1, glm::value_ptr(inst.flash));
-    glUniform3fv(mesh.loc("u_team_color"), 1, glm::value_ptr(glm::vec3(inst.team_color)));
+    glUniform3fv(mesh.loc("u_team_color"), 1, glm::value_ptr(color(glm::vec3(inst.team_color))));
     for (const GpuPrimitive& p : g.prims) {
       Material mat;
       if (p.material >= 0 && p.material < int(g.materials.size())) mat = g.materials[size_t(p.material)];
-      glUniform4fv(mesh.loc("u_base_color"), 1, glm::value_ptr(mat.base_color));
-      glUniform3fv(mesh.loc("u_emissive"), 1, glm::value_ptr(mat.emissive));
+      const glm::vec4 base_color(color(glm::vec3(mat.base_color)), mat.base_color.a);
+      glUniform4fv(mesh.loc("u_base_color"), 1, glm::value_ptr(base_color));
+      glUniform3fv(mesh.loc("u_emissive"), 1, glm::value_ptr(color(mat.emissive)));
       glUniform1f(mesh.loc("u_metallic"), mat.metallic);
       glUniform1f(mesh.loc("u_roughness"), mat.roughness);
       glUniform1f(mesh.loc("u_team_mask"), mat.team_color * inst.team_color.a);
@@ -123,10 +135,11 @@ int MeshPass::draw(const RenderView& v, const Program& mesh, const glm::mat4& vi
       bool has_em = mat.emissive_image >= 0 && mat.emissive_image < int(g.textures.size());
       glUniform1i(mesh.loc("u_has_base_tex"), has_base);
       glUniform1i(mesh.loc("u_has_emissive_tex"), has_em);
+      const std::vector<GLuint>& textures = linear ? g.textures_linear : g.textures;
       glActiveTexture(GL_TEXTURE0);
-      glBindTexture(GL_TEXTURE_2D, has_base ? g.textures[size_t(mat.base_color_image)] : 0);
+      glBindTexture(GL_TEXTURE_2D, has_base ? textures[size_t(mat.base_color_image)] : 0);
       glActiveTexture(GL_TEXTURE1);
-      glBindTexture(GL_TEXTURE_2D, has_em ? g.textures[size_t(mat.emissive_image)] : 0);
+      glBindTexture(GL_TEXTURE_2D, has_em ? textures[size_t(mat.emissive_image)] : 0);
       glBindVertexArray(p.vao);
       glDrawElements(GL_TRIANGLES, p.count, GL_UNSIGNED_INT, nullptr);
       ++draw_calls;

@@ -10,7 +10,7 @@
 //
 //   MeshPass meshes;
 //   int ship = meshes.add_model(load_model("assets/models/viper.glb"), settings.filter);
-//   int draw_calls = meshes.draw(view, programs.mesh, vp.view_proj, settings.reversed_z);
+//   int draw_calls = meshes.draw(view, programs.mesh, vp.view_proj, settings.reversed_z, settings.hdr);
 #pragma once
 #include <epoxy/gl.h>
 
@@ -37,8 +37,10 @@ class MeshPass {
   int add_model(const ModelData& model, RenderSettings::Filter filter);
   void set_texture_filter(RenderSettings::Filter filter);  // for every model texture
   // Draws into the bound framebuffer; instances of unknown models are skipped. Returns the
-  // draw calls (one per primitive).
-  int draw(const RenderView& view, const Program& mesh, const glm::mat4& view_proj, bool reversed_z) const;
+  // draw calls (one per primitive). `linear` (HDR): textures, material and team colours are
+  // decoded from sRGB to linear light.
+  int draw(const RenderView& view, const Program& mesh, const glm::mat4& view_proj, bool reversed_z,
+           bool linear = false) const;
   const ModelCoverBoxes& cover_boxes() const { return boxes_; }
 
  private:
@@ -50,7 +52,8 @@ class MeshPass {
   struct GpuModel {
     std::vector<GpuPrimitive> prims;
     std::vector<Material> materials;
-    std::vector<GLuint> textures;
+    std::vector<GLuint> textures;         // RGBA8, as stored
+    std::vector<GLuint> textures_linear;  // the same images as GL_SRGB8_ALPHA8
   };
   static GpuPrimitive upload_primitive(const MeshPrimitive& prim);
   std::vector<GpuModel> models_;

@@ -8,6 +8,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "gfx/color_space.h"
 #include "gfx/texture_filter.h"
 
 namespace arc {
@@ -37,6 +38,7 @@ void set_uniforms(const Program& particle, const RenderSettings& rs, const Parti
   const glm::vec2 linearize = frame.vp.linearize;
   float lsign = linearize.x >= 0.0f ? 1.0f : -1.0f;
   glUniform3f(particle.loc("u_linearize"), lsign * linearize.x, lsign, lsign * linearize.y);
+  glUniform1i(particle.loc("u_linear"), rs.hdr);
   glUniform1i(particle.loc("u_sprites"), 0);
   glUniform1i(particle.loc("u_scene_depth"), 1);
   glUniform1i(particle.loc("u_particles"), 2);
@@ -74,27 +76,52 @@ ParticlePass::~ParticlePass() {
   glDeleteVertexArrays(1, &vao_);
   GLuint bufs[] = {vbo_, ibo_};
   glDeleteBuffers(2, bufs);
-  GLuint tex[] = {tbo_, sprite_tex_};
-  glDeleteTextures(2, tex);
+  GLuint tex[] = {tbo_, sprite_tex_, sprite_tex_linear_};
+  glDeleteTextures(3, tex);
   if (fragment_query_) glDeleteQueries(1, &fragment_query_);
 }
 
 void ParticlePass::set_sprites(const std::vector<Image>& sprites, RenderSettings::Filter filter) {
   if (sprites.empty()) throw std::invalid_argument("set_sprites: at least one sprite is needed");
-  int w = 0, h = 0;
-  for (auto& s : sprites) {
-    w = std::max(w, s.width);
-    h = std::max(h, s.height);
+  sprites_ = sprites;
+  filter_ = filter;
+  sprite_w_ = sprite_h_ = 0;
+  for (auto& s : sprites_) {
+    sprite_w_ = std::max(sprite_w_, s.width);
+    sprite_h_ = std::max(sprite_h_, s.height);
   }
+  // Display values premultiplied in sRGB bytes, exactly as load_sprite() does (the image before
+  // HDR); the linear-light array is made the first time an HDR frame needs it.
+  std::vector<Image> display = sprites_;
+  for (Image& s : display) premultiply(s);
   if (!sprite_tex_) glGenTextures(1, &sprite_tex_);
-  glBindTexture(GL_TEXTURE_2D_ARRAY, sprite_tex_);
-  glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA8, w, h, GLsizei(sprites.size()), 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  upload_sprite_array(sprite_tex_, GL_RGBA8, display);
+  if (sprite_tex_linear_) glDeleteTextures(1, &sprite_tex_linear_);
+  sprite_tex_linear_ = 0;
+}
+
+GLuint ParticlePass::sprite_texture(bool linear) {
+  if (!linear) return sprite_tex_;
+  if (!sprite_tex_linear_) {
+    std::vector<Image> texels;
+    for (const Image& s : sprites_) texels.push_back(premultiply_linear_srgb(s));
+    glGenTextures(1, &sprite_tex_linear_);
+    upload_sprite_array(sprite_tex_linear_, GL_SRGB8_ALPHA8, texels);
+  }
+  return sprite_tex_linear_;
+}
+
+// Layers share one size; smaller sprites are stretched by nearest sampling at upload.
+void ParticlePass::upload_sprite_array(GLuint tex, GLenum internal_format, const std::vector<Image>& sprites) const {
+  const int w = sprite_w_, h = sprite_h_;
+  glBindTexture(GL_TEXTURE_2D_ARRAY, tex);
+  glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GLint(internal_format), w, h, GLsizei(sprites.size()), 0, GL_RGBA,
+               GL_UNSIGNED_BYTE, nullptr);
   std::vector<uint8_t> resized;
   for (size_t layer = 0; layer < sprites.size(); ++layer) {
     const Image& s = sprites[layer];
     const uint8_t* data = s.rgba.data();
     if (s.width != w || s.height != h) {
-      // Layers share one size; smaller sprites are stretched by nearest sampling at upload.
       resized.resize(size_t(w) * h * 4);
       for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x)
@@ -103,15 +130,20 @@ void ParticlePass::set_sprites(const std::vector<Image>& sprites, RenderSettings
     }
     glTexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, GLint(layer), w, h, 1, GL_RGBA, GL_UNSIGNED_BYTE, data);
   }
+  // Mipmaps of an sRGB array are averaged in linear light (the driver decodes and encodes).
   glGenerateMipmap(GL_TEXTURE_2D_ARRAY);
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  apply_texture_filter(GL_TEXTURE_2D_ARRAY, filter);
+  apply_texture_filter(GL_TEXTURE_2D_ARRAY, filter_);
 }
 
 void ParticlePass::set_texture_filter(RenderSettings::Filter filter) {
-  glBindTexture(GL_TEXTURE_2D_ARRAY, sprite_tex_);
-  apply_texture_filter(GL_TEXTURE_2D_ARRAY, filter);
+  filter_ = filter;
+  for (GLuint tex : {sprite_tex_, sprite_tex_linear_}) {
+    if (!tex) continue;
+    glBindTexture(GL_TEXTURE_2D_ARRAY, tex);
+    apply_texture_filter(GL_TEXTURE_2D_ARRAY, filter);
+  }
 }
 
 void ParticlePass::upload(const std::vector<ParticleInstance>& particles) {
@@ -144,7 +176,7 @@ int ParticlePass::draw(const ParticleBatch& batch, const ShaderPrograms& program
   glBlendEquation(GL_FUNC_ADD);
   glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D_ARRAY, sprite_tex_);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, sprite_texture(rs.hdr));
   glActiveTexture(GL_TEXTURE1);
   glBindTexture(GL_TEXTURE_2D, frame.depth_copy);
   glActiveTexture(GL_TEXTURE2);

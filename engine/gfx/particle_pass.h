@@ -3,7 +3,8 @@
 // Owns the sprite array texture, the buffer texture the vertex shader pulls ParticleInstance
 // from (shaders/particle.vert builds each quad from four RGBA32UI texels), and the index buffer
 // (two triangles per particle). draw() blends with depth test on and depth write off,
-// GL_ONE, GL_ONE_MINUS_SRC_ALPHA (controlled-additive "burn", Ilmonen 2006 §4), one draw per
+// GL_ONE, GL_ONE_MINUS_SRC_ALPHA (controlled-additive "burn", Ilmonen 2006 §4, equations 3–10
+// unchanged in linear light with HDR: only the colours entering them are decoded), one draw per
 // run of the batch (particle_runs.h) with the cheapest program the run allows: hard edges when
 // no particle of it is soft, the contrast curve only when one uses it. The CPU half (culling,
 // flags, budget, sorting, runs) is particle_batch.h.
@@ -12,7 +13,7 @@
 //   particles.set_sprites({load_sprite("assets/textures/sprite_smoke.png")}, settings.filter);
 //   particles.upload(batch.particles);
 //   if (batch.any_soft) targets.copy_depth();
-//   particles.draw(batch, programs, settings, frame);
+//   particles.draw(batch, programs, settings, frame, /*fragments=*/nullptr);  // one draw per run
 #pragma once
 #include <epoxy/gl.h>
 
@@ -47,7 +48,10 @@ class ParticlePass {
 
   // Layers of one array texture, all stretched to the largest sprite's size. Starts with one
   // white layer, so particles draw as squares of their colour before any sprites are set.
-  void set_sprites(const std::vector<Image>& premultiplied_sprites, RenderSettings::Filter filter);
+  // Straight-alpha sprites (Image::premultiplied false, as stored on disk) are premultiplied
+  // here: in sRGB bytes for the 8-bit scene, exactly as load_sprite() does, and in linear light
+  // for HDR (color_space.h); premultiplied ones are taken as they are for the 8-bit scene.
+  void set_sprites(const std::vector<Image>& sprites, RenderSettings::Filter filter);
   void set_texture_filter(RenderSettings::Filter filter);
   size_t max_particles_per_draw() const { return max_particles_per_draw_; }
 
@@ -65,7 +69,13 @@ class ParticlePass {
   size_t index_capacity_ = 0;   // particles ibo_ has indices for
   size_t uploaded_ = 0;         // particles in vbo_
   size_t max_particles_per_draw_ = 0;
-  GLuint sprite_tex_ = 0;
+  GLuint sprite_texture(bool linear);  // the array for this frame's colour space
+  void upload_sprite_array(GLuint tex, GLenum internal_format, const std::vector<Image>& sprites) const;
+  std::vector<Image> sprites_;        // as given, for the linear array made on first use
+  RenderSettings::Filter filter_ = RenderSettings::Filter::Mipmap;
+  GLuint sprite_tex_ = 0;             // RGBA8, premultiplied display values
+  GLuint sprite_tex_linear_ = 0;      // SRGB8_ALPHA8, premultiplied in linear light; 0 until needed
+  int sprite_w_ = 1, sprite_h_ = 1;
   bool count_fragments_ = false;
   GLuint fragment_query_ = 0;
 };

@@ -3,9 +3,15 @@
 // Renderer::apply_settings() fills one from the render.* keys of core/settings.h, and
 // Renderer::set_render_settings() takes one directly; both fall back where the context lacks
 // a feature (reversed-Z without clip control) and clamp the ranges. The passes read it.
+// A default-constructed one draws as the renderer did before HDR (8-bit scene, no bloom, no
+// anti-aliasing), which the renderer tests build on; Settings::defaults() turns HDR on.
 #pragma once
 
 namespace arc {
+
+// How an HDR scene buffer is stored (RendererDesc::hdr_format); the blend reads no destination
+// alpha, so three channels suffice.
+enum class HdrFormat { Rgba16f, R11fG11fB10f };
 
 struct RenderSettings {
   int soft_override = -1;  // −1: each particle's own SoftEdge; otherwise a SoftEdge value for all
@@ -24,6 +30,12 @@ struct RenderSettings {
   float overdraw_budget = 0.0f;
   float overdraw_near = 40.0f;  // m: beyond this the budget's reductions weaken with distance squared
   int max_particle_draws = 24;  // runs the particle batch may be split into (particle_runs.h); ≥ 1
+  // HDR: a linear-light float scene, colours decoded from sRGB, one tone-map pass (post_pass.h).
+  bool hdr = false;
+  float exposure = 1.0f;        // scene scale before the tone curve (0.05..16)
+  float bloom = 0.0f;           // strength of the glow added before tone mapping; 0 = no bloom pass
+  static constexpr float kBloomLow = 0.25f, kBloomHigh = 0.5f;  // render.bloom = low / high
+  enum class Antialias { Off, Fxaa, Msaa2, Msaa4 } antialias = Antialias::Off;
 };
 
 }  // namespace arc

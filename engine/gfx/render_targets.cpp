@@ -11,17 +11,23 @@ namespace arc {
 RenderTargets::RenderTargets(bool offscreen, bool float_scene) : offscreen_(offscreen), float_scene_(float_scene) {}
 
 RenderTargets::~RenderTargets() {
-  GLuint tex[] = {scene_color_, copy_depth_, target_color_};
-  glDeleteTextures(3, tex);
-  glDeleteRenderbuffers(1, &scene_depth_);
-  GLuint fbos[] = {scene_fbo_, copy_fbo_, target_fbo_};
-  glDeleteFramebuffers(3, fbos);
+  GLuint tex[] = {scene_color_, copy_depth_, target_color_, ms_color_};
+  glDeleteTextures(4, tex);
+  GLuint rbs[] = {scene_depth_, ms_depth_};
+  glDeleteRenderbuffers(2, rbs);
+  glDeleteVertexArrays(1, &resolve_vao_);
+  GLuint fbos[] = {scene_fbo_, copy_fbo_, target_fbo_, ms_fbo_};
+  glDeleteFramebuffers(4, fbos);
 }
 
-void RenderTargets::ensure(int w, int h, double scale) {
+void RenderTargets::ensure(int w, int h, double scale, const SceneFormat& format) {
   int sw = std::max(1, int(std::lround(w * scale)));
   int sh = std::max(1, int(std::lround(h * scale)));
-  if (sw != scene_w_ || sh != scene_h_ || !scene_fbo_) allocate_scene(sw, sh);
+  if (sw != scene_w_ || sh != scene_h_ || !scene_fbo_ || !(format == format_)) {
+    format_ = format;
+    allocate_scene(sw, sh);
+    allocate_multisampled(sw, sh);
+  }
   if (offscreen_ && (w != target_w_ || h != target_h_ || !target_fbo_)) allocate_target(w, h);
 }
 
@@ -35,11 +41,20 @@ void RenderTargets::allocate_scene(int sw, int sh) {
     glGenRenderbuffers(1, &scene_depth_);
     glGenTextures(1, &copy_depth_);
   }
+  // Float scenes of tests keep RGBA16F (NaN and infinity survive, alpha is kept); HDR takes the
+  // format measured cheaper (the blend reads no destination alpha, so three channels do).
+  scene_internal_ = float_scene_ ? GL_RGBA16F
+                    : !format_.hdr ? GL_RGBA8
+                    : format_.hdr_format == HdrFormat::Rgba16f ? GL_RGBA16F
+                                                               : GL_R11F_G11F_B10F;
+  const bool is_float = scene_internal_ != GL_RGBA8;
   glBindTexture(GL_TEXTURE_2D, scene_color_);
-  glTexImage2D(GL_TEXTURE_2D, 0, float_scene_ ? GL_RGBA16F : GL_RGBA8, sw, sh, 0, GL_RGBA,
-               float_scene_ ? GL_FLOAT : GL_UNSIGNED_BYTE, nullptr);
+  glTexImage2D(GL_TEXTURE_2D, 0, GLint(scene_internal_), sw, sh, 0, is_float ? GL_RGB : GL_RGBA,
+               is_float ? GL_FLOAT : GL_UNSIGNED_BYTE, nullptr);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   // Float depth in both modes: reversed-Z needs it, and the copy must match the format.
   glBindRenderbuffer(GL_RENDERBUFFER, scene_depth_);
   glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, sw, sh);
@@ -62,6 +77,34 @@ void RenderTargets::allocate_scene(int sw, int sh) {
     throw std::runtime_error("depth copy framebuffer incomplete");
 }
 
+// The opaque passes' multisampled twin of the scene buffer: same colour format (a resolving
+// blit needs it), float depth. Drivers may give more samples than asked; samples() says.
+void RenderTargets::allocate_multisampled(int sw, int sh) {
+  samples_ = 0;
+  if (format_.samples <= 1) return;
+  if (!ms_fbo_) {
+    glGenFramebuffers(1, &ms_fbo_);
+    glGenTextures(1, &ms_color_);
+    glGenRenderbuffers(1, &ms_depth_);
+    glGenVertexArrays(1, &resolve_vao_);
+  }
+  GLint max_samples = 1;
+  glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
+  const int samples = std::min(format_.samples, int(max_samples));
+  glBindRenderbuffer(GL_RENDERBUFFER, ms_depth_);
+  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT32F, sw, sh);
+  GLint got = 0;
+  glGetRenderbufferParameteriv(GL_RENDERBUFFER, GL_RENDERBUFFER_SAMPLES, &got);
+  glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, ms_color_);
+  glTexImage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, got, scene_internal_, sw, sh, GL_TRUE);
+  glBindFramebuffer(GL_FRAMEBUFFER, ms_fbo_);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D_MULTISAMPLE, ms_color_, 0);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, ms_depth_);
+  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    throw std::runtime_error("multisampled scene framebuffer incomplete");
+  samples_ = got;
+}
+
 void RenderTargets::allocate_target(int w, int h) {
   target_w_ = w;
   target_h_ = h;
@@ -82,6 +125,35 @@ void RenderTargets::bind_scene() const {
   glViewport(0, 0, scene_w_, scene_h_);
 }
 
+void RenderTargets::bind_opaque() const {
+  glBindFramebuffer(GL_FRAMEBUFFER, samples_ > 1 ? ms_fbo_ : scene_fbo_);
+  glViewport(0, 0, scene_w_, scene_h_);
+}
+
+void RenderTargets::resolve_opaque(const Program& hdr_resolve) const {
+  if (samples_ <= 1) return;
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, ms_fbo_);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, scene_fbo_);
+  // Depth takes one sample's value (depth is never averaged): what the particles test against
+  // and the soft-edge copy reads.
+  const bool blit_colour = !format_.hdr;
+  glBlitFramebuffer(0, 0, scene_w_, scene_h_, 0, 0, scene_w_, scene_h_,
+                    GL_DEPTH_BUFFER_BIT | (blit_colour ? GL_COLOR_BUFFER_BIT : 0), GL_NEAREST);
+  bind_scene();
+  if (blit_colour) return;
+  glDisable(GL_DEPTH_TEST);
+  glDepthMask(GL_FALSE);
+  glDisable(GL_BLEND);
+  glUseProgram(hdr_resolve.id);
+  glUniform1i(hdr_resolve.loc("u_scene_ms"), 0);
+  glUniform1i(hdr_resolve.loc("u_samples"), samples_);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, ms_color_);
+  glBindVertexArray(resolve_vao_);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDepthMask(GL_TRUE);
+}
+
 void RenderTargets::copy_depth() const {
   // This frame's depth, never last frame's (Ribeiro: a stale copy flickers as the camera moves).
   glBindFramebuffer(GL_READ_FRAMEBUFFER, scene_fbo_);
@@ -97,6 +169,11 @@ void RenderTargets::resolve(int width, int height) const {
   glBlitFramebuffer(0, 0, scene_w_, scene_h_, 0, 0, width, height, GL_COLOR_BUFFER_BIT,
                     (scene_w_ == width && scene_h_ == height) ? GL_NEAREST : GL_LINEAR);
   glBindFramebuffer(GL_FRAMEBUFFER, dst);
+  glViewport(0, 0, width, height);
+}
+
+void RenderTargets::bind_output(int width, int height) const {
+  glBindFramebuffer(GL_FRAMEBUFFER, offscreen_ ? target_fbo_ : 0);
   glViewport(0, 0, width, height);
 }
 

@@ -4,21 +4,26 @@
 //
 //   pass            reads                                  writes
 //   ─────────────── ────────────────────────────────────── ─────────────────────────────────
-//   clear           —                                      scene colour = black, scene depth = far
-//   sky             view seed, camera; baked nebula cube   scene colour (depth off)
-//   mesh (opaque)   view meshes, model GPU buffers         scene colour + scene depth
+//   clear           —                                      opaque colour = black, depth = far
+//   sky             view seed, camera; baked nebula cube   opaque colour (depth off)
+//   mesh (opaque)   view meshes, model GPU buffers         opaque colour + depth
+//   MSAA resolve    opaque target (msaa2/msaa4 only)       scene colour (averaged) + scene depth
+//                                                          (one sample)
 //   particle batch  view particles, mesh cover boxes (CPU) upload list, soft flags, order
 //   depth copy      scene depth (only if a drawn particle  depth-copy texture
 //                   is soft and a mesh is within reach)
 //   particles       upload list, sprites, depth copy       scene colour (blended, depth test on,
 //                                                          depth write off)
-//   resolve         scene colour (render scale)            output: window or offscreen target
+//   bloom (HDR)     scene colour                           bloom chain (half size and down)
+//   post            scene colour, bloom chain              output: window or offscreen target
+//                                                          (tone map and/or FXAA, or a blit)
 //   HUD             view HUD layer, font atlas             output (full size, alpha-blended)
 //   read-back       output (offscreen) or scene colour     Image / float pixels, on request
 //
-// A new pass slots in at an edge: HDR makes the scene colour a float buffer that a tone-map
-// pass resolves; bloom reads the scene colour after the particles and adds into it before the
-// resolve; anti-aliasing replaces the resolve. GPU timers bracket the depth copy + particles.
+// The opaque target is the scene buffer itself without MSAA. With render.hdr the scene colour
+// is a float buffer in linear light (colours decoded from sRGB as they enter), tone-mapped
+// once by the post pass; without it the scene is 8-bit display values, drawn exactly as before
+// HDR existed. GPU timers bracket the depth copy + particles.
 #include "gfx/renderer.h"
 
 #include <epoxy/gl.h>
@@ -28,11 +33,13 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "gfx/bloom_pass.h"
 #include "gfx/gpu_timers.h"
 #include "gfx/hud_pass.h"
 #include "gfx/mesh_pass.h"
 #include "gfx/particle_batch.h"
 #include "gfx/particle_pass.h"
+#include "gfx/post_pass.h"
 #include "gfx/render_targets.h"
 #include "gfx/shader_programs.h"
 #include "gfx/sky_pass.h"
@@ -72,12 +79,16 @@ struct Renderer::Impl {
   MeshPass meshes;
   ParticleBatch batch;  // CPU only, kept for its buffers
   ParticlePass particles;
+  BloomPass bloom;
+  PostPass post;
   HudPass hud;
   GpuTimers timers;
   FrameStats stats;
 
+  SceneFormat scene_format() const;
   void clear_scene();
   void draw_particles(const RenderView& v, const ViewProjection& vp);
+  void post_process(int width, int height);
 };
 
 std::string describe_particle_stats(const FrameStats& s) {
@@ -130,6 +141,15 @@ void Renderer::apply_settings(const Settings& s) {
   r.sky_resolution = int(s.integer("render.sky_resolution"));
   r.overdraw_budget = float(s.number("render.overdraw_budget"));
   r.overdraw_near = float(s.number("render.overdraw_near"));
+  r.hdr = s.flag("render.hdr");
+  r.exposure = float(s.number("render.exposure"));
+  const std::string& bloom = s.choice("render.bloom");
+  r.bloom = bloom == "high" ? RenderSettings::kBloomHigh : bloom == "low" ? RenderSettings::kBloomLow : 0.0f;
+  const std::string& aa = s.choice("render.antialias");
+  r.antialias = aa == "fxaa"    ? RenderSettings::Antialias::Fxaa
+                : aa == "msaa2" ? RenderSettings::Antialias::Msaa2
+                : aa == "msaa4" ? RenderSettings::Antialias::Msaa4
+                                : RenderSettings::Antialias::Off;
   set_render_settings(r);
 }
 
@@ -139,6 +159,8 @@ void Renderer::set_render_settings(const RenderSettings& s) {
   if (!m.clip_control) m.rs.reversed_z = false;
   m.rs.scale = std::clamp(m.rs.scale, 0.1, 4.0);
   m.rs.sky_resolution = std::clamp(m.rs.sky_resolution, 16, 1024);
+  m.rs.exposure = std::clamp(m.rs.exposure, 0.05f, 16.0f);
+  m.rs.bloom = std::clamp(m.rs.bloom, 0.0f, 4.0f);
   m.particles.set_texture_filter(m.rs.filter);
   m.meshes.set_texture_filter(m.rs.filter);
 }
@@ -150,25 +172,37 @@ void Renderer::render(const RenderView& v, int width, int height) {
   if (width <= 0 || height <= 0) throw std::invalid_argument("render: width and height must be positive");
   m.stats = FrameStats{};
   m.timers.collect_finished();
-  m.targets.ensure(width, height, m.rs.scale);
+  m.targets.ensure(width, height, m.rs.scale, m.scene_format());
   const int scene_w = m.targets.scene_width(), scene_h = m.targets.scene_height();
   const ViewProjection vp =
       make_view_projection(v.camera, double(scene_w) / double(scene_h), m.rs.reversed_z, m.rs.infinite_far);
 
   m.clear_scene();
   m.stats.draw_calls += m.sky.draw(v, m.programs, vp, m.rs, scene_h);
-  m.stats.draw_calls += m.meshes.draw(v, m.programs.mesh, vp.view_proj, m.rs.reversed_z);
+  m.stats.draw_calls += m.meshes.draw(v, m.programs.mesh, vp.view_proj, m.rs.reversed_z, m.rs.hdr);
+  m.targets.resolve_opaque(m.programs.msaa_resolve);
+  m.stats.msaa_samples = m.targets.samples();
   m.draw_particles(v, vp);
-  m.targets.resolve(width, height);
+  m.post_process(width, height);
   m.stats.draw_calls += m.hud.draw(v.hud, m.programs.hud, width, height);
   m.stats.particle_gpu_ms = m.timers.last_particle_gpu_ms();
 }
 
 void Renderer::restart_smoothing() { impl_->batch.restart_smoothing(); }
 
+SceneFormat Renderer::Impl::scene_format() const {
+  SceneFormat f;
+  f.hdr = rs.hdr;
+  f.hdr_format = desc.hdr_format;
+  f.samples = rs.antialias == RenderSettings::Antialias::Msaa4   ? 4
+              : rs.antialias == RenderSettings::Antialias::Msaa2 ? 2
+                                                                  : 0;
+  return f;
+}
+
 void Renderer::Impl::clear_scene() {
   if (clip_control) glClipControl(GL_LOWER_LEFT, rs.reversed_z ? GL_ZERO_TO_ONE : GL_NEGATIVE_ONE_TO_ONE);
-  targets.bind_scene();
+  targets.bind_opaque();
   glDepthMask(GL_TRUE);
   glClearColor(0, 0, 0, 1);
   glClearDepth(rs.reversed_z ? 0.0 : 1.0);
@@ -218,6 +252,25 @@ void Renderer::Impl::draw_particles(const RenderView& v, const ViewProjection& v
   stats.particle_draw_calls += draws;
   stats.particle_pass_gpu_ms = timers.end_particle_pass();
   stats.particle_cpu_ms = ms_since(t0);
+}
+
+// Bloom (HDR only) reads the finished scene; the post pass then tone-maps and/or filters it
+// into the output, or blits it there when neither is on.
+void Renderer::Impl::post_process(int width, int height) {
+  PostInput in;
+  in.scene = targets.scene_color();
+  in.scene_w = targets.scene_width();
+  in.scene_h = targets.scene_height();
+  in.hdr = rs.hdr;
+  in.exposure = rs.exposure;
+  in.fxaa = rs.antialias == RenderSettings::Antialias::Fxaa;
+  if (rs.hdr && rs.bloom > 0.0f) {
+    in.bloom = bloom.run(in.scene, in.scene_w, in.scene_h, programs);
+    in.bloom_strength = rs.bloom / float(bloom.summed_levels());
+    stats.draw_calls += BloomPass::kLevels + BloomPass::kLevels - 2;
+  }
+  post.run(in, programs, targets, width, height);
+  stats.draw_calls += (rs.hdr || in.fxaa) ? 1 + (rs.hdr && in.fxaa) : 0;
 }
 
 Image Renderer::read_pixels() { return impl_->targets.read_pixels(); }

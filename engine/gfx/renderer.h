@@ -3,10 +3,12 @@
 // Needs a current GL context (platform/ makes one: a GLFW window or EGL headless). Each frame
 // draws into an internal scene framebuffer at the window size × render.scale, then resolves it
 // to the window (default framebuffer) or, with RendererDesc::offscreen, to an RGBA8 target that
-// read_pixels() returns. The frame is a fixed sequence of passes, one file pair each (sky_pass,
-// mesh_pass, particle_batch + particle_pass, hud_pass over render_targets, shader_programs and
-// gpu_timers); which pass reads what the previous one wrote is stated once, at the top of
-// renderer.cpp. Depth is reversed-Z with a float buffer when clip control exists, standard
+// read_pixels() returns. With render.hdr the scene is linear light in a float buffer, and the
+// resolve is a tone map (with bloom and FXAA as set); without it, 8-bit display values blitted
+// as before. The frame is a fixed sequence of passes, one file pair each (sky_pass, mesh_pass,
+// particle_batch + particle_pass, bloom_pass, post_pass, hud_pass over render_targets,
+// shader_programs and gpu_timers); which pass reads what the previous one wrote is stated once,
+// at the top of renderer.cpp. Depth is reversed-Z with a float buffer when clip control exists, standard
 // otherwise. All positions reach the GPU relative to the camera (double subtraction, then float).
 //
 // Example, compiled as RendererExample.DrawsAView in tests/unit/gfx/test_examples.cpp:
@@ -35,6 +37,8 @@ struct RendererDesc {
   std::string shader_dir = ARCFIRE_SOURCE_DIR "/shaders";
   bool offscreen = false;  // resolve into an RGBA8 target for read_pixels() instead of the window
   bool float_scene = false;  // RGBA16F scene buffer: NaN/Inf survive to read_pixels_float()
+  // The float format of the HDR scene buffer (render.hdr): measured on llvmpipe, see post_pass.h.
+  HdrFormat hdr_format = HdrFormat::Rgba16f;
   // Particles one draw can pull from its buffer texture: GL_MAX_TEXTURE_BUFFER_SIZE / 4, or
   // this when it is smaller and not 0 (tests use it to reach the limit).
   size_t max_particles_per_draw = 0;
@@ -58,6 +62,7 @@ struct FrameStats {
   int particles_reduced = 0;
   int particles_dropped = 0;
   double overdraw_cap = 0;
+  int msaa_samples = 0;        // samples of the opaque pass (0: no MSAA; drivers may give more than asked)
   double particle_prep_ms = 0; // culling, soft-edge flags and sorting, before any GL call
   double particle_cpu_ms = 0;  // all of the pass on the CPU: preparation, upload, draw submission
                                // (on llvmpipe submission includes vertex work, binning and any

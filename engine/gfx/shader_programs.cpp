@@ -90,7 +90,7 @@ ShaderPrograms::ShaderPrograms(std::string shader_dir) : dir_(std::move(shader_d
 
 ShaderPrograms::~ShaderPrograms() {
   for (Program* p : {&sky, &sky_exact, &stars, &mesh, &hud, &particle_hard, &particle_soft, &particle_contrast,
-                     &particle_square})
+                     &particle_square, &bloom_prefilter, &bloom_down_karis, &bloom_down, &bloom_up, &tonemap, &tonemap_bloom, &fxaa, &msaa_resolve})
     glDeleteProgram(p->id);
 }
 
@@ -121,7 +121,15 @@ void ShaderPrograms::build_all() {
                          "#define SOFT 1\n#define CONTRAST 1\n#define CONTRAST_SQUARE 0\n"},
                         {&particle_square, "particle.vert", "particle.frag",
                          "#define SOFT 1\n#define CONTRAST 1\n#define CONTRAST_SQUARE 1\n"},
-                        {&hud, "hud.vert", "hud.frag", ""}};
+                        {&hud, "hud.vert", "hud.frag", ""},
+                        {&bloom_prefilter, "post.vert", "bloom_down.frag", "#define PREFILTER 1\n#define KARIS 0\n"},
+                        {&bloom_down_karis, "post.vert", "bloom_down.frag", "#define PREFILTER 0\n#define KARIS 1\n"},
+                        {&bloom_down, "post.vert", "bloom_down.frag", "#define PREFILTER 0\n#define KARIS 0\n"},
+                        {&bloom_up, "post.vert", "bloom_up.frag", ""},
+                        {&tonemap, "post.vert", "tonemap.frag", "#define BLOOM 0\n"},
+                        {&tonemap_bloom, "post.vert", "tonemap.frag", "#define BLOOM 1\n"},
+                        {&fxaa, "post.vert", "fxaa.frag", ""},
+                        {&msaa_resolve, "post.vert", "msaa_resolve.frag", ""}};
   std::vector<GLuint> built;
   for (auto& s : specs) built.push_back(build_program(dir_, s.vs, s.fs, s.defines, err));
   bool all = std::all_of(built.begin(), built.end(), [](GLuint id) { return id != 0; });

@@ -38,6 +38,11 @@ class ShaderPrograms {
   // particle.vert + particle.frag with SOFT / CONTRAST / CONTRAST_SQUARE defined: hard edges,
   // linear soft edges, the general contrast curve, and the curve at power 2 (a square).
   Program particle_hard, particle_soft, particle_contrast, particle_square;
+  // Post passes over post.vert's full-screen triangle: the bloom chain's first step (threshold),
+  // its first 13-tap step (Karis average), its other steps down and up, the tone map without
+  // and with bloom, FXAA.
+  Program bloom_prefilter, bloom_down_karis, bloom_down, bloom_up, tonemap, tonemap_bloom, fxaa;
+  Program msaa_resolve;  // the HDR scene's multisampled colour, averaged as if tone-mapped
 
  private:
   void build_all();  // throws with the compiler's text; leaves the old programs on failure

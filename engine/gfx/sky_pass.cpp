@@ -38,7 +38,7 @@ SkyPass::~SkyPass() {
   GLuint vaos[] = {empty_vao_, star_vao_};
   glDeleteVertexArrays(2, vaos);
   glDeleteBuffers(1, &star_vbo_);
-  glDeleteTextures(1, &cube_);
+  for (BakedCube& c : cubes_) glDeleteTextures(1, &c.tex);
   glDeleteFramebuffers(1, &cube_fbo_);
 }
 
@@ -85,13 +85,12 @@ void SkyPass::set_uniforms(const Program& p, const glm::mat3& basis, float tan_x
 // The nebula changes only with the level's seed, so it is rendered once into the six faces of
 // a half-float cube map (a face of 256² is 0.35° a texel, the noise's finest feature about 4°)
 // and each frame looks it up. Seamless filtering hides the face edges.
-void SkyPass::bake(const ShaderPrograms& programs, int resolution) {
+void SkyPass::bake(const ShaderPrograms& programs, int resolution, bool linear) {
   const int n = resolution;
-  if (!cube_) {
-    glGenTextures(1, &cube_);
-    glGenFramebuffers(1, &cube_fbo_);
-  }
-  glBindTexture(GL_TEXTURE_CUBE_MAP, cube_);
+  BakedCube& cube = cubes_[linear];
+  if (!cube.tex) glGenTextures(1, &cube.tex);
+  if (!cube_fbo_) glGenFramebuffers(1, &cube_fbo_);
+  glBindTexture(GL_TEXTURE_CUBE_MAP, cube.tex);
   for (int f = 0; f < 6; ++f)
     glTexImage2D(GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f), 0, GL_RGBA16F, n, n, 0, GL_RGBA, GL_FLOAT, nullptr);
   glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
@@ -108,17 +107,18 @@ void SkyPass::bake(const ShaderPrograms& programs, int resolution) {
   glUseProgram(programs.sky_exact.id);
   glBindVertexArray(empty_vao_);
   for (int f = 0; f < 6; ++f) {
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f), cube_, 0);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f), cube.tex, 0);
     if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
       throw std::runtime_error("sky cube map framebuffer incomplete");
     set_uniforms(programs.sky_exact, kCubeFaceBasis[f], 1.0f, 1.0f);
+    glUniform1i(programs.sky_exact.loc("u_linear"), linear);
     glDrawArrays(GL_TRIANGLES, 0, 3);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, GLuint(fbo));
   glViewport(vp[0], vp[1], vp[2], vp[3]);
-  cube_size_ = n;
-  cube_seed_ = star_seed_;
-  cube_shader_generation_ = programs.generation();
+  cube.size = n;
+  cube.seed = star_seed_;
+  cube.shader_generation = programs.generation();
 }
 
 int SkyPass::draw(const RenderView& v, const ShaderPrograms& programs, const ViewProjection& vp,
@@ -127,16 +127,18 @@ int SkyPass::draw(const RenderView& v, const ShaderPrograms& programs, const Vie
   glDisable(GL_DEPTH_TEST);
   glDepthMask(GL_FALSE);
   glDisable(GL_BLEND);
-  if (!rs.sky_exact && (cube_seed_ != star_seed_ || cube_size_ != rs.sky_resolution ||
-                        cube_shader_generation_ != programs.generation()))
-    bake(programs, rs.sky_resolution);
+  const BakedCube& cube = cubes_[rs.hdr];
+  if (!rs.sky_exact && (cube.seed != star_seed_ || cube.size != rs.sky_resolution ||
+                        cube.shader_generation != programs.generation()))
+    bake(programs, rs.sky_resolution, rs.hdr);
   const Program& p = rs.sky_exact ? programs.sky_exact : programs.sky;
   glUseProgram(p.id);
   double ty = std::tan(v.camera.fov_y_radians * 0.5);
   set_uniforms(p, vp.camera_basis, float(ty * vp.aspect), float(ty));
   glUniform1i(p.loc("u_sky"), 0);
+  glUniform1i(p.loc("u_linear"), rs.hdr);
   glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_CUBE_MAP, cube_);
+  glBindTexture(GL_TEXTURE_CUBE_MAP, cube.tex);
   glBindVertexArray(empty_vao_);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glEnable(GL_BLEND);
@@ -145,6 +147,7 @@ int SkyPass::draw(const RenderView& v, const ShaderPrograms& programs, const Vie
   glUseProgram(programs.stars.id);
   glUniformMatrix4fv(programs.stars.loc("u_view_proj"), 1, GL_FALSE, glm::value_ptr(vp.view_proj));
   glUniform1f(programs.stars.loc("u_pixel_scale"), float(std::max(1.0, scene_h / 720.0)));
+  glUniform1i(programs.stars.loc("u_linear"), rs.hdr);
   glBindVertexArray(star_vao_);
   glDrawArrays(GL_POINTS, 0, star_count_);
   glDisable(GL_PROGRAM_POINT_SIZE);

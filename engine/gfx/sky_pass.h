@@ -3,7 +3,9 @@
 // First pass of a frame, into the cleared scene buffer with depth off. The nebula is either
 // looked up in a cube map baked once per seed, resolution and shader build (render.sky =
 // baked) or evaluated per pixel (exact, the reference); the stars are points blended on top.
-// Both follow RenderView::starfield_seed, which also orients the nebula's two lobes.
+// Both follow RenderView::starfield_seed, which also orients the nebula's two lobes. Their
+// colours are display values; with HDR they are decoded to linear light as they are drawn
+// (the baked map is baked again in linear light).
 //
 //   SkyPass sky;
 //   int draw_calls = sky.draw(view, programs, make_view_projection(...), settings, scene_height);
@@ -34,7 +36,7 @@ class SkyPass {
 
  private:
   void build_stars(uint64_t seed);
-  void bake(const ShaderPrograms& programs, int resolution);
+  void bake(const ShaderPrograms& programs, int resolution, bool linear);
   void set_uniforms(const Program& p, const glm::mat3& basis, float tan_x, float tan_y) const;
 
   GLuint empty_vao_ = 0;  // the full-screen triangle is made in the vertex shader
@@ -43,11 +45,16 @@ class SkyPass {
   uint64_t star_seed_ = ~0ull;
   glm::vec3 lobe_a_{1, 0, 0}, lobe_b_{0, 1, 0};
   // The baked nebula and what it was baked for: made again when the seed, the resolution or
-  // the shaders change.
-  GLuint cube_ = 0, cube_fbo_ = 0;
-  int cube_size_ = 0;
-  uint64_t cube_seed_ = ~0ull;
-  int cube_shader_generation_ = -1;
+  // the shaders change. One map of display values, one in linear light (HDR), so switching
+  // render.hdr does not bake again.
+  struct BakedCube {
+    GLuint tex = 0;
+    int size = 0;
+    uint64_t seed = ~0ull;
+    int shader_generation = -1;
+  };
+  BakedCube cubes_[2];  // [hdr]
+  GLuint cube_fbo_ = 0;
 };
 
 }  // namespace arc

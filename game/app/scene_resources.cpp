@@ -20,7 +20,8 @@ std::vector<ModelId> load_scene_resources(Renderer& renderer, const World& world
   for (const std::string& path : world.model_paths) models.push_back(renderer.add_model(load_model(resolve(path))));
   std::vector<Image> sprites;
   for (std::string_view name : kSpriteNames)
-    sprites.push_back(load_sprite(resolve("assets/textures/sprite_" + std::string(name) + ".png")));
+    // Straight alpha as stored: the renderer premultiplies in the colour space it draws in.
+    sprites.push_back(load_image(resolve("assets/textures/sprite_" + std::string(name) + ".png")));
   renderer.set_sprites(sprites);
   return models;
 }

@@ -35,3 +35,45 @@ TEST(Settings, EveryShippedPresetApplies) {
   EXPECT_EQ(s.choice("render.soft_edges"), "off");
   EXPECT_THROW(s.apply_preset_file(path, "ultra"), arc::InputError);
 }
+
+TEST(Settings, HdrBloomExposureAndAntialiasAreValidated) {
+  auto s = arc::Settings::defaults();
+  EXPECT_TRUE(s.flag("render.hdr"));
+  EXPECT_EQ(s.choice("render.bloom"), "low");
+  EXPECT_EQ(s.choice("render.antialias"), "fxaa");
+  EXPECT_DOUBLE_EQ(s.number("render.exposure"), 1.0);
+  s.set_from_text("render.hdr=off", "--set");
+  EXPECT_FALSE(s.flag("render.hdr"));
+  s.set_from_text("render.antialias=msaa4", "--set");
+  s.set_from_text("render.bloom=high", "--set");
+  s.set_from_text("render.exposure=0.7", "--set");
+  EXPECT_EQ(s.choice("render.antialias"), "msaa4");
+  EXPECT_DOUBLE_EQ(s.number("render.exposure"), 0.7);
+  for (const char* bad : {"render.hdr=maybe", "render.bloom=ultra", "render.bloom=0.5", "render.antialias=msaa8",
+                          "render.antialias=", "render.exposure=0", "render.exposure=-1", "render.exposure=inf",
+                          "render.exposure=bright"})
+    EXPECT_THROW(s.set_from_text(bad, "--set"), arc::InputError) << bad;
+  try {
+    s.set_from_text("render.antialias=smaa", "--set");
+  } catch (const arc::InputError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("render.antialias"), std::string::npos) << m;
+    EXPECT_NE(m.find("msaa4"), std::string::npos) << "names what is allowed: " << m;
+    EXPECT_EQ(m.find('\n'), std::string::npos) << "one line: " << m;
+  }
+  const std::string listed = s.describe();
+  for (const char* key : {"render.hdr", "render.bloom", "render.exposure", "render.antialias"})
+    EXPECT_NE(listed.find(key), std::string::npos) << key << " is in --list-settings";
+}
+
+TEST(Settings, PresetsSetTheLook) {
+  const std::string path = std::string(ARCFIRE_SOURCE_DIR) + "/assets/settings/quality.json";
+  auto s = arc::Settings::defaults();
+  s.apply_preset_file(path, "low");
+  EXPECT_FALSE(s.flag("render.hdr"));
+  EXPECT_EQ(s.choice("render.antialias"), "off");
+  s.apply_preset_file(path, "reference");
+  EXPECT_TRUE(s.flag("render.hdr"));
+  EXPECT_EQ(s.choice("render.bloom"), "high");
+  EXPECT_EQ(s.choice("render.antialias"), "msaa4");
+}
