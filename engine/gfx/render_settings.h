@@ -18,7 +18,10 @@ struct RenderSettings {
   enum class Sorting { Off, Cluster, Full } sorting = Sorting::Full;
   bool reversed_z = true;
   bool infinite_far = true;
-  enum class Filter { Nearest, Linear, Mipmap } filter = Filter::Mipmap;
+  // Sprite and model texture filtering. MipmapNearest: bilinear within the nearest mip level;
+  // Mipmap: trilinear, between the two nearest levels (twice the texel reads; on llvmpipe the
+  // combat frames' particle pass took about 1.5 times as long with it).
+  enum class Filter { Nearest, Linear, MipmapNearest, Mipmap } filter = Filter::Mipmap;
   double scale = 1.0;
   float size_clamp = 0.5f;
   float near_fade = 2.0f;

@@ -130,9 +130,10 @@ void Renderer::apply_settings(const Settings& s) {
   r.reversed_z = s.choice("render.depth_mode") == "reversed";
   r.infinite_far = s.flag("render.infinite_far");
   const std::string& f = s.choice("render.texture_filter");
-  r.filter = f == "nearest" ? RenderSettings::Filter::Nearest
-             : f == "linear" ? RenderSettings::Filter::Linear
-                             : RenderSettings::Filter::Mipmap;
+  r.filter = f == "nearest"          ? RenderSettings::Filter::Nearest
+             : f == "linear"         ? RenderSettings::Filter::Linear
+             : f == "mipmap_nearest" ? RenderSettings::Filter::MipmapNearest
+                                     : RenderSettings::Filter::Mipmap;
   r.scale = s.number("render.scale");
   r.size_clamp = float(s.number("render.particle_size_clamp"));
   r.near_fade = float(s.number("render.near_fade"));

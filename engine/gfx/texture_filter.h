@@ -13,6 +13,7 @@ inline void apply_texture_filter(GLenum target, RenderSettings::Filter filter) {
   GLint min_filter = GL_LINEAR_MIPMAP_LINEAR;
   if (filter == RenderSettings::Filter::Nearest) min_filter = GL_NEAREST;
   if (filter == RenderSettings::Filter::Linear) min_filter = GL_LINEAR;
+  if (filter == RenderSettings::Filter::MipmapNearest) min_filter = GL_LINEAR_MIPMAP_NEAREST;
   glTexParameteri(target, GL_TEXTURE_MIN_FILTER, min_filter);
   glTexParameteri(target, GL_TEXTURE_MAG_FILTER, filter == RenderSettings::Filter::Nearest ? GL_NEAREST : GL_LINEAR);
 }

@@ -104,8 +104,11 @@ void resolve_options(const CLI::App& app, const CommandLineText& t, AppOptions& 
   load_bindings(o.bindings_path);  // a bad bindings file is bad input in every mode
   if (!parse_size(t.size, o.width, o.height))
     throw InputError("--size: expected WIDTHxHEIGHT with each in 16..8192, got '" + t.size + "'");
-  if (!t.quality.empty())
-    o.settings.apply_preset_file(std::string(ARCFIRE_SOURCE_DIR) + "/assets/settings/quality.json", t.quality);
+  // The attract demo renders offline frames for people to look at: the full look (the high
+  // preset) unless a preset is named.
+  const std::string preset = !t.quality.empty() ? t.quality : o.demo ? "high" : "";
+  if (!preset.empty())
+    o.settings.apply_preset_file(std::string(ARCFIRE_SOURCE_DIR) + "/assets/settings/quality.json", preset);
   for (const auto& s : t.sets) o.settings.set_from_text(s, "--set " + s);
   if (!t.difficulty.empty()) {
     if (t.difficulty == "easy") o.game.difficulty = Difficulty::Easy;

@@ -98,7 +98,8 @@ BenchEnv read_env() {
     const std::string f = v;
     if (f == "nearest") e.filter = RenderSettings::Filter::Nearest;
     else if (f == "linear") e.filter = RenderSettings::Filter::Linear;
-    else if (f != "mipmap") bad_env("ARCFIRE_BENCH_FILTER", f, "nearest, linear or mipmap");
+    else if (f == "mipmap_nearest") e.filter = RenderSettings::Filter::MipmapNearest;
+    else if (f != "mipmap") bad_env("ARCFIRE_BENCH_FILTER", f, "nearest, linear, mipmap_nearest or mipmap");
   }
   return e;
 }

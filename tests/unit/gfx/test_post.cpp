@@ -259,9 +259,13 @@ TEST(Hdr, QualityPresetsSetTheLook) {
   const std::string quality = ARCFIRE_SOURCE_DIR "/assets/settings/quality.json";
   Settings s = Settings::defaults();
   r->apply_settings(s);
+  EXPECT_FALSE(r->render_settings().hdr) << "the default keeps the 8-bit scene";
+  EXPECT_EQ(r->render_settings().antialias, RenderSettings::Antialias::Off);
+  s.apply_preset_file(quality, "high");
+  r->apply_settings(s);
   EXPECT_TRUE(r->render_settings().hdr);
   EXPECT_EQ(r->render_settings().antialias, RenderSettings::Antialias::Fxaa);
-  EXPECT_FLOAT_EQ(r->render_settings().bloom, RenderSettings::kBloomLow);
+  EXPECT_FLOAT_EQ(r->render_settings().bloom, RenderSettings::kBloomHigh);
   s.apply_preset_file(quality, "low");
   r->apply_settings(s);
   EXPECT_FALSE(r->render_settings().hdr);
