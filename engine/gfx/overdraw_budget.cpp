@@ -22,52 +22,64 @@ float overlap(float centre, float half, float size) {
   return std::max(0.0f, std::min(centre + half, size) - std::max(centre - half, 0.0f));
 }
 
+// One step of a cluster's log k toward the frame's solution: attack fast, release slower.
+double step_toward(double log_k, double log_target, double dt) {
+  const bool attack = log_target < log_k;
+  const double step = (log_target - log_k) * (1.0 - std::exp(-dt / (attack ? kAttackSeconds : kReleaseSeconds)));
+  const double most = (attack ? kAttackRate : kReleaseRate) * dt;
+  return log_k + std::clamp(step, -most, most);
+}
+
 }  // namespace
 
-double OverdrawBudget::total_area(double k) const {
+double OverdrawBudget::area_at(uint32_t i, double k) const {
+  const Footprint& f = fp_[i];
+  const float r = float(std::min(1.0, k / double(f.threshold)));
+  return double(f.frac) * 4.0 * double(r * f.w_px) * double(f.half_axis_px + r * f.w_px);
+}
+
+double OverdrawBudget::total_area(const std::vector<uint32_t>& set, double k) const {
   double sum = 0;
-  for (uint32_t i : candidates_) {
-    const Footprint& f = fp_[i];
-    const float r = float(std::min(1.0, k / double(f.threshold)));
-    sum += double(f.frac) * 4.0 * double(r * f.w_px) * double(f.half_axis_px + r * f.w_px);
-  }
+  for (uint32_t i : set) sum += area_at(i, k);
   return sum;
 }
 
-// The largest k whose total meets the budget (the candidates' share of it).
-double OverdrawBudget::solve(double budget_px, double k_none) const {
-  if (total_area(k_none) <= budget_px) return k_none;
-  double lo = std::log(kMinCap), hi = std::log(k_none);
-  if (total_area(kMinCap) > budget_px) return kMinCap;
+// The largest k in [k_lo, k_hi] whose total over `set` meets budget_px (k_lo when none does).
+double OverdrawBudget::solve(const std::vector<uint32_t>& set, double budget_px, double k_lo, double k_hi) const {
+  if (total_area(set, k_hi) <= budget_px) return k_hi;
+  if (total_area(set, k_lo) > budget_px) return k_lo;
+  double lo = std::log(k_lo), hi = std::log(k_hi);
   for (int it = 0; it < 24; ++it) {
     const double mid = 0.5 * (lo + hi);
-    (total_area(std::exp(mid)) > budget_px ? hi : lo) = mid;
+    (total_area(set, std::exp(mid)) > budget_px ? hi : lo) = mid;
   }
   return std::exp(lo);
 }
 
-// Long: one pass estimates every particle's footprint, the solve and the smoothing follow, and
-// a last pass applies the caps; splitting it would hand the footprints around for no gain.
-OverdrawStats OverdrawBudget::apply(std::vector<ParticleInstance>& particles, std::vector<float>& areas,
-                                    const OverdrawFrame& frame, const OverdrawOptions& o) {
-  OverdrawStats s;
+double OverdrawBudget::log_cap_of(uint32_t cluster) const {
+  auto it = std::lower_bound(caps_.begin(), caps_.end(), std::make_pair(cluster, -1e300));
+  return it != caps_.end() && it->first == cluster ? it->second : std::nan("");
+}
+
+// The footprint of every particle (fp_), the candidates whose cap can bind, and the area of
+// the rest; returns the estimated blended pixels.
+double OverdrawBudget::estimate(const std::vector<ParticleInstance>& particles, const OverdrawFrame& frame,
+                                float near_m, double& fixed) {
   const float W = float(frame.width), H = float(frame.height);
   const double screen = double(W) * double(H);
   const float tan_y = std::max(frame.tan_half_y, 1e-6f);
-  const float near_m = std::max(o.near, 1e-3f);
   fp_.resize(particles.size());
-  areas.resize(particles.size());
   candidates_.clear();
-  double fixed = 0;  // the area of particles no cap can reach
+  fixed = 0;
+  double total = 0;
   for (size_t i = 0; i < particles.size(); ++i) {
     const ParticleInstance& p = particles[i];
     const glm::vec3 c = frame.to_view * glm::vec3(p.pos[0], p.pos[1], p.pos[2]);
     const float d = std::max(-c.z, frame.near);
     const float ppu = 0.5f * H / (d * tan_y);  // pixels per metre at this depth
-    const float size = std::min(std::max(p.size, 1e-6f), std::max(frame.size_clamp * d * tan_y, 1e-6f));
     Footprint& f = fp_[i];
-    f.size = size;
-    f.w_px = size * ppu;
+    f.size = std::min(std::max(p.size, 1e-6f), std::max(frame.size_clamp * d * tan_y, 1e-6f));
+    f.w_px = f.size * ppu;
     f.half_axis_px = 0;
     glm::vec2 dir(0.0f, 1.0f);
     if (p.billboard == uint8_t(Billboard::AxisLocked)) {
@@ -97,36 +109,59 @@ OverdrawStats OverdrawBudget::apply(std::vector<ParticleInstance>& particles, st
     const float strength = std::max({p.color[0], p.color[1], p.color[2], p.color[3] * (1.0f - p.burn)});
     const float visible = std::clamp(0.25f + strength, 0.25f, 1.25f);
     f.threshold = f.w_px / (H * kOverdrawWeight[prio] * visible * g);
-    s.estimated_layers += f.area;
+    total += f.area;
     if (f.threshold > kMinCap && f.area > 0.0f) candidates_.push_back(uint32_t(i));
     else fixed += f.area;
   }
-  s.estimated_layers /= screen;
-  const double k_none = std::max(4.0 * double(frame.size_clamp), 1e-2);  // above every threshold
-  double target = k_none;
-  if (o.budget_layers > 0.0f) target = solve(std::max(0.0, double(o.budget_layers) * screen - fixed), k_none);
-  // Smoothing in log k by game time: attack fast, release slower; a still frame keeps k.
-  const double dt = frame.time_seconds - last_time_;
-  const double lt = std::log(target);
-  if (!has_state_ || dt < 0.0 || dt > kRestartSeconds) log_k_ = lt;
-  else if (dt > 0.0) {
-    const bool attack = lt < log_k_;
-    const double step = (lt - log_k_) * (1.0 - std::exp(-dt / (attack ? kAttackSeconds : kReleaseSeconds)));
-    const double most = (attack ? kAttackRate : kReleaseRate) * dt;
-    log_k_ += std::clamp(step, -most, most);
-  }
-  log_k_ = std::clamp(log_k_, std::log(kMinCap), std::log(k_none));
-  has_state_ = true;
-  last_time_ = frame.time_seconds;
-  const double k = std::exp(log_k_);
-  s.cap = k < k_none * 0.999 ? k : 0.0;
+  return total;
+}
 
+// Each cluster drawn before moves its cap toward the frame's solution; a cluster new this
+// frame starts at the cap that meets the budget beside the others (at most the solution).
+void OverdrawBudget::update_caps(const std::vector<ParticleInstance>& particles, double target, double budget_px,
+                                 bool budgeted, double time_seconds) {
+  const double dt = time_seconds - last_time_;
+  const bool continuing = has_state_ && dt >= 0.0 && dt <= kRestartSeconds;
+  std::vector<std::pair<uint32_t, double>> next;
+  for (const ParticleInstance& p : particles) next.emplace_back(p.cluster, 0.0);
+  std::sort(next.begin(), next.end());
+  next.erase(std::unique(next.begin(), next.end(), [](auto& a, auto& b) { return a.first == b.first; }), next.end());
+  const double lt = std::log(target);
+  bool any_fresh = false;
+  for (auto& [cluster, log_k] : next) {
+    const double before = continuing ? log_cap_of(cluster) : std::nan("");
+    log_k = std::isnan(before) ? std::nan("") : dt > 0.0 ? step_toward(before, lt, dt) : before;
+    any_fresh = any_fresh || std::isnan(log_k);
+  }
+  caps_.swap(next);
+  const double fresh_log_k = lt;
+  for (auto& entry : caps_)
+    if (std::isnan(entry.second)) entry.second = fresh_log_k;
+  has_state_ = true;
+  last_time_ = time_seconds;
+}
+
+OverdrawStats OverdrawBudget::apply(std::vector<ParticleInstance>& particles, std::vector<float>& areas,
+                                    const OverdrawFrame& frame, const OverdrawOptions& o) {
+  OverdrawStats s;
+  const double screen = double(frame.width) * double(frame.height);
+  double fixed = 0;
+  s.estimated_layers = estimate(particles, frame, std::max(o.near, 1e-3f), fixed) / screen;
+  const double k_none = std::max(4.0 * double(frame.size_clamp), 1e-2);  // above every threshold
+  const bool budgeted = o.budget_layers > 0.0f;
+  const double budget_px = std::max(0.0, double(o.budget_layers) * screen - fixed);
+  const double target = budgeted ? solve(candidates_, budget_px, kMinCap, k_none) : k_none;
+  update_caps(particles, target, budget_px, budgeted, frame.time_seconds);
+  s.cap = target < k_none * 0.999 ? target : 0.0;
+
+  areas.resize(particles.size());
   size_t kept = 0;
   for (size_t i = 0; i < particles.size(); ++i) {
     ParticleInstance p = particles[i];
     const Footprint& f = fp_[i];
     float area = f.area;
-    if (s.cap > 0.0 && double(f.threshold) > k) {
+    const double k = std::exp(log_cap_of(p.cluster));
+    if (k < k_none * 0.999 && double(f.threshold) > k) {
       const float r = float(k / double(f.threshold));
       const float fade = std::pow(r, kOverdrawFadeGamma[std::min<int>(p.screen_priority, 2)]);
       ++s.reduced;
@@ -136,7 +171,7 @@ OverdrawStats OverdrawBudget::apply(std::vector<ParticleInstance>& particles, st
       }
       p.size = f.size * r;
       for (float& ch : p.color) ch *= fade;
-      area = float(std::min(double(f.frac) * 4.0 * double(r * f.w_px) * double(f.half_axis_px + r * f.w_px), screen));
+      area = float(std::min(area_at(uint32_t(i), k), screen));
     }
     s.budgeted_layers += area;
     areas[kept] = area;

@@ -10,28 +10,33 @@
 //
 //   cap_px(particle) = k · screen height · weight(screen priority) · max(1, (distance / near)²)
 //
-// with one k per frame solved by bisection so that the estimated total meets the budget. A
-// particle above its cap is shrunk to it (an axis-locked lightning segment is thinned: its
-// width shrinks, its length stays) and faded by (cap / size)^γ(priority); one faded below
-// 1/512 is dropped. Low priority (sparks, debris: γ 1) has the smallest weight and fades
-// with its size until it is dropped; normal (shields, smoke, trails: γ 1/4) shrinks with a
-// little fade; high (beams, fireballs: γ 0) has the largest weight and only shrinks. So sparks
-// go before shields and smoke, and those before beams. Shrinking with little fade keeps the
-// picture closest (the bench's PSNR of budgeted against unbudgeted frames): a near particle's
-// faint rim goes, its core stays. The distance term makes the reduction fall off
-// smoothly beyond `near` metres: it is the near-camera particles that shrink first.
+// where each frame solves by bisection for the k at which the estimated total meets the
+// budget. A particle above its cap is shrunk to it (an axis-locked lightning segment is
+// thinned: its width shrinks, its length stays) and faded by (cap / size)^γ(priority); one
+// faded below 1/512 is dropped. Low priority (sparks, debris: γ 1) has the smallest weight
+// and fades with its size until it is dropped; normal (shields, smoke, trails: γ 1/4) shrinks
+// with a little fade; high (beams, fireballs: γ 0) has the largest weight and only shrinks.
+// So sparks go before shields and smoke, and those before beams. Shrinking with little fade
+// keeps the picture closest (the bench's PSNR of budgeted against unbudgeted frames): a near
+// particle's faint rim goes, its core stays. The distance term makes the reduction fall off
+// smoothly beyond `near` metres: it is the near-camera particles that shrink first. A faint
+// particle (little light added or blocked) is capped before a strong one.
 //
-// k moves toward each frame's solution in log space with a time constant and a rate limit
-// (0.08 s and 12 e-folds a second when more reduction is needed, 0.3 s and 4 when less is:
-// at 60 Hz no particle shrinks by more than 18 % from one frame to the next), by the view's
-// game time, so nothing pops; a frame that stands still in time keeps k, one that jumps back or by
-// more than half a second starts from its own solution.
+// Each cluster keeps its own k, which moves toward the frame's solution in log space with a
+// time constant and a rate limit (0.08 s and 12 e-folds a second toward more reduction, 0.3 s
+// and 4 toward less: at 60 Hz no particle shrinks by more than 18 % from one frame to the
+// next), by the view's game time, so nothing pops. A cluster that was not drawn the frame
+// before (an explosion's first frame) has no size to jump from: it starts at the cap that
+// meets the budget beside the others (at most the frame's solution) and then eases toward
+// the solution like the rest. A frame that stands still in time keeps the caps; one that
+// jumps back or by more than half a second starts every cluster from the solution.
 //
 //   OverdrawBudget budget;
 //   OverdrawStats s = budget.apply(particles, areas, frame, {.budget_layers = 3, .near = 40});
 //   // particles: shrunk, faded and thinned in place; areas[i]: each one's blended pixels after it
 #pragma once
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include <glm/mat3x3.hpp>
@@ -84,12 +89,18 @@ class OverdrawBudget {
     float threshold;     // the k below which its cap binds
     float area;          // blended pixels unreduced
   };
-  double total_area(double k) const;
-  double solve(double budget_px, double k_none) const;
+  double area_at(uint32_t i, double k) const;
+  double total_area(const std::vector<uint32_t>& set, double k) const;
+  double solve(const std::vector<uint32_t>& set, double budget_px, double k_lo, double k_hi) const;
+  double estimate(const std::vector<ParticleInstance>& particles, const OverdrawFrame& frame, float near_m, double& fixed);
+  void update_caps(const std::vector<ParticleInstance>& particles, double target, double budget_px, bool budgeted,
+                   double time_seconds);
+  double log_cap_of(uint32_t cluster) const;  // NaN when the cluster has none
 
   std::vector<Footprint> fp_;
   std::vector<uint32_t> candidates_;  // particles whose cap can bind at all
-  double log_k_ = 0;
+  std::vector<uint32_t> fresh_;       // those of clusters new this frame
+  std::vector<std::pair<uint32_t, double>> caps_;  // log k by cluster id, sorted
   double last_time_ = 0;
   bool has_state_ = false;
 };

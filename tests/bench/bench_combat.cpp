@@ -16,6 +16,7 @@
 //   combat_particle_draws_max_<camera>     particle draws (runs) in a frame, the most
 //   soft_edge_cost_ratio_combat_<camera>   per-effect soft edges ÷ soft edges off, median of pairs
 // ARCFIRE_GFX_DUMP=DIR saves the slowest frame of each camera (combat_slowest_<camera>.png).
+// ARCFIRE_BENCH_SET="key=value key=value" measures under other settings (as --set; bad ones exit 2).
 // ARCFIRE_BENCH_FRAMES=FILE.csv writes one line per timed frame (camera, tick, ms, stats).
 // ARCFIRE_BENCH_RECORD=1 records the dogfight anew into tests/bench/combat_view.replay first.
 #include <algorithm>
@@ -227,7 +228,18 @@ ARCFIRE_SCENE(combat_view) {
     return;
   }
   const replay::Script script = replay::load_script(path);
-  const Settings settings = script_settings(script, Settings::defaults(), root);
+  Settings settings = script_settings(script, Settings::defaults(), root);
+  if (const char* extra = std::getenv("ARCFIRE_BENCH_SET")) {
+    std::istringstream words(extra);
+    for (std::string kv; words >> kv;) {
+      try {
+        settings.set_from_text(kv, "ARCFIRE_BENCH_SET");
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "arcfire-bench: %s\n", e.what());
+        std::exit(2);
+      }
+    }
+  }
   GameOptions base;
   base.root_dir = root;
   Game game = Game::load_level(resolve_script_level(script, root), script_game_options(script, settings, base));
