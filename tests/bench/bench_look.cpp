@@ -5,10 +5,12 @@
 //    R11F_G11F_B10F scene against RGBA16F (the format the renderer uses, being the cheaper);
 //  - antialias_frame_ratio_<mode>(_battle): fxaa, msaa2 and msaa4 against off, HDR and bloom on;
 //  - clipped_pixel_share_hdr_off / _hdr_on: the share of pixels with any channel at 255 in the
-//    gallery's brightest explosion frame (the tick with the most clipped pixels of the first
+//    gallery's brightest explosion frame, with the 8-bit scene and with the high preset's look (the tick with the most clipped pixels of the first
 //    second, found with HDR off), before and after tone mapping;
 //  - render_battle_frame_ms_default_preset: the battle frame with Settings::defaults()
-//    (hdr on, bloom low, FXAA), fastest and median of the rounds (a 60 Hz frame is 16.7 ms).
+//    (8-bit scene, no bloom, no edge filter), fastest and median of the rounds (a 60 Hz frame
+//    is 16.7 ms); render_battle_frame_ms_high_preset: the same with the high preset's look
+//    (hdr, bloom high, FXAA).
 // Frames are timed one glFinish-bracketed frame at a time, every configuration once per round,
 // odd rounds backwards, over ARCFIRE_BENCH_ROUNDS rounds (default 32); ratios are medians of
 // same-round pairs, as in bench_render.cpp.
@@ -87,20 +89,30 @@ RenderSettings look(bool hdr, float bloom, RenderSettings::Antialias aa) {
   return s;
 }
 
+// The renderer settings of a quality preset ("" for Settings::defaults()).
+RenderSettings preset_look(const std::string& preset) {
+  Settings s = Settings::defaults();
+  if (!preset.empty()) s.apply_preset_file(ARCFIRE_SOURCE_DIR "/assets/settings/quality.json", preset);
+  Renderer probe(RendererDesc{.offscreen = true});
+  probe.apply_settings(s);
+  return probe.render_settings();
+}
+
 // One scene: the cost of HDR + bloom, of the HDR formats and of each anti-aliasing mode, and
-// the frame with the settings of Settings::defaults().
+// the frame with the settings of Settings::defaults() and of the high preset.
 void measure_scene(Renderer& r, Renderer& r11, const RenderView& view, const std::string& suffix, int rounds) {
   using AA = RenderSettings::Antialias;
   const float bloom = RenderSettings::kBloomLow;
-  Renderer probe_settings_owner(RendererDesc{.offscreen = true});
-  probe_settings_owner.apply_settings(Settings::defaults());
+  RenderSettings high = preset_look("high");
+  high.scale = 1.0;  // the same frame size as the others
   std::vector<Config> c = {{"8-bit scene (hdr off)", &r, look(false, 0, AA::Off), {}},
                            {"hdr + bloom (RGBA16F)", &r, look(true, bloom, AA::Off), {}},
                            {"hdr + bloom, R11F_G11F_B10F", &r11, look(true, bloom, AA::Off), {}},
                            {"hdr + bloom + fxaa", &r, look(true, bloom, AA::Fxaa), {}},
                            {"hdr + bloom + msaa2", &r, look(true, bloom, AA::Msaa2), {}},
                            {"hdr + bloom + msaa4", &r, look(true, bloom, AA::Msaa4), {}},
-                           {"default preset", &r, probe_settings_owner.render_settings(), {}}};
+                           {"default settings", &r, preset_look(""), {}},
+                           {"high preset", &r, high, {}}};
   time_rounds(c, view, rounds);
   for (const Config& k : c)
     std::printf("  %-30s fastest %6.2f ms, median %6.2f ms, x%.3f of hdr off\n", k.name.c_str(), fastest(k),
@@ -118,6 +130,7 @@ void measure_scene(Renderer& r, Renderer& r11, const RenderView& view, const std
   if (suffix == "_battle") {
     bench::report_metric("render_battle_frame_ms_default_preset", fastest(c[6]));
     bench::report_metric("render_battle_frame_ms_default_preset_median", bench::median(c[6].ms));
+    bench::report_metric("render_battle_frame_ms_high_preset", fastest(c[7]));
   }
 }
 
@@ -153,15 +166,13 @@ void measure_clipping(Renderer& r) {
     if (share <= worst_off) continue;
     worst_off = share;
     worst_tick = tick;
-    Renderer probe(RendererDesc{.offscreen = true});
-    probe.apply_settings(Settings::defaults());
-    r.set_render_settings(probe.render_settings());
+    r.set_render_settings(preset_look("high"));
     r.render(view, kWidth, kHeight);
     on_img = r.read_pixels();
     on_there = clipped_share(on_img);
     worst_off_img = off;
   }
-  std::printf(" gallery explosion at tick %d: %.3f %% of pixels clipped with hdr off, %.3f %% with the default preset\n",
+  std::printf(" gallery explosion at tick %d: %.3f %% of pixels clipped with hdr off, %.3f %% with the high preset's look\n",
               worst_tick, worst_off * 100, on_there * 100);
   if (const char* dir = std::getenv("ARCFIRE_GFX_DUMP")) {
     save_image(std::string(dir) + "/look_explosion_hdr_off.png", worst_off_img);
