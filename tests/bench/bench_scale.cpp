@@ -1,0 +1,103 @@
+// particle_scale: how many particles the renderer draws at 1920x1080 within 4 ms. The arena
+// battle ten seconds in (its particles, seen from the chase camera) is scaled up by copies of
+// its particles, each copy moved by a keyed random offset of up to ±150 m across and ±100 m
+// in depth, so the crowd keeps the battle's mix of sizes, blends and soft edges. For doubling
+// counts from 4096 to 4 194 304 the frame is timed (fastest of a few, glFinish-bracketed)
+// against the same frame without particles; the count at which the particles' share crosses
+// 4 ms is interpolated between the two counts around it (in log count).
+//   particles_within_4ms_1080p   the count (0 when even 4096 take longer)
+// On a software rasteriser the steps stop once a frame takes more than a second.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "bench_registry.h"
+#include "bench_scenes.h"
+#include "core/rng.h"
+#include "gfx/renderer.h"
+#include "platform/platform.h"
+
+namespace arc {
+namespace {
+
+constexpr int kW = 1920, kH = 1080;
+
+double fastest_frame(Renderer& r, const RenderView& v, int tries) {
+  double best = 1e30;
+  for (int i = 0; i < tries; ++i) {
+    r.restart_smoothing();
+    const double t0 = bench::now_seconds();
+    r.render(v, kW, kH);
+    r.finish();
+    best = std::min(best, (bench::now_seconds() - t0) * 1000.0);
+  }
+  return best;
+}
+
+RenderView scaled(const RenderView& battle, size_t count) {
+  RenderView v = battle;
+  v.particles.clear();
+  v.particles.reserve(count);
+  const size_t n = battle.particles.size();
+  Rng rng{7, 3, 0};
+  for (size_t i = 0; i < count; ++i) {
+    ParticleInstance p = battle.particles[i % n];
+    const uint64_t copy = i / n;
+    if (copy > 0) {
+      p.pos[0] += float(rng.range(copy * 3, -150.0, 150.0));
+      p.pos[1] += float(rng.range(copy * 3 + 1, -150.0, 150.0));
+      p.pos[2] += float(rng.range(copy * 3 + 2, -100.0, 100.0));
+    }
+    v.particles.push_back(p);
+  }
+  return v;
+}
+
+}  // namespace
+
+ARCFIRE_SCENE(particle_scale) {
+  std::unique_ptr<HeadlessContext> ctx;
+  try {
+    ctx = create_headless_context();
+  } catch (const std::exception& e) {
+    std::printf("skipped: no EGL context (%s)\n", e.what());
+    return;
+  }
+  RendererDesc desc;
+  desc.offscreen = true;
+  Renderer r(desc);
+  const RenderView battle = bench::level_view(r, "levels/arena.json", 600, kW, kH);
+  r.apply_settings(Settings::defaults());
+  RenderSettings rs = r.render_settings();
+  rs.overdraw_budget = 0.0f;  // every particle drawn: this measures the renderer, not the budget
+  r.set_render_settings(rs);
+  RenderView empty = battle;
+  empty.particles.clear();
+  fastest_frame(r, empty, 2);  // warm-up
+  const double base = fastest_frame(r, empty, 5);
+  std::printf("  %s; arena battle at tick 600: %zu particles; frame without particles %.2f ms\n",
+              ctx->description().c_str(), battle.particles.size(), base);
+  double within = 0, prev_count = 0, prev_ms = 0;
+  for (size_t count = 4096; count <= (size_t(1) << 22); count *= 2) {
+    const RenderView v = scaled(battle, count);
+    fastest_frame(r, v, 1);
+    const double ms = fastest_frame(r, v, 3) - base;
+    std::printf("  %8zu particles: %.2f ms for the particles (%d drawn, %d draws)\n", count, ms,
+                r.last_stats().particles_drawn, r.last_stats().particle_draw_calls);
+    if (ms > 4.0) {
+      if (prev_count > 0)
+        within = std::exp(std::log(prev_count) + (std::log(double(count)) - std::log(prev_count)) *
+                                                     (4.0 - prev_ms) / std::max(ms - prev_ms, 1e-9));
+      break;
+    }
+    within = double(count);
+    prev_count = double(count);
+    prev_ms = ms;
+    if (ms + base > 1000.0) break;
+  }
+  bench::report_metric("particles_within_4ms_1080p", within);
+}
+
+}  // namespace arc
