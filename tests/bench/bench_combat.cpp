@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "bench_registry.h"
+#include "bench_scenes.h"
 #include "core/json.h"
 #include "game/app/scene_resources.h"
 #include "game/app/script_feeder.h"
@@ -220,13 +221,8 @@ ARCFIRE_SCENE(combat_view) {
   const std::string root = ARCFIRE_SOURCE_DIR;
   const std::string path = root + kScript;
   if (std::getenv("ARCFIRE_BENCH_RECORD")) record_dogfight(root, path);
-  std::unique_ptr<HeadlessContext> ctx;
-  try {
-    ctx = create_headless_context();
-  } catch (const std::exception& e) {
-    std::printf("skipped: no EGL context (%s)\n", e.what());
-    return;
-  }
+  const std::unique_ptr<HeadlessContext> ctx = bench::context_or_skip();
+  if (!ctx) return;
   const replay::Script script = replay::load_script(path);
   Settings settings = script_settings(script, Settings::defaults(), root);
   if (const char* extra = std::getenv("ARCFIRE_BENCH_SET")) {

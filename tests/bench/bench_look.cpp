@@ -186,13 +186,8 @@ void measure_clipping(Renderer& r) {
 
 ARCFIRE_SCENE(render_look) {
   const int rounds = rounds_from_env();
-  std::unique_ptr<HeadlessContext> ctx;
-  try {
-    ctx = create_headless_context();
-  } catch (const std::exception& e) {
-    std::printf("skipped: no EGL context (%s)\n", e.what());
-    return;
-  }
+  const std::unique_ptr<HeadlessContext> ctx = bench::context_or_skip();
+  if (!ctx) return;
   RendererDesc desc{.offscreen = true};
   RendererDesc desc11 = desc;
   desc11.hdr_format = HdrFormat::R11fG11fB10f;

@@ -281,13 +281,8 @@ void report(const Figures& f, const std::string& suffix) {
 
 ARCFIRE_SCENE(render_particle_gallery) {
   const BenchEnv env = read_env();
-  std::unique_ptr<HeadlessContext> ctx;
-  try {
-    ctx = create_headless_context();
-  } catch (const std::exception& e) {
-    std::printf("skipped: no EGL context (%s)\n", e.what());
-    return;
-  }
+  const std::unique_ptr<HeadlessContext> ctx = bench::context_or_skip();
+  if (!ctx) return;
   const std::string root = ARCFIRE_SOURCE_DIR;
   RendererDesc desc;
   desc.offscreen = true;

@@ -58,13 +58,8 @@ RenderView scaled(const RenderView& battle, size_t count) {
 }  // namespace
 
 ARCFIRE_SCENE(particle_scale) {
-  std::unique_ptr<HeadlessContext> ctx;
-  try {
-    ctx = create_headless_context();
-  } catch (const std::exception& e) {
-    std::printf("skipped: no EGL context (%s)\n", e.what());
-    return;
-  }
+  const std::unique_ptr<HeadlessContext> ctx = bench::context_or_skip();
+  if (!ctx) return;
   RendererDesc desc;
   desc.offscreen = true;
   Renderer r(desc);

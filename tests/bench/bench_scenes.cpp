@@ -1,5 +1,7 @@
 #include "bench_scenes.h"
 
+#include <cstdio>
+
 #include "game/app/scene_resources.h"
 #include "game/render/render_view_builder.h"
 #include "game/sim/game.h"
@@ -19,6 +21,15 @@ RenderView level_view(Renderer& r, const std::string& level, int ticks, int widt
   RenderView view;
   build_render_view(game.world(), models, 1.0, CameraSettings{}, hud, width, height, view);
   return view;
+}
+
+std::unique_ptr<HeadlessContext> context_or_skip() {
+  try {
+    return create_headless_context();
+  } catch (const std::exception& e) {
+    std::printf("skipped: no EGL context (%s)\n", e.what());
+    return nullptr;
+  }
 }
 
 }  // namespace arc::bench

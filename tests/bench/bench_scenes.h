@@ -1,8 +1,10 @@
 // Scenes several benchmark files measure.
 #pragma once
+#include <memory>
 #include <string>
 
 #include "gfx/renderer.h"
+#include "platform/platform.h"
 
 namespace arc::bench {
 
@@ -12,5 +14,9 @@ namespace arc::bench {
 // particle pass). The gallery at tick 240 has explosions, beams, sparks, trails and shields all
 // alive; the arena at tick 600 is the battle in full swing, seen from the chase camera.
 RenderView level_view(Renderer& r, const std::string& level, int ticks, int width, int height);
+
+// The EGL context a render scene draws in, or nullptr after printing "skipped: ..." (a machine
+// without EGL runs the other scenes).
+std::unique_ptr<HeadlessContext> context_or_skip();
 
 }  // namespace arc::bench

@@ -33,9 +33,7 @@ RenderView wall_view(Renderer& r) {
 
 TEST(ParticleDraws, RunsGiveTheOneDrawPicture) {
   REQUIRE_CONTEXT();
-  RendererDesc d;
-  d.offscreen = true;
-  Renderer r(d);
+  Renderer r(RendererDesc{.offscreen = true});
   r.set_sprites({scenes::soft_sprite(64)});
   const RenderView v = wall_view(r);
   RenderSettings s = test::plain_settings();
@@ -61,9 +59,7 @@ TEST(ParticleDraws, RunsGiveTheOneDrawPicture) {
 
 TEST(ParticleDraws, BudgetLeavesAFrameUnderItUntouched) {
   REQUIRE_CONTEXT();
-  RendererDesc d;
-  d.offscreen = true;
-  Renderer r(d);
+  Renderer r(RendererDesc{.offscreen = true});
   r.set_sprites({scenes::soft_sprite(64)});
   const RenderView v = wall_view(r);
   RenderSettings s = test::plain_settings();
@@ -79,9 +75,7 @@ TEST(ParticleDraws, BudgetLeavesAFrameUnderItUntouched) {
 
 TEST(ParticleDraws, BudgetShrinksNearParticlesAndItsEstimateMatchesTheCount) {
   REQUIRE_CONTEXT();
-  RendererDesc d;
-  d.offscreen = true;
-  Renderer r(d);
+  Renderer r(RendererDesc{.offscreen = true});
   r.set_sprites({scenes::soft_sprite(64)});
   RenderView v = wall_view(r);
   for (int i = 0; i < 36; ++i)  // big puffs right at the eye
