@@ -17,14 +17,15 @@ namespace arc {
 enum class Menu::Item {
   Play, Effects, Settings, Quit,                                   // main
   Mission, Effect, Difficulty, Launch, Back,                       // lists and briefing
-  Quality, Sensitivity, InvertY, Deadzone, Fov, Fullscreen, Vsync,  // settings
+  Quality, RenderSettings, Sensitivity, InvertY, Deadzone, Fov,     // settings
+  Fullscreen, Vsync, RenderKey, ResetRender,
   Controls, ResetProgress, Action, ResetKeys,                      // settings, controls
   Retry, Next, ToMenu                                              // results
 };
 
 namespace {
 
-constexpr int kControlRows = 13;  // rows of the controls list on screen at once
+constexpr int kControlRows = 13;  // rows of the controls and render lists on screen at once
 
 std::string clock_text(double seconds) {
   char buf[32];
@@ -120,6 +121,7 @@ const char* menu_screen_name(MenuScreen s) {
     case MenuScreen::Effects: return "effects";
     case MenuScreen::Briefing: return "briefing";
     case MenuScreen::Settings: return "settings";
+    case MenuScreen::Render: return "render";
     case MenuScreen::Controls: return "controls";
     case MenuScreen::Results: return "results";
     case MenuScreen::Closed: return "closed";
@@ -128,13 +130,29 @@ const char* menu_screen_name(MenuScreen s) {
 }
 
 Menu::Menu(std::vector<MissionInfo> catalog, UserFiles files, Bindings bindings, Bindings default_bindings,
-           std::vector<std::string> quality_presets)
+           const std::string& quality_file)
     : catalog_(std::move(catalog)),
       files_(std::move(files)),
       bindings_(std::move(bindings)),
       default_bindings_(std::move(default_bindings)),
-      presets_(std::move(quality_presets)),
-      message_(files_.message) {}
+      presets_(Settings::preset_names(quality_file)),
+      quality_file_(quality_file),
+      message_(files_.message) {
+  // The quality file's presets come in name order; offer them from cheap to exact.
+  const std::vector<std::string> known = {"low", "medium", "high", "reference"};
+  auto rank = [&](const std::string& p) { return std::find(known.begin(), known.end(), p) - known.begin(); };
+  std::stable_sort(presets_.begin(), presets_.end(), [&](const auto& a, const auto& b) { return rank(a) < rank(b); });
+  refresh_effective();
+}
+
+void Menu::refresh_effective() {
+  try {
+    effective_ = user_quality_settings(files_.settings, quality_file_);
+  } catch (const InputError& e) {
+    effective_ = Settings::defaults();
+    message_ = e.what();
+  }
+}
 
 std::vector<const MissionInfo*> Menu::listed() const {
   const MissionCategory want = screen_ == MenuScreen::Effects ? MissionCategory::Effects : MissionCategory::Mission;
@@ -156,8 +174,14 @@ std::vector<Menu::Item> Menu::items() const {
     }
     case MenuScreen::Briefing: return {Item::Launch, Item::Difficulty, Item::Back};
     case MenuScreen::Settings:
-      return {Item::Quality, Item::Sensitivity, Item::InvertY,  Item::Deadzone,      Item::Fov,
-              Item::Fullscreen, Item::Vsync,     Item::Controls, Item::ResetProgress, Item::Back};
+      return {Item::Quality,    Item::RenderSettings, Item::Sensitivity, Item::InvertY,       Item::Deadzone, Item::Fov,
+              Item::Fullscreen, Item::Vsync,          Item::Controls,    Item::ResetProgress, Item::Back};
+    case MenuScreen::Render: {
+      std::vector<Item> v(effective_.all().size(), Item::RenderKey);
+      v.push_back(Item::ResetRender);
+      v.push_back(Item::Back);
+      return v;
+    }
     case MenuScreen::Controls: {
       std::vector<Item> v(remap_actions().size(), Item::Action);
       v.push_back(Item::ResetKeys);
@@ -199,6 +223,15 @@ std::string Menu::item_label(Item item, int index) const {
     case Item::Launch: return "Launch";
     case Item::Back: return "Back";
     case Item::Quality: return "Quality preset: < " + s.quality + " >";
+    case Item::RenderSettings:
+      return "Render settings (" + std::to_string(s.render.size()) + " of yours over the preset)";
+    case Item::RenderKey: {
+      const SettingDef& d = effective_.all()[size_t(index)];
+      std::string label = d.key;
+      label.resize(std::max<size_t>(label.size() + 1, 30), ' ');
+      return label + "< " + d.value + " >" + (s.render.count(d.key) ? "  *" : "");
+    }
+    case Item::ResetRender: return "Back to the preset's values";
     case Item::Sensitivity: return number_text("Mouse sensitivity: < %.2f > deg/px", s.mouse_sensitivity);
     case Item::InvertY: return "Invert Y: " + on_off(s.invert_y);
     case Item::Deadzone: return number_text("Gamepad dead zone: < %.2f >", s.pad_deadzone);
@@ -261,6 +294,14 @@ MenuPage Menu::page() const {
     case MenuScreen::Settings:
       p.title = "SETTINGS";
       p.hint = "Left/Right: change   Enter: toggle or open   Esc: back (saved as you go)";
+      break;
+    case MenuScreen::Render:
+      p.title = "RENDER SETTINGS";
+      p.subtitle = "quality preset " + files_.settings.quality + "; * marks your own values";
+      p.hint = "Left/Right: change   Esc: back (saved as you go)";
+      p.first = std::clamp(selection_ - kControlRows / 2, 0, std::max(0, int(p.items.size()) - kControlRows));
+      p.rows = kControlRows;
+      if (selection_ < int(effective_.all().size())) p.message = effective_.all()[size_t(selection_)].doc;
       break;
     case MenuScreen::Controls:
       p.title = "CONTROLS";
@@ -351,6 +392,12 @@ std::vector<MenuRequest> Menu::accept(Item item, int index) {
     case Item::Fullscreen: s.fullscreen = !s.fullscreen; return {{K::SaveSettings}};
     case Item::Vsync: s.vsync = !s.vsync; return {{K::SaveSettings}};
     case Item::Controls: go(MenuScreen::Controls); return {};
+    case Item::RenderSettings: go(MenuScreen::Render); return {};
+    case Item::ResetRender:
+      s.render.clear();
+      refresh_effective();
+      message_ = "Render settings follow the " + s.quality + " preset again";
+      return {{K::SaveSettings}};
     case Item::ResetProgress:
       if (!confirm_reset_) {
         confirm_reset_ = true;
@@ -392,6 +439,7 @@ std::vector<MenuRequest> Menu::adjust(Item item, int step) {
       auto it = std::find(presets_.begin(), presets_.end(), s.quality);
       const int at = it == presets_.end() ? 0 : int(it - presets_.begin()), n = int(presets_.size());
       s.quality = presets_[size_t((at + step + n) % n)];
+      refresh_effective();
       return {{K::SaveSettings}};
     }
     case Item::Sensitivity:
@@ -404,8 +452,39 @@ std::vector<MenuRequest> Menu::adjust(Item item, int step) {
     case Item::InvertY:
     case Item::Fullscreen:
     case Item::Vsync: return accept(item, selection_);
+    case Item::RenderKey: return adjust_render(selection_, step);
     default: return {};
   }
+}
+
+// One step of a render setting: the next choice, the flag flipped, a number by a twentieth of
+// its range (a range over a hundredfold by halves and doubles), kept as the user's own value.
+std::vector<MenuRequest> Menu::adjust_render(int index, int step) {
+  const SettingDef& d = effective_.all()[size_t(index)];
+  std::string value;
+  switch (d.kind) {
+    case SettingDef::Kind::Choice: {
+      auto it = std::find(d.choices.begin(), d.choices.end(), d.value);
+      const int n = int(d.choices.size()), at = it == d.choices.end() ? 0 : int(it - d.choices.begin());
+      value = d.choices[size_t((at + step + n) % n)];
+      break;
+    }
+    case SettingDef::Kind::Flag: value = d.value == "true" ? "false" : "true"; break;
+    case SettingDef::Kind::Number:
+    case SettingDef::Kind::Integer: {
+      const double v = std::stod(d.value);
+      const bool wide = d.min > 0 && d.max / d.min > 100;
+      const bool integer = d.kind == SettingDef::Kind::Integer;
+      const double by = integer ? std::max(1.0, std::round((d.max - d.min) / 20)) : (d.max - d.min) / 20;
+      double next = wide ? (step > 0 ? v * 2 : v / 2) : v + step * by;
+      next = std::clamp(integer ? std::round(next) : next, d.min, d.max);
+      value = d.kind == SettingDef::Kind::Integer ? std::to_string(int64_t(next)) : number_text("%.4g", next);
+      break;
+    }
+  }
+  files_.settings.render[d.key] = value;
+  refresh_effective();
+  return {{MenuRequest::Kind::SaveSettings}};
 }
 
 std::vector<MenuRequest> Menu::back() {
@@ -418,7 +497,8 @@ std::vector<MenuRequest> Menu::back() {
         if (list[i]->path == chosen_) selection_ = int(i);
       break;
     }
-    case MenuScreen::Controls: go(MenuScreen::Settings); selection_ = 7; break;
+    case MenuScreen::Controls: go(MenuScreen::Settings); selection_ = 8; break;
+    case MenuScreen::Render: go(MenuScreen::Settings); selection_ = 1; break;
     case MenuScreen::Main: break;
     default: go(MenuScreen::Main); break;
   }

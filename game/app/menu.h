@@ -6,7 +6,7 @@
 // quit) and draws page() with layout_menu() (game/render/menu_layout.h). Tests drive the same
 // machine with a scripted list of inputs (tests/unit/app/test_menu.cpp).
 //
-//   Menu menu(load_mission_catalog("levels", "."), files, bindings, default_bindings, presets);
+//   Menu menu(load_mission_catalog("levels", "."), files, bindings, default_bindings, "assets/settings/quality.json");
 //   for (MenuRequest r : menu.handle(UiInput::key(UiKey::Accept))) ...   // Play
 //   menu.show_results(level, Difficulty::Normal, result);                 // after the fight
 #pragma once
@@ -49,7 +49,7 @@ std::vector<UiInput> parse_ui_inputs(const std::string& text, const std::string&
 // snapshots of the menu test and of `arcfire --menu-script`.
 std::string describe_page(const MenuPage& p);
 
-enum class MenuScreen { Main, Missions, Effects, Briefing, Settings, Controls, Results, Closed };
+enum class MenuScreen { Main, Missions, Effects, Briefing, Settings, Render, Controls, Results, Closed };
 const char* menu_screen_name(MenuScreen s);
 
 struct MenuRequest {
@@ -63,8 +63,9 @@ struct MenuRequest {
 
 class Menu {
  public:
+  // `quality_file`: the presets (assets/settings/quality.json) the settings screen offers.
   Menu(std::vector<MissionInfo> catalog, UserFiles files, Bindings bindings, Bindings default_bindings,
-       std::vector<std::string> quality_presets);
+       const std::string& quality_file);
 
   MenuScreen screen() const { return screen_; }
   bool open() const { return screen_ != MenuScreen::Closed; }
@@ -102,6 +103,10 @@ class Menu {
   UserFiles files_;
   Bindings bindings_, default_bindings_;
   std::vector<std::string> presets_;
+  std::string quality_file_;
+  Settings effective_;  // the render settings as they apply: the preset, then the user's values
+  void refresh_effective();
+  std::vector<MenuRequest> adjust_render(int index, int step);
   MenuScreen screen_ = MenuScreen::Main;
   int selection_ = 0;
   Difficulty difficulty_ = Difficulty::Normal;

@@ -80,8 +80,7 @@ Menu make_menu(const AppOptions& o) {
   Bindings b = load_bindings(root + "/assets/settings/bindings.json");
   Bindings flown = b;
   apply_user_settings(files.settings, flown);
-  return Menu(load_mission_catalog(root + "/levels", root), files, flown, b,
-              Settings::preset_names(root + "/assets/settings/quality.json"));
+  return Menu(load_mission_catalog(root + "/levels", root), files, flown, b, root + "/assets/settings/quality.json");
 }
 
 }  // namespace

@@ -54,6 +54,21 @@ void parse_keys(JsonObject& r, UserSettings& s) {
   k.finish();
 }
 
+// "render": { "render.sorting": "cluster", ... }: each checked against the setting's range.
+void parse_render(JsonObject& r, UserSettings& s) {
+  auto rv = r.get("render");
+  if (!rv) return;
+  JsonObject o = rv->object();
+  Settings check = Settings::defaults();
+  for (const auto& [key, value] : rv->raw().items()) {
+    JsonValue v = o.require(key);
+    const std::string text = value.is_string() ? value.get<std::string>() : value.dump();
+    check.set(key, text, v.where());
+    s.render[key] = text;
+  }
+  o.finish();
+}
+
 MissionResult parse_result(JsonObject o) {
   MissionResult m;
   m.victory = o.boolean("victory", false);
@@ -77,7 +92,7 @@ std::string replace_bad_file(const std::string& path, const std::string& default
   } catch (const InputError& e) {
     return error + " (kept a copy as " + path + ".bak; " + e.what() + ")";
   }
-  return error + " — kept it as " + path + ".bak and started from defaults";
+  return error + "; kept it as " + path + ".bak and started from defaults";
 }
 
 template <class T, class Parse, class Write>
@@ -143,6 +158,7 @@ UserSettings parse_settings(const std::string& text, const std::string& path,
   s.fullscreen = r.boolean("fullscreen", s.fullscreen);
   s.vsync = r.boolean("vsync", s.vsync);
   parse_keys(r, s);
+  parse_render(r, s);
   r.finish();
   return s;
 }
@@ -173,6 +189,8 @@ std::string settings_json(const UserSettings& s) {
   j["vsync"] = s.vsync;
   j["keys"] = nlohmann::ordered_json::object();
   for (const auto& [id, key] : s.keys) j["keys"][id] = key;
+  j["render"] = nlohmann::ordered_json::object();
+  for (const auto& [key, value] : s.render) j["render"][key] = value;
   return j.dump(2) + "\n";
 }
 
@@ -209,6 +227,13 @@ UserFiles load_user_files(const std::string& dir, const std::string& quality_fil
 
 void save_settings(const std::string& dir, const UserSettings& s) { write_into(dir, kSettingsFile, settings_json(s)); }
 void save_progress(const std::string& dir, const Progress& p) { write_into(dir, kProgressFile, progress_json(p)); }
+
+Settings user_quality_settings(const UserSettings& us, const std::string& quality_file) {
+  Settings s = Settings::defaults();
+  s.apply_preset_file(quality_file, us.quality);
+  for (const auto& [key, value] : us.render) s.set(key, value, "settings.json render");
+  return s;
+}
 
 void apply_user_settings(const UserSettings& s, Bindings& b) {
   b.mouse_sensitivity = s.mouse_sensitivity;

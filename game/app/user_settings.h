@@ -1,8 +1,9 @@
 // game/app/user_settings.h — the player's own settings and progress, kept between runs.
 //
 // Two JSON files in user_config_dir() ($XDG_CONFIG_HOME/arcfire, default ~/.config/arcfire):
-//   settings.json  quality preset, mouse sensitivity and Y inversion, gamepad dead zone, field
-//                  of view, fullscreen, vsync, and the keys the player remapped (action → key)
+//   settings.json  quality preset and single render settings over it, mouse sensitivity and Y
+//                  inversion, gamepad dead zone, field of view, fullscreen, vsync, and the
+//                  keys the player remapped (action → key)
 //   progress.json  the best result per mission and difficulty
 // Both are written atomically (core/json.h write_file_atomic). A file that does not parse or
 // validate is never lost silently: load_user_files() copies it to NAME.bak, writes the defaults
@@ -18,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "core/settings.h"
 #include "game/app/input_bindings.h"
 
 namespace arc {
@@ -31,6 +33,7 @@ struct UserSettings {
   bool fullscreen = false;
   bool vsync = true;
   std::map<std::string, std::string> keys;  // remap action id (key_remap.h) → key name
+  std::map<std::string, std::string> render;  // setting key (core/settings.h) → value, over the preset
   bool operator==(const UserSettings&) const = default;
 };
 
@@ -76,6 +79,10 @@ std::string progress_json(const Progress& p);
 // Atomic writes into `dir` (made if missing); InputError when it cannot be written.
 void save_settings(const std::string& dir, const UserSettings& s);
 void save_progress(const std::string& dir, const Progress& p);
+
+// The render and simulation settings the user chose: the defaults, their quality preset from
+// `quality_file`, then their own values of single settings. InputError for a bad preset or value.
+Settings user_quality_settings(const UserSettings& s, const std::string& quality_file);
 
 // The bindings a session flies with: the bindings file, then the user's settings over it,
 // unless the file was named with --bindings (it overrides the user's settings then).

@@ -153,7 +153,7 @@ void WindowSession::setup() {
     level_ = game_options_.root_dir + "/levels/attract.json";
     Bindings defaults = load_bindings(game_options_.root_dir + "/assets/settings/bindings.json");
     menu_.emplace(load_mission_catalog(game_options_.root_dir + "/levels", game_options_.root_dir), user_, bindings_,
-                  defaults, Settings::preset_names(game_options_.root_dir + "/assets/settings/quality.json"));
+                  defaults, game_options_.root_dir + "/assets/settings/quality.json");
   }
   start_game(std::make_unique<Game>(Game::load_level(level_, game_options_)));
   WindowDesc wd;
@@ -195,13 +195,14 @@ void WindowSession::load_user_files_and_bindings() {
   apply_simulation_settings(settings_, game_options_);
 }
 
-// The user's quality preset with the command line's --set over it; --quality wins over both.
+// The user's quality preset and own render values with the command line's --set over them;
+// --quality wins over both.
 Settings WindowSession::user_render_settings() const {
   if (options_.quality_given) return options_.settings;
   const UserSettings& us = menu_ ? menu_->settings() : user_.settings;
-  Settings s = Settings::defaults();
+  Settings s;
   try {
-    s.apply_preset_file(game_options_.root_dir + "/assets/settings/quality.json", us.quality);
+    s = user_quality_settings(us, game_options_.root_dir + "/assets/settings/quality.json");
     for (const std::string& set : options_.setting_overrides) s.set_from_text(set, "--set " + set);
   } catch (const InputError&) {
     return options_.settings;  // a preset the quality file no longer has: the command line's settings

@@ -20,7 +20,7 @@ const std::string kRoot = ARCFIRE_SOURCE_DIR;
 
 Menu make_menu() {
   Bindings b = load_bindings(kRoot + "/assets/settings/bindings.json");
-  return Menu(load_mission_catalog(kRoot + "/levels", kRoot), UserFiles{}, b, b, {"low", "medium", "high", "reference"});
+  return Menu(load_mission_catalog(kRoot + "/levels", kRoot), UserFiles{}, b, b, kRoot + "/assets/settings/quality.json");
 }
 
 // Feeds the script's inputs; returns every request they made.
@@ -146,7 +146,7 @@ TEST(Menu, SettingsChangeSaveAndRemapWithConflicts) {
   run(m, "down down accept");
   ASSERT_EQ(m.screen(), MenuScreen::Settings);
   EXPECT_TRUE(has_line(m.page(), "> Quality preset: < medium >"));
-  std::vector<MenuRequest> r = run(m, "right down right right right down accept");
+  std::vector<MenuRequest> r = run(m, "right down down right right right down accept");
   EXPECT_EQ(m.settings().quality, "high");
   EXPECT_DOUBLE_EQ(m.settings().mouse_sensitivity, 0.15);
   EXPECT_TRUE(m.settings().invert_y);
@@ -177,12 +177,33 @@ TEST(Menu, SettingsChangeSaveAndRemapWithConflicts) {
   EXPECT_EQ(bound_key(m.bindings(), "fire_primary"), key_code("MOUSE_LEFT"));
 }
 
+// Single render settings over the preset: stepped, marked as the player's, saved, reset.
+TEST(Menu, RenderSettingsOverThePreset) {
+  Menu m = make_menu();
+  run(m, "down down accept down accept");  // Settings, Render settings
+  ASSERT_EQ(m.screen(), MenuScreen::Render);
+  EXPECT_TRUE(has_line(m.page(), "> render.soft_edges"));
+  EXPECT_FALSE(m.page().message.empty()) << "the selected setting's doc line";
+  std::vector<MenuRequest> r = run(m, "right");
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_EQ(r[0].kind, MenuRequest::Kind::SaveSettings);
+  ASSERT_EQ(m.settings().render.size(), 1u);
+  const std::string chosen = m.settings().render.at("render.soft_edges");
+  EXPECT_TRUE(has_line(m.page(), "< " + chosen + " >  *"));
+  EXPECT_EQ(user_quality_settings(m.settings(), kRoot + "/assets/settings/quality.json").choice("render.soft_edges"),
+            chosen);
+  run(m, "up up accept");  // Back to the preset's values
+  EXPECT_TRUE(m.settings().render.empty());
+  run(m, "back");
+  EXPECT_TRUE(has_line(m.page(), "> Render settings (0 of yours over the preset)"));
+}
+
 TEST(Menu, ResettingProgressAsksTwice) {
   Menu m = make_menu();
   m.show_results(kRoot + "/levels/duel.json", Difficulty::Normal, {true, 40, 1});
   run(m, "down down accept");  // Results: Retry, Next, Menu
   run(m, "down down accept");  // Settings
-  for (int i = 0; i < 8; ++i) run(m, "down");
+  for (int i = 0; i < 9; ++i) run(m, "down");
   EXPECT_TRUE(has_line(m.page(), "> Reset progress"));
   EXPECT_TRUE(run(m, "accept").empty());
   EXPECT_TRUE(has_line(m.page(), "> Reset progress: press again to confirm"));

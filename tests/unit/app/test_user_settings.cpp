@@ -46,6 +46,8 @@ TEST(UserSettings, RoundTripThroughTheFolder) {
   s.vsync = false;
   s.keys["fire_primary"] = "SPACE";
   s.keys["strafe_up"] = "NONE";
+  s.render["render.sorting"] = "cluster";
+  s.render["render.scale"] = "0.75";
   Progress p;
   record_result(p, progress_key("levels/duel.json", "hard"), {true, 42.5, 1, 300, 80, 0.5, 0.25});
   save_settings(dir.str(), s);
@@ -129,6 +131,12 @@ TEST(UserSettings, ValuesAreValidated) {
       << error(R"({ "format": 1, "fov": 300 })");
   EXPECT_NE(error(R"({ "format": 1, "keys": { "fire": "A" } })").find("unknown action 'fire'"), std::string::npos);
   EXPECT_NE(error(R"({ "format": 1, "keys": { "fire_primary": "BANANA" } })").find("must be a key name"),
+            std::string::npos);
+  EXPECT_NE(error(R"({ "format": 1, "render": { "render.sorting": "random" } })")
+                .find("s.json:1:46: setting 'render.sorting' must be one of"),
+            std::string::npos)
+      << error(R"({ "format": 1, "render": { "render.sorting": "random" } })");
+  EXPECT_NE(error(R"({ "format": 1, "render": { "render.fancy": true } })").find("unknown setting 'render.fancy'"),
             std::string::npos);
   EXPECT_NE(error(R"({ "format": 2 })").find("s.json:1:13: 'format' must be 1 (the format this version writes), got 2"), std::string::npos);
 }
