@@ -115,6 +115,7 @@ class WindowSession {
   std::vector<HudBox> menu_boxes_;  // the menu items as last drawn, for the mouse
   bool mission_running_ = false;    // a level launched from the menu: its end shows the results
   double results_at_ = -1;          // window time at which the decided mission's results open
+  bool recording_started_ = false;  // --record from the menu: only the first launched mission
   std::unique_ptr<Window> window_;
   std::unique_ptr<Renderer> renderer_;
   std::vector<ModelId> models_;  // the renderer's id of each of the level's model slots
@@ -165,7 +166,8 @@ void WindowSession::setup() {
   window_ = open_window(wd);
   renderer_ = make_renderer();
   models_ = load_scene_resources(*renderer_, game_->world(), game_options_.root_dir);
-  if (!options_.record_path.empty())
+  // From the menu, the recording starts with the first mission launched (launch()).
+  if (!options_.record_path.empty() && !menu_)
     recorder_ = std::make_unique<SessionRecorder>(options_.record_path, level_, *game_);
   clock_.emplace(int(std::lround(1.0 / game_->tick_seconds())));
   hud_.show_fps = options_.show_fps;
@@ -355,6 +357,11 @@ void WindowSession::launch(const std::string& level, Difficulty difficulty) {
   clock_.emplace(int(std::lround(1.0 / game_->tick_seconds())));
   mission_running_ = level != attract_level();
   results_at_ = -1;
+  if (!options_.record_path.empty() && mission_running_ && !recording_started_) {
+    // As --level would name it: relative to the working folder when the level is inside it.
+    recorder_ = std::make_unique<SessionRecorder>(options_.record_path, std::filesystem::proximate(level_).string(), *game_);
+    recording_started_ = true;
+  }
 }
 
 void WindowSession::back_to_main_menu() {
