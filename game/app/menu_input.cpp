@@ -32,7 +32,8 @@ void add_gamepad(const InputState& before, const InputState& now, std::vector<Ui
     if (edge(name)) out.push_back(UiInput::press(key));
   auto stick = [&](const char* axis, float sign) {
     const int a = gamepad_axis_code(axis);
-    return a >= 0 && now.gamepad_axes[size_t(a)] * sign > kStickPush && before.gamepad_axes[size_t(a)] * sign <= kStickPush;
+    if (a < 0) return false;
+    return now.gamepad_axes[size_t(a)] * sign > kStickPush && before.gamepad_axes[size_t(a)] * sign <= kStickPush;
   };
   if (stick("LEFT_Y", -1.0f)) out.push_back(UiInput::press(UiKey::Up));
   if (stick("LEFT_Y", 1.0f)) out.push_back(UiInput::press(UiKey::Down));

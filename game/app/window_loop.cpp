@@ -359,7 +359,8 @@ void WindowSession::launch(const std::string& level, Difficulty difficulty) {
   results_at_ = -1;
   if (!options_.record_path.empty() && mission_running_ && !recording_started_) {
     // As --level would name it: relative to the working folder when the level is inside it.
-    recorder_ = std::make_unique<SessionRecorder>(options_.record_path, std::filesystem::proximate(level_).string(), *game_);
+    const std::string named = std::filesystem::proximate(level_).string();
+    recorder_ = std::make_unique<SessionRecorder>(options_.record_path, named, *game_);
     recording_started_ = true;
   }
 }

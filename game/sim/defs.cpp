@@ -265,7 +265,9 @@ void parse_mission(JsonObject& r, LevelDef& L) {
   d.order = static_cast<int>(order.integer(1, 1000));
   d.order_where = order.where();
   const std::string c = o.choice("category", "mission", {"mission", "effects", "demo"});
-  d.category = c == "mission" ? MissionCategory::Mission : c == "effects" ? MissionCategory::Effects : MissionCategory::Demo;
+  d.category = c == "mission"   ? MissionCategory::Mission
+               : c == "effects" ? MissionCategory::Effects
+                                : MissionCategory::Demo;
   o.finish();
 }
 

@@ -20,7 +20,8 @@ const std::string kRoot = ARCFIRE_SOURCE_DIR;
 
 Menu make_menu() {
   Bindings b = load_bindings(kRoot + "/assets/settings/bindings.json");
-  return Menu(load_mission_catalog(kRoot + "/levels", kRoot), UserFiles{}, b, b, kRoot + "/assets/settings/quality.json");
+  return Menu(load_mission_catalog(kRoot + "/levels", kRoot), UserFiles{}, b, b,
+              kRoot + "/assets/settings/quality.json");
 }
 
 // Feeds the script's inputs; returns every request they made.
@@ -77,7 +78,8 @@ TEST(Menu, ADuplicateOrderIsAnErrorAtItsPosition) {
 // Long: one scripted session through every screen, checked screen by screen.
 TEST(Menu, ScriptedSessionReachesTheResultsAndGoesOn) {
   Menu m = make_menu();
-  EXPECT_EQ(describe_page(m.page()), "title: ARCFIRE\nsubtitle: space combat with lightning\n> Play\n  Effects\n  Settings\n  Quit\n");
+  EXPECT_EQ(describe_page(m.page()),
+            "title: ARCFIRE\nsubtitle: space combat with lightning\n> Play\n  Effects\n  Settings\n  Quit\n");
   run(m, "accept");
   ASSERT_EQ(m.screen(), MenuScreen::Missions);
   EXPECT_TRUE(has_line(m.page(), "> 1. Duel"));

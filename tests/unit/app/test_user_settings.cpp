@@ -138,7 +138,8 @@ TEST(UserSettings, ValuesAreValidated) {
       << error(R"({ "format": 1, "render": { "render.sorting": "random" } })");
   EXPECT_NE(error(R"({ "format": 1, "render": { "render.fancy": true } })").find("unknown setting 'render.fancy'"),
             std::string::npos);
-  EXPECT_NE(error(R"({ "format": 2 })").find("s.json:1:13: 'format' must be 1 (the format this version writes), got 2"), std::string::npos);
+  EXPECT_NE(error(R"({ "format": 2 })").find("s.json:1:13: 'format' must be 1 (the format this version writes), got 2"),
+            std::string::npos);
 }
 
 TEST(UserProgress, AVictoryBeatsADefeatAndQuickerBeatsSlower) {

@@ -130,7 +130,8 @@ TEST(ReplayParse, CounterExpectations) {
   Script s = parse_script(kHead +
                               "60 expect kills Player 1\n60 expect kills Player 0..2\n"
                               "60 expect damage_dealt Player 100..400\n60 expect damage_taken \"Red Leader\" 0..50\n"
-                              "60 expect accuracy Player beam 0.2..0.9\n60 expect accuracy Player missile 0..1\n60 end\n",
+                              "60 expect accuracy Player beam 0.2..0.9\n"
+                              "60 expect accuracy Player missile 0..1\n60 end\n",
                           "c.replay");
   ASSERT_EQ(s.expectations.size(), 6u);
   EXPECT_EQ(s.expectations[0].kind, Expectation::Kind::Kills);
