@@ -407,7 +407,13 @@ void WindowSession::navigate_pause_menu(std::vector<Command>& menu_commands) {
       game_options_.difficulty = Difficulty((int(game_options_.difficulty) + 1) % 3);
       game_options_.difficulty_override = true;
       break;
-    case PauseMenu::Item::MainMenu: back_to_main_menu(); break;
+    case PauseMenu::Item::MainMenu:
+      try {
+        back_to_main_menu();
+      } catch (const InputError& e) {
+        reload_error_ = e.what();  // the demo's level no longer loads: say so, keep playing
+      }
+      break;
     case PauseMenu::Item::Quit: window_->request_close(); break;
   }
 }
