@@ -24,13 +24,28 @@ int* slot(Bindings& b, const std::string& id) {
       {"slower", {&Bindings::throttle, false}},   {"faster", {&Bindings::throttle, true}},
       {"strafe_left", {&Bindings::strafe_x, false}}, {"strafe_right", {&Bindings::strafe_x, true}},
       {"strafe_down", {&Bindings::strafe_y, false}}, {"strafe_up", {&Bindings::strafe_y, true}}};
+  static const std::map<std::string, int Bindings::*> pad = {
+      {"pad_fire_primary", &Bindings::pad_fire_primary},   {"pad_fire_secondary", &Bindings::pad_fire_secondary},
+      {"pad_afterburner", &Bindings::pad_afterburner},     {"pad_target_next", &Bindings::pad_target_next},
+      {"pad_switch_weapon", &Bindings::pad_switch_weapon}, {"pad_camera", &Bindings::pad_camera},
+      {"pad_pause", &Bindings::pad_pause}};
   if (auto s = single.find(id); s != single.end()) return &(b.*(s->second));
+  if (auto p = pad.find(id); p != pad.end()) return &(b.*(p->second));
   if (auto a = axes.find(id); a != axes.end()) {
     KeyAxis& axis = b.*(a->second.first);
     return a->second.second ? &axis.positive : &axis.negative;
   }
   return nullptr;
 }
+
+bool is_pad_action(const std::string& id) { return id.rfind("pad_", 0) == 0; }
+bool is_pad_code(int code) { return code >= kPadButtonBase; }
+
+// The binding field's value in the remap code space (gamepad fields hold bare button numbers).
+int code_in(const std::string& id, int field) {
+  return field < 0 ? -1 : is_pad_action(id) ? field + kPadButtonBase : field;
+}
+int field_of(int code) { return code < 0 ? -1 : is_pad_code(code) ? code - kPadButtonBase : code; }
 
 std::string label_of(const std::string& id) {
   for (const RemapAction& a : remap_actions())
@@ -54,37 +69,58 @@ const std::vector<RemapAction>& remap_actions() {
       {"strafe_up", "Strafe up"},           {"target_next", "Target next"},
       {"target_nearest", "Target nearest"}, {"target_next_hostile", "Target next hostile"},
       {"camera", "Camera"},                 {"pause", "Pause menu"},
-      {"screenshot", "Screenshot"},         {"fps", "FPS counter"}};
+      {"screenshot", "Screenshot"},         {"fps", "FPS counter"},
+      {"pad_fire_primary", "Gamepad: fire beam"},       {"pad_fire_secondary", "Gamepad: fire missile"},
+      {"pad_afterburner", "Gamepad: afterburner"},      {"pad_target_next", "Gamepad: target next"},
+      {"pad_switch_weapon", "Gamepad: switch weapon"},  {"pad_camera", "Gamepad: camera"},
+      {"pad_pause", "Gamepad: pause menu"}};
   return actions;
 }
 
 int bound_key(const Bindings& b, const std::string& action) {
   int* s = slot(const_cast<Bindings&>(b), action);
   if (!s) throw InputError("unknown action '" + action + "'");
-  return *s;
+  return code_in(action, *s);
 }
 
 std::string key_label(int code) {
   if (code < 0) return "NONE";
+  if (is_pad_code(code)) {
+    const std::string pad = gamepad_button_name(code - kPadButtonBase);
+    return pad.empty() ? "PAD_" + std::to_string(code - kPadButtonBase) : "PAD_" + pad;
+  }
   const std::string name = key_name(code);
   return name.empty() ? "KEY " + std::to_string(code) : name;
+}
+
+int code_of_label(const std::string& name) {
+  if (name.rfind("PAD_", 0) == 0) {
+    const int b = gamepad_button_code(name.substr(4));
+    return b < 0 ? -1 : kPadButtonBase + b;
+  }
+  return key_code(name);
 }
 
 RemapOutcome remap_key(Bindings& b, const std::string& action, int key) {
   int* mine = slot(b, action);
   if (!mine) throw InputError("unknown action '" + action + "'");
   RemapOutcome out;
-  if (*mine == key) return out;
-  const int previous = *mine;
+  if (key >= 0 && is_pad_action(action) != is_pad_code(key)) {
+    const char* takes = is_pad_action(action) ? " takes a gamepad button, not " : " takes a key or mouse button, not ";
+    out.message = label_of(action) + takes + key_label(key);
+    return out;
+  }
+  if (code_in(action, *mine) == key) return out;
+  const int previous = code_in(action, *mine);
   for (const RemapAction& other : remap_actions()) {
     int* theirs = slot(b, other.id);
-    if (other.id == action || *theirs != key || key < 0) continue;
-    *theirs = previous;
+    if (other.id == action || code_in(other.id, *theirs) != key || key < 0) continue;
+    *theirs = field_of(previous);
     out.conflict = other.id;
     out.message = key_label(key) + " was on " + other.label + ": " + other.label +
                   (previous < 0 ? " now has no key" : " now uses " + key_label(previous));
   }
-  *mine = key;
+  *mine = field_of(key);
   out.changed = true;
   if (out.message.empty()) out.message = label_of(action) + ": " + key_label(key);
   return out;
@@ -99,7 +135,7 @@ std::map<std::string, std::string> key_overrides(const Bindings& now, const Bind
 
 void apply_key_overrides(const std::map<std::string, std::string>& keys, Bindings& b) {
   for (const auto& [id, name] : keys)
-    if (int* s = slot(b, id)) *s = name == "NONE" ? -1 : key_code(name);
+    if (int* s = slot(b, id)) *s = field_of(name == "NONE" ? -1 : code_of_label(name));
 }
 
 }  // namespace arc

@@ -93,8 +93,8 @@ std::vector<UiInput> parse_ui_inputs(const std::string& text, const std::string&
       if ((w != "click" && w != "hover" && w != "bind") || !(words >> arg))
         fail("unknown UI input '" + w + "'; allowed: up, down, left, right, accept, back, click N, hover N, bind KEY");
       if (w == "bind") {
-        if (key_code(arg) < 0) fail("'" + arg + "' is not a key name (A, SPACE, MOUSE_LEFT, ...)");
-        out.push_back(UiInput::bind(key_code(arg)));
+        if (code_of_label(arg) < 0) fail("'" + arg + "' is not a key name (A, SPACE, MOUSE_LEFT, PAD_A, ...)");
+        out.push_back(UiInput::bind(code_of_label(arg)));
       } else {
         const int item = std::atoi(arg.c_str());
         out.push_back(w == "click" ? UiInput::click(item) : UiInput::hover(item));

@@ -3,6 +3,7 @@
 #include "game/app/menu_input.h"
 
 #include "game/app/input_bindings.h"
+#include "game/app/key_remap.h"
 #include "game/render/menu_layout.h"
 
 namespace arc {
@@ -17,6 +18,9 @@ void add_binds(const InputState& before, const InputState& now, std::vector<UiIn
     if (code != escape && presses_between(before, now, code) > 0) out.push_back(UiInput::bind(code));
   for (int b = 0; b < int(now.mouse_buttons.size()); ++b)
     if (presses_between(before, now, kMouseButtonBase + b) > 0) out.push_back(UiInput::bind(kMouseButtonBase + b));
+  for (int b = 0; now.gamepad_present && b < int(now.gamepad_buttons.size()); ++b)
+    if (now.gamepad_buttons[size_t(b)] && !before.gamepad_buttons[size_t(b)])
+      out.push_back(UiInput::bind(kPadButtonBase + b));
 }
 
 void add_gamepad(const InputState& before, const InputState& now, std::vector<UiInput>& out) {

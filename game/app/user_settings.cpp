@@ -47,7 +47,12 @@ void parse_keys(JsonObject& r, UserSettings& s) {
     if (!known) k.fail_key(id, "unknown action '" + id + "'; allowed: " + join_allowed(ids));
     JsonValue v = k.require(id);
     const std::string name = v.string();
-    if (name != "NONE" && key_code(name) < 0)
+    const int code = name == "NONE" ? -1 : code_of_label(name);
+    const bool pad_action = id.rfind("pad_", 0) == 0;
+    if (pad_action && name != "NONE" && code < kPadButtonBase)
+      v.fail("'" + id + "' must be a gamepad button (PAD_A, PAD_X, PAD_LEFT_BUMPER, ...) or NONE, got \"" + name +
+             "\"");
+    if (!pad_action && name != "NONE" && (code < 0 || code >= kPadButtonBase))
       v.fail("'" + id + "' must be a key name (A, SPACE, LEFT_SHIFT, MOUSE_LEFT, ...) or NONE, got \"" + name + "\"");
     s.keys[id] = name;
   }

@@ -273,6 +273,12 @@ TEST(MenuInput, KeysGamepadAndMouseBecomeUiInputs) {
   ASSERT_EQ(in.size(), 1u);
   EXPECT_EQ(in[0].kind, UiInput::Kind::Bind);
   EXPECT_EQ(in[0].code, key_code("SPACE"));
+  InputState pad = before;
+  pad.gamepad_present = true;
+  pad.gamepad_buttons[size_t(gamepad_button_code("X"))] = true;
+  in = menu_inputs(before, pad, true, boxes);
+  ASSERT_EQ(in.size(), 1u);
+  EXPECT_EQ(in[0].code, kPadButtonBase + gamepad_button_code("X"));
   InputState esc = before;
   esc.keys[size_t(key_code("ESCAPE"))] = true;
   in = menu_inputs(before, esc, true, boxes);

@@ -178,6 +178,34 @@ TEST(KeyRemap, AConflictSwapsTheKeys) {
   EXPECT_THROW(bound_key(b, "warp"), InputError);
 }
 
+// Gamepad actions take gamepad buttons (and swap among themselves); keys are refused for them.
+TEST(KeyRemap, GamepadButtonsRemapAmongTheGamepadActions) {
+  Bindings b = load_bindings(kRoot + "/assets/settings/bindings.json");
+  const Bindings defaults = b;
+  const int pad_a = code_of_label("PAD_A");
+  ASSERT_EQ(pad_a, kPadButtonBase + gamepad_button_code("A"));
+  ASSERT_EQ(bound_key(b, "pad_afterburner"), pad_a);
+  RemapOutcome r = remap_key(b, "pad_fire_primary", pad_a);
+  EXPECT_EQ(r.conflict, "pad_afterburner");
+  EXPECT_EQ(r.message, "PAD_A was on Gamepad: afterburner: Gamepad: afterburner now uses PAD_RIGHT_BUMPER");
+  EXPECT_EQ(b.pad_fire_primary, gamepad_button_code("A"));
+  EXPECT_EQ(b.pad_afterburner, gamepad_button_code("RIGHT_BUMPER"));
+  RemapOutcome refused = remap_key(b, "pad_camera", key_code("C"));
+  EXPECT_FALSE(refused.changed);
+  EXPECT_EQ(refused.message, "Gamepad: camera takes a gamepad button, not C");
+  EXPECT_FALSE(remap_key(b, "camera", pad_a).changed);
+  const auto overrides = key_overrides(b, defaults);
+  EXPECT_EQ(overrides.at("pad_fire_primary"), "PAD_A");
+  Bindings again = defaults;
+  apply_key_overrides(overrides, again);
+  EXPECT_EQ(again.pad_afterburner, b.pad_afterburner);
+  // settings.json checks which kind of name each action takes.
+  EXPECT_THROW(parse_settings(R"({ "format": 1, "keys": { "pad_camera": "SPACE" } })", "s.json", {}), InputError);
+  EXPECT_THROW(parse_settings(R"({ "format": 1, "keys": { "camera": "PAD_A" } })", "s.json", {}), InputError);
+  EXPECT_EQ(parse_settings(R"({ "format": 1, "keys": { "pad_camera": "PAD_Y" } })", "s.json", {}).keys.at("pad_camera"),
+            "PAD_Y");
+}
+
 TEST(KeyRemap, UserSettingsApplyOverTheBindingsFile) {
   Bindings b = load_bindings(kRoot + "/assets/settings/bindings.json");
   UserSettings s;
