@@ -417,7 +417,7 @@ void JsonObject::finish() const {
 
 // ---- files -----------------------------------------------------------------------------------
 
-void write_file_atomic(const std::string& path, const std::string& text) {
+void write_file_atomic(const std::string& path, const std::string& text, const std::function<void()>& before_rename) {
   std::string tmp = path + ".tmp." + std::to_string(::getpid());
   {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
@@ -427,6 +427,14 @@ void write_file_atomic(const std::string& path, const std::string& text) {
     if (!out) {
       std::remove(tmp.c_str());
       throw InputError(path + ": write failed (disk full?)");
+    }
+  }
+  if (before_rename) {
+    try {
+      before_rename();
+    } catch (...) {
+      std::remove(tmp.c_str());
+      throw;
     }
   }
   if (std::rename(tmp.c_str(), path.c_str()) != 0) {

@@ -15,6 +15,7 @@
 //   root.finish();
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <initializer_list>
 #include <map>
 #include <memory>
@@ -123,8 +124,10 @@ std::string json_pointer_escape(const std::string& key);
 std::string join_allowed(const std::vector<std::string>& names);
 
 // Writes text to path atomically: a temporary file in the same folder, then rename.
-// Throws InputError naming the path when the folder is not writable.
-void write_file_atomic(const std::string& path, const std::string& text);
+// Throws InputError naming the path when the folder is not writable. `before_rename` runs
+// between the two (tests throw from it to stand for a crash there: the old file stays whole).
+void write_file_atomic(const std::string& path, const std::string& text,
+                       const std::function<void()>& before_rename = {});
 std::string read_text_file(const std::string& path);  // throws InputError "path: cannot read file"
 
 }  // namespace arc

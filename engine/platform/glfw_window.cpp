@@ -74,6 +74,11 @@ class GlfwWindow final : public Window {
     in.mouse_dy = y - last_y_;
     last_x_ = x;
     last_y_ = y;
+    int ww = 0, wh = 0, fw = 0, fh = 0;
+    glfwGetWindowSize(window_, &ww, &wh);
+    glfwGetFramebufferSize(window_, &fw, &fh);
+    in.mouse_x = ww > 0 ? x * fw / ww : x;
+    in.mouse_y = wh > 0 ? y * fh / wh : y;
     in.gamepad_present = false;
     in.gamepad_axes.fill(0.0f);
     in.gamepad_buttons.fill(false);
@@ -97,6 +102,8 @@ class GlfwWindow final : public Window {
     glfwGetFramebufferSize(window_, &w, &h);
     return h;
   }
+  bool fullscreen() const override { return glfwGetWindowMonitor(window_) != nullptr; }
+  void set_vsync(bool on) override { glfwSwapInterval(on ? 1 : 0); }
   void toggle_fullscreen() override {
     if (glfwGetWindowMonitor(window_)) {
       glfwSetWindowMonitor(window_, nullptr, windowed_x_, windowed_y_, windowed_w_, windowed_h_, GLFW_DONT_CARE);

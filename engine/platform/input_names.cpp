@@ -60,7 +60,16 @@ int find(const Table& t, std::string_view name) {
   return -1;
 }
 
+std::string name_of(const Table& t, int code) {
+  for (const auto& [n, c] : t)
+    if (c == code) return n;
+  return "";
+}
+
 }  // namespace
+
+std::string key_name(int code) { return name_of(keys(), code); }
+std::string gamepad_button_name(int code) { return name_of(kPadButtons, code); }
 
 int key_code(std::string_view name) { return find(keys(), name); }
 int gamepad_axis_code(std::string_view name) { return find(kPadAxes, name); }

@@ -29,6 +29,9 @@ constexpr int kMouseButtonBase = 1000;
 int key_code(std::string_view name);
 int gamepad_axis_code(std::string_view name);
 int gamepad_button_code(std::string_view name);
+// The names back from codes (the first name of a code); "" for a code without one.
+std::string key_name(int code);
+std::string gamepad_button_name(int code);
 
 // Raw device state sampled once per rendered frame; the game quantises it into InputFrames.
 struct InputState {
@@ -38,6 +41,7 @@ struct InputState {
   std::array<uint8_t, 512> key_presses{};
   std::array<uint8_t, 8> mouse_presses{};
   double mouse_dx = 0, mouse_dy = 0;    // pixels moved since last poll
+  double mouse_x = 0, mouse_y = 0;      // the cursor in framebuffer pixels from the top left (menus)
   bool gamepad_present = false;
   std::array<float, 6> gamepad_axes{};  // GLFW_GAMEPAD_AXIS_*
   std::array<bool, 15> gamepad_buttons{};
@@ -61,6 +65,8 @@ class Window {
   virtual int framebuffer_width() const = 0;
   virtual int framebuffer_height() const = 0;
   virtual void toggle_fullscreen() = 0;
+  virtual bool fullscreen() const = 0;
+  virtual void set_vsync(bool on) = 0;  // the swap interval: 1 with, 0 without
   virtual void set_mouse_captured(bool captured) = 0;
   virtual double time_seconds() const = 0;  // wall clock for the frame loop only, never simulation
 };

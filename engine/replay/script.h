@@ -131,14 +131,18 @@ struct Range {
 };
 
 struct Expectation {
-  enum class Kind : uint8_t { Alive, Destroyed, Hull, Shield, Position, Distance, Particles, Winner };
+  enum class Kind : uint8_t {
+    Alive, Destroyed, Hull, Shield, Position, Distance, Particles, Winner,
+    Kills, DamageDealt, DamageTaken, Accuracy  // the ship's combat counters
+  };
   uint64_t tick = 0;
   Kind kind = Kind::Alive;
   std::string ship;   // Alive .. Distance
   std::string other;  // Distance: the second ship
   int ship_col = 0, other_col = 0;  // where the names are written, for "no such ship" errors
   std::string team;   // Winner: a team name, or "none" while undecided
-  Range range;        // Hull, Shield, Distance, Particles
+  std::string weapon; // Accuracy: "beam" or "missile"
+  Range range;        // Hull, Shield, Distance, Particles, Kills, DamageDealt, DamageTaken, Accuracy
   std::array<Range, 3> box{};  // Position: x, y, z
   SourceLine src;
   bool operator==(const Expectation&) const = default;

@@ -252,10 +252,45 @@ void take_ship(LineParser& lp, std::string& name, int& col, const std::string& w
   col = t.col;
 }
 
+// A range, or one number N meaning N..N (`expect kills Player 1`).
+Range range_or_number(LineParser& lp, const std::string& what) {
+  if (lp.next < lp.tokens.size() && lp.tokens[lp.next].text.find("..") != std::string::npos) return range(lp, what);
+  const Token& t = lp.take(what + " (N or MIN..MAX)");
+  double v = 0;
+  if (!parse_double(t.text, v)) lp.fail(t, what + " must be a number N or a range MIN..MAX, got '" + t.text + "'");
+  return Range{v, v};
+}
+
+// The combat counters: kills, damage_dealt, damage_taken, accuracy (of one weapon).
+bool parse_counter_expect(LineParser& lp, const std::string& w, Expectation& e) {
+  if (w == "kills") {
+    e.kind = Expectation::Kind::Kills;
+    take_ship(lp, e.ship, e.ship_col, "ship name");
+    e.range = range_or_number(lp, "kill count");
+  } else if (w == "damage_dealt" || w == "damage_taken") {
+    e.kind = w == "damage_dealt" ? Expectation::Kind::DamageDealt : Expectation::Kind::DamageTaken;
+    take_ship(lp, e.ship, e.ship_col, "ship name");
+    e.range = range(lp, w);
+  } else if (w == "accuracy") {
+    e.kind = Expectation::Kind::Accuracy;
+    take_ship(lp, e.ship, e.ship_col, "ship name");
+    const Token& weapon = lp.take("weapon (beam or missile)");
+    if (weapon.text != "beam" && weapon.text != "missile")
+      lp.fail(weapon, "unknown weapon '" + weapon.text + "'; allowed: beam or missile");
+    e.weapon = weapon.text;
+    e.range = range(lp, "accuracy");
+  } else {
+    return false;
+  }
+  return true;
+}
+
 Expectation parse_expect(LineParser& lp, uint64_t tick) {
   Expectation e;
   e.tick = tick;
-  const Token& what = lp.take("what to expect (alive, destroyed, hull, shield, position, distance, particles, winner)");
+  const Token& what = lp.take(
+      "what to expect (alive, destroyed, hull, shield, position, distance, particles, winner, kills, damage_dealt, "
+      "damage_taken, accuracy)");
   const std::string& w = what.text;
   if (w == "alive" || w == "destroyed") {
     e.kind = w == "alive" ? Expectation::Kind::Alive : Expectation::Kind::Destroyed;
@@ -281,9 +316,10 @@ Expectation parse_expect(LineParser& lp, uint64_t tick) {
   } else if (w == "winner") {
     e.kind = Expectation::Kind::Winner;
     e.team = lp.take("team name (or none)").text;
-  } else {
+  } else if (!parse_counter_expect(lp, w, e)) {
     lp.fail(what, "unknown expectation '" + w +
-                      "'; allowed: alive, destroyed, hull, shield, position, distance, particles or winner");
+                      "'; allowed: alive, destroyed, hull, shield, position, distance, particles, winner, kills, "
+                      "damage_dealt, damage_taken or accuracy");
   }
   lp.done("expect " + w);
   return e;

@@ -107,6 +107,13 @@ std::string expectation_line(const Expectation& e) {
       return s + "distance " + quoted(e.ship) + " " + quoted(e.other) + " " + range_text(e.range) + "\n";
     case Expectation::Kind::Particles: return s + "particles " + range_text(e.range) + "\n";
     case Expectation::Kind::Winner: return s + "winner " + quoted(e.team) + "\n";
+    case Expectation::Kind::Kills: return s + "kills " + quoted(e.ship) + " " + range_text(e.range) + "\n";
+    case Expectation::Kind::DamageDealt:
+      return s + "damage_dealt " + quoted(e.ship) + " " + range_text(e.range) + "\n";
+    case Expectation::Kind::DamageTaken:
+      return s + "damage_taken " + quoted(e.ship) + " " + range_text(e.range) + "\n";
+    case Expectation::Kind::Accuracy:
+      return s + "accuracy " + quoted(e.ship) + " " + e.weapon + " " + range_text(e.range) + "\n";
   }
   return s + "\n";
 }

@@ -73,6 +73,9 @@ void define_options(CLI::App& app, AppOptions& o, CommandLineText& t) {
   app.add_option("--summary", o.summary_path, "headless: write the final world state as JSON to this file");
   app.add_option("--record", o.record_path, "record the live session to a replay script");
   app.add_option("--replay", o.replay_path, "headless: replay a script and check its expectations")->check(CLI::ExistingFile);
+  app.add_option("--menu-script", o.menu_script,
+                 "headless: drive the menu with a script of UI inputs, a snapshot of each screen in --out")
+      ->check(CLI::ExistingFile);
   app.add_flag("--update-golden", o.update_golden, "replay: write snapshots as the new golden images");
   app.add_option("--serialization-test", o.serialization_test,
                  "save and reload the world every N ticks beside the original; fail at the first differing hash")
@@ -146,6 +149,9 @@ std::optional<int> parse_command_line(int argc, char** argv, AppOptions& o) {
   }
   o.vsync = !text.no_vsync;
   o.level_given = app.get_option("--level")->count() > 0;
+  o.bindings_given = app.get_option("--bindings")->count() > 0;
+  o.quality_given = !text.quality.empty();
+  o.setting_overrides = text.sets;
   if (o.demo && !o.level_given) o.level = "levels/attract.json";
   o.game.root_dir = ARCFIRE_SOURCE_DIR;
   try {

@@ -23,9 +23,13 @@ struct AppOptions {
   std::string summary_path;
   std::string record_path;
   std::string replay_path;
+  std::string menu_script;  // --menu-script: the menu headless, driven by scripted UI inputs
   bool update_golden = false;
   int64_t serialization_test = 0;  // N > 0: save/load every N ticks
   std::string bindings_path = "assets/settings/bindings.json";
+  bool bindings_given = false;  // --bindings: that file wins over the user's settings
+  bool quality_given = false;   // --quality: that preset wins over the user's settings
+  std::vector<std::string> setting_overrides;  // the --set texts, applied again over the user's preset
   bool fullscreen = false;
   bool vsync = true;
   bool show_fps = false;

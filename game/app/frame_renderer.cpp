@@ -16,6 +16,8 @@ struct FrameRenderer::Impl {
   std::unique_ptr<Renderer> renderer;
   std::vector<ModelId> models;  // the renderer's id of each of the level's model slots
   RenderView view;
+  Settings settings;
+  std::vector<std::string> model_paths;  // the level the models were loaded for
 };
 
 FrameRenderer::FrameRenderer(const FrameRendererDesc& desc, const Settings& settings, const Game& game)
@@ -31,7 +33,31 @@ FrameRenderer::FrameRenderer(const FrameRendererDesc& desc, const Settings& sett
     throw PlatformError(std::string("renderer: ") + e.what());
   }
   impl_->renderer->apply_settings(settings);
+  impl_->settings = settings;
   impl_->models = load_scene_resources(*impl_->renderer, game.world(), desc.root_dir);
+  impl_->model_paths = game.world().model_paths;
+}
+
+void FrameRenderer::load_level(const Game& game) {
+  if (game.world().model_paths == impl_->model_paths) return;
+  RendererDesc rd;
+  rd.shader_dir = impl_->desc.root_dir + "/shaders";
+  rd.offscreen = true;
+  impl_->renderer = std::make_unique<Renderer>(rd);
+  impl_->renderer->apply_settings(impl_->settings);
+  impl_->models = load_scene_resources(*impl_->renderer, game.world(), impl_->desc.root_dir);
+  impl_->model_paths = game.world().model_paths;
+}
+
+Image FrameRenderer::render(const Game& game, double alpha, const HudState& hud, const HudLayer& overlay) {
+  const int w = impl_->desc.width, h = impl_->desc.height;
+  build_render_view(game.world(), impl_->models, alpha, CameraSettings{}, hud, w, h, impl_->view);
+  HudLayer& layer = impl_->view.hud;
+  layer.quads.insert(layer.quads.end(), overlay.quads.begin(), overlay.quads.end());
+  layer.lines.insert(layer.lines.end(), overlay.lines.begin(), overlay.lines.end());
+  layer.texts.insert(layer.texts.end(), overlay.texts.begin(), overlay.texts.end());
+  impl_->renderer->render(impl_->view, w, h);
+  return impl_->renderer->read_pixels();
 }
 
 FrameRenderer::~FrameRenderer() = default;

@@ -10,6 +10,7 @@
 
 #include "assets/image.h"
 #include "core/settings.h"
+#include "game/render/hud_layout.h"
 
 namespace arc {
 
@@ -27,6 +28,10 @@ class FrameRenderer {
   FrameRenderer(const FrameRendererDesc& desc, const Settings& settings, const Game& game);
   ~FrameRenderer();
   Image render(const Game& game, double alpha = 1.0);
+  // With the HUD of `hud`, and `overlay` (a menu) drawn over it.
+  Image render(const Game& game, double alpha, const HudState& hud, const HudLayer& overlay);
+  // Loads the models of another level's game (a new renderer when they differ).
+  void load_level(const Game& game);
   std::string context_description() const;
 
  private:

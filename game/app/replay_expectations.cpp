@@ -77,6 +77,23 @@ std::optional<std::string> expectation_failure(const Expectation& e, const World
       if (e.range.contains(n)) return std::nullopt;
       return "particle count is " + number(n);
     }
+    case Expectation::Kind::Kills:
+      if (e.range.contains(a->kills)) return std::nullopt;
+      return "kills of " + e.ship + " are " + std::to_string(a->kills);
+    case Expectation::Kind::DamageDealt:
+      if (e.range.contains(a->stats.damage_dealt)) return std::nullopt;
+      return "damage dealt by " + e.ship + " is " + number(a->stats.damage_dealt);
+    case Expectation::Kind::DamageTaken:
+      if (e.range.contains(a->stats.damage_taken)) return std::nullopt;
+      return "damage taken by " + e.ship + " is " + number(a->stats.damage_taken);
+    case Expectation::Kind::Accuracy: {
+      const CombatStats& st = a->stats;
+      const bool beam = e.weapon == "beam";
+      const int64_t hits = beam ? st.beam_hit_ticks : st.missiles_hit, shots = beam ? st.beam_ticks : st.missiles_fired;
+      if (e.range.contains(accuracy(hits, shots))) return std::nullopt;
+      return e.weapon + " accuracy of " + e.ship + " is " + number(accuracy(hits, shots)) + " (" +
+             std::to_string(hits) + " hits of " + std::to_string(shots) + " shots)";
+    }
     case Expectation::Kind::Winner: {
       const std::string winner = w.outcome == Outcome::Undecided ? "none" : w.team_name(w.winner);
       if (winner == e.team) return std::nullopt;

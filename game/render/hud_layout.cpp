@@ -268,7 +268,7 @@ void layout_hud(const World& w, const CameraView& cam, const HudState& state, do
     }
   }
   hud_reticle(state.reticle, width, height, h);
-  hud_outcome(w, width, height, h);
+  if (state.show_outcome) hud_outcome(w, width, height, h);
   hud_pause_menu(w, state, width, height, h);
   hud_messages(state, width, height, h);
   scale_hud(h, scale);

@@ -36,6 +36,7 @@ struct HudReticle {
 
 struct HudState {
   bool show_hud = true;     // flight HUD, objective and labels (benchmark frames turn it off)
+  bool show_outcome = true; // victory or defeat, large (off under the results screen)
   bool show_fps = false;    // FPS counter (F3)
   double fps = 0;           // shown when show_fps
   std::string frame_stats;  // shown under it when show_fps: the renderer's particle figures

@@ -106,6 +106,8 @@ void resolve_beams(World& w) {
   for (Ship& s : w.ships) {
     if (!s.alive || !s.beam_firing) continue;
     s.beam_target = {};
+    s.stats.beam_ticks++;
+    bool on_hostile = false;
     const size_t n = s.beam_channels.size();
     for (size_t m = 0; m < n; ++m) {
       ClusterHandle ch = s.beam_channels[m];
@@ -116,7 +118,10 @@ void resolve_beams(World& w) {
       if (!hit.ship) continue;
       Ship& t = w.ship(hit.ship);
       s.beam_target = hit.ship;
-      if (w.hostile(s, t)) apply_damage(w, t, s.cls->beam.damage_per_second * w.dt / double(n), hit.point, s.id);
+      if (w.hostile(s, t)) {
+        on_hostile = true;
+        apply_damage(w, t, s.cls->beam.damage_per_second * w.dt / double(n), hit.point, s.id);
+      }
       if ((w.tick + static_cast<int64_t>(m)) % 4 == 0) {
         SpawnParams p;
         p.position = hit.point;
@@ -126,6 +131,7 @@ void resolve_beams(World& w) {
         spawn_fx(w, hit.on_shield ? w.fx.shield_hit : w.fx.hull_sparks, p);
       }
     }
+    if (on_hostile) s.stats.beam_hit_ticks++;
   }
 }
 

@@ -46,6 +46,9 @@ void apply_damage(World& w, Ship& t, double amount, const glm::dvec3& point, Shi
   if (!t.alive || amount <= 0) return;
   t.last_hit_tick = w.tick;
   if (attacker) t.last_attacker = attacker;
+  const double taken = std::min(amount, std::max(t.shield, 0.0) + std::max(t.hull, 0.0));
+  t.stats.damage_taken += taken;
+  if (attacker && attacker != t.id) w.ship(attacker).stats.damage_dealt += taken;
   double to_shield = std::min(t.shield, amount);
   t.shield -= to_shield;
   t.hull -= amount - to_shield;

@@ -243,6 +243,34 @@ void parse_camera(JsonObject& r, LevelDef& L) {
   }
 }
 
+// "mission": { "title", "briefing", "objective", "order", "category" }.
+void parse_mission(JsonObject& r, LevelDef& L) {
+  auto m = r.get("mission");
+  if (!m) return;
+  JsonObject o = m->object();
+  MissionDef& d = L.mission;
+  d.present = true;
+  auto text = [&](const char* key, size_t longest) {
+    JsonValue v = o.require(key);
+    std::string s = v.string();
+    if (s.empty() || s.size() > longest)
+      v.fail(std::string("'") + key + "' must be a text of 1 to " + std::to_string(longest) + " characters, got " +
+             std::to_string(s.size()));
+    return s;
+  };
+  d.title = text("title", 40);
+  d.briefing = text("briefing", 600);
+  d.objective = text("objective", 120);
+  JsonValue order = o.require("order");
+  d.order = static_cast<int>(order.integer(1, 1000));
+  d.order_where = order.where();
+  const std::string c = o.choice("category", "mission", {"mission", "effects", "demo"});
+  d.category = c == "mission"   ? MissionCategory::Mission
+               : c == "effects" ? MissionCategory::Effects
+                                : MissionCategory::Demo;
+  o.finish();
+}
+
 void check_protected_ship(JsonObject& r, const LevelDef& L) {
   if (L.lose != LoseKind::Protect) return;
   bool found = false;
@@ -271,6 +299,7 @@ LevelDef parse_level_doc(std::shared_ptr<const JsonDoc> doc, const std::string& 
   parse_effects(r, L, fx);
   parse_camera(r, L);
   parse_team_colors(r, L);
+  parse_mission(r, L);
   check_protected_ship(r, L);
   r.finish();
   L.ai = load_ai_difficulties(root_dir);

@@ -128,6 +128,19 @@ struct AiDifficultyDef {
 };
 using AiDifficultyTable = std::array<AiDifficultyDef, 3>;  // easy, normal, hard
 
+// The optional "mission" block: how the menu lists a level and the briefing before it starts.
+// Menu data only: not simulated, not hashed.
+enum class MissionCategory : uint8_t { Mission = 0, Effects = 1, Demo = 2 };
+struct MissionDef {
+  bool present = false;
+  std::string title;      // the menu's name for the level
+  std::string briefing;   // one paragraph shown before launch
+  std::string objective;  // what to do, in a sentence, under the briefing
+  int order = 0;          // position in the mission list (1 = first); unique within its category
+  std::string order_where;  // "path:line:col" of `order`, for the catalog's duplicate-order error
+  MissionCategory category = MissionCategory::Mission;
+};
+
 struct LevelDef {
   std::string path;
   std::string name;
@@ -153,6 +166,7 @@ struct LevelDef {
   // defaults). A team without one keeps the models' own colours. Drawing only: not simulated.
   std::map<std::string, glm::dvec3> team_colors;
   AiDifficultyTable ai;  // the AI pilots at each difficulty
+  MissionDef mission;    // "mission": present only in levels the menu lists
 };
 
 class EffectLibrary;

@@ -149,6 +149,7 @@ std::string Game::summary_json() const {
   j["level"] = w.level.name;
   j["tick"] = w.tick;
   j["seconds"] = double(w.tick) * w.dt;
+  if (w.outcome != Outcome::Undecided) j["decided_seconds"] = double(w.outcome_tick) * w.dt;
   j["outcome"] = outcome_name(w.outcome);
   if (w.outcome != Outcome::Undecided) {
     j["winner"] = w.team_name(w.winner);
@@ -167,6 +168,13 @@ std::string Game::summary_json() const {
     e["hull"] = s.hull;
     e["shield"] = s.shield;
     e["kills"] = s.kills;
+    const CombatStats& st = s.stats;
+    e["damage_dealt"] = st.damage_dealt;
+    e["damage_taken"] = st.damage_taken;
+    e["beam"] = {{"shots", st.beam_ticks}, {"hits", st.beam_hit_ticks},
+                 {"accuracy", accuracy(st.beam_hit_ticks, st.beam_ticks)}};
+    e["missile"] = {{"shots", st.missiles_fired}, {"hits", st.missiles_hit},
+                    {"accuracy", accuracy(st.missiles_hit, st.missiles_fired)}};
     ships.push_back(std::move(e));
   }
   j["ships"] = std::move(ships);

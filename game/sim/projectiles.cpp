@@ -32,6 +32,7 @@ void fire_secondary(World& w, Ship& s) {
   if (!wd.present || s.secondary_cooldown > 0 || s.energy < wd.energy) return;
   s.energy -= wd.energy;
   s.secondary_cooldown = wd.cooldown;
+  s.stats.missiles_fired++;
   const glm::dvec3 hp = wd.hardpoints[s.hardpoint_cycle++ % wd.hardpoints.size()];
   Projectile p;
   p.serial = w.next_projectile_serial++;
@@ -95,7 +96,10 @@ void hit_projectiles(World& w) {
       sp.position = point;
       sp.velocity = t.velocity;
       spawn_fx(w, on_shield ? w.fx.shield_hit : w.fx.hull_sparks, sp);
-      if (w.hostile(w.ship(p.owner), t)) apply_damage(w, t, p.damage, point, p.owner);
+      if (w.hostile(w.ship(p.owner), t)) {
+        w.ship(p.owner).stats.missiles_hit++;
+        apply_damage(w, t, p.damage, point, p.owner);
+      }
       end_projectile(w, p);
       continue;
     }

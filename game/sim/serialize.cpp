@@ -31,7 +31,8 @@ static void write_leaf(snapshot::Writer& out, const std::optional<ParticleWorld>
 namespace {
 
 constexpr uint64_t kMagic = snapshot::magic("ARCSNAP1");
-constexpr uint32_t kVersion = 3;  // 3: typed ids (ships, teams, model slots, particle owners) as their u32 values
+// 3: typed ids (ships, teams, model slots, particle owners) as their u32 values; 4: ship combat stats
+constexpr uint32_t kVersion = 4;
 
 using snapshot::Reader;
 using snapshot::Writer;

@@ -92,6 +92,30 @@ void visit_fields(A& a, V&& v) {
   v("evade_dir", a.evade_dir, fields::saved, state_hash<5>);
 }
 
+// What a ship has done in this game, for the results screen, the summary and replay `expect`
+// lines. Beam accuracy counts ticks: a tick the beam fires is a shot, one where any of its
+// channels stays on a hostile is a hit. Missile shots are every secondary projectile (missiles
+// and plasma bolts); a hit is one that strikes a hostile ship. Damage counts what shields and
+// hulls took, never more than was left of them.
+struct CombatStats {
+  double damage_dealt = 0, damage_taken = 0;
+  int64_t beam_ticks = 0, beam_hit_ticks = 0;
+  int64_t missiles_fired = 0, missiles_hit = 0;
+};
+
+template <fields::MaybeConst<CombatStats> C, class V>
+void visit_fields(C& c, V&& v) {
+  v("damage_dealt", c.damage_dealt, fields::saved, state_hash<0>);
+  v("damage_taken", c.damage_taken, fields::saved, state_hash<1>);
+  v("beam_ticks", c.beam_ticks, fields::saved, state_hash<2>);
+  v("beam_hit_ticks", c.beam_hit_ticks, fields::saved, state_hash<3>);
+  v("missiles_fired", c.missiles_fired, fields::saved, state_hash<4>);
+  v("missiles_hit", c.missiles_hit, fields::saved, state_hash<5>);
+}
+
+// Shots that hit as a share of shots fired; 0 before the first shot.
+inline double accuracy(int64_t hits, int64_t shots) { return shots > 0 ? double(hits) / double(shots) : 0.0; }
+
 struct Ship {
   // Definition
   ShipId id;
@@ -135,6 +159,7 @@ struct Ship {
   int64_t shield_spawn_tick = 0;   // its burst is emitted at the next particle step
   double shown_exhaust_intensity = -1;
   AiState ai_state;
+  CombatStats stats;
 };
 
 // Name, class, team, player, AI kind and model come from the level and never change: unhashed.
@@ -179,6 +204,7 @@ void visit_fields(S& s, V&& v) {
   v("shield_spawn_tick", s.shield_spawn_tick, fields::saved, presentation_hash<7>);
   v("shown_exhaust_intensity", s.shown_exhaust_intensity, fields::saved, presentation_hash<5>);
   v("ai_state", s.ai_state, fields::saved, state_hash<21>);
+  v("stats", s.stats, fields::saved, state_hash<23>);
   v("model", s.model, fields::not_saved, fields::unhashed);  // the class's model
 }
 

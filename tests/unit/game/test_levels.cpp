@@ -263,4 +263,41 @@ TEST(LevelErrors, UnknownEffectIsReportedAtItsPosition) {
 }
 
 }  // namespace
+// The "mission" block: titles and briefings for the menu, validated like every other key.
+std::string with_mission(const std::string& block) {
+  std::string t = kGood;
+  t.replace(t.find("\"objective\""), 0, "\"mission\": " + block + ",\n  ");
+  return t;
+}
+
+TEST(LevelMissions, ShippedLevelsHaveTitlesAndTheGalleryIsAnEffect) {
+  for (const char* name : {"duel", "skirmish", "arena"}) {
+    LevelDef L = load_level_def(kRoot + "/levels/" + name + ".json", kRoot);
+    EXPECT_TRUE(L.mission.present) << name;
+    EXPECT_EQ(L.mission.category, MissionCategory::Mission) << name;
+    EXPECT_FALSE(L.mission.briefing.empty()) << name;
+  }
+  EXPECT_EQ(load_level_def(kRoot + "/levels/gallery.json", kRoot).mission.category, MissionCategory::Effects);
+  EXPECT_EQ(load_level_def(kRoot + "/levels/attract.json", kRoot).mission.category, MissionCategory::Demo);
+}
+
+TEST(LevelMissions, BlockIsReadAndErrorsArePositioned) {
+  const std::string ok = R"({ "title": "T", "briefing": "B.", "objective": "O.", "order": 4 })";
+  EXPECT_EQ(error_of(with_mission(ok)), "");
+  LevelDef L = parse_level_def(with_mission(ok), "m.json", kRoot);
+  EXPECT_EQ(L.mission.title, "T");
+  EXPECT_EQ(L.mission.order, 4);
+  EXPECT_EQ(L.mission.order_where, "m.json:3:76");
+  std::string e = error_of(with_mission(R"({ "title": "", "briefing": "B.", "objective": "O.", "order": 1 })"));
+  EXPECT_EQ(e.rfind("bad.json:3:25: 'title' must be a text of 1 to 40 characters, got 0", 0), 0u) << e;
+  e = error_of(with_mission(R"({ "title": "T", "briefing": "B.", "objective": "O.", "order": 0 })"));
+  EXPECT_EQ(e.rfind("bad.json:3:76: 'order' must be in [1, 1000], got 0", 0), 0u) << e;
+  e = error_of(with_mission(R"({ "title": "T", "briefing": "B.", "order": 1 })"));
+  EXPECT_NE(e.find("missing required key 'objective'"), std::string::npos) << e;
+  e = error_of(with_mission(R"({ "title": "T", "briefing": "B.", "objective": "O.", "order": 1, "category": "x" })"));
+  EXPECT_NE(e.find("'category' must be one of \"mission\", \"effects\" or \"demo\""), std::string::npos) << e;
+  e = error_of(with_mission(R"({ "title": "T", "briefing": "B.", "objective": "O.", "order": 1, "brief": "x" })"));
+  EXPECT_NE(e.find("unknown key 'brief'"), std::string::npos) << e;
+}
+
 }  // namespace arc

@@ -24,6 +24,7 @@ using test::repo;
 // it, and with that says how the snapshot and the hash treat it.
 TEST(StateFields, EveryMemberIsNamedByItsVisitor) {
   AiState ai;
+  CombatStats stats;
   Ship ship;
   Projectile projectile;
   ExplosionEvent explosion;
@@ -31,6 +32,7 @@ TEST(StateFields, EveryMemberIsNamedByItsVisitor) {
   CameraRig camera;
   World world;
   EXPECT_EQ(visited_field_count(ai), aggregate_field_count<AiState>());
+  EXPECT_EQ(visited_field_count(stats), aggregate_field_count<CombatStats>());
   EXPECT_EQ(visited_field_count(ship), aggregate_field_count<Ship>());
   EXPECT_EQ(visited_field_count(projectile), aggregate_field_count<Projectile>());
   EXPECT_EQ(visited_field_count(explosion), aggregate_field_count<ExplosionEvent>());
@@ -57,6 +59,7 @@ TEST(StateFields, AMemberLeftOutOfTheVisitorIsCounted) {
 
 TEST(StateFields, HashWordsOfEachPassAreNumberedWithoutGapsOrClashes) {
   AiState ai;
+  CombatStats stats;
   Ship ship;
   Projectile projectile;
   ExplosionEvent explosion;
@@ -65,13 +68,14 @@ TEST(StateFields, HashWordsOfEachPassAreNumberedWithoutGapsOrClashes) {
   for (int pass : {kStateHashPass, kPresentationHashPass}) {
     SCOPED_TRACE("pass " + std::to_string(pass));
     EXPECT_EQ(check_hash_words(hash_slots(ai, pass)), "");
+    EXPECT_EQ(check_hash_words(hash_slots(stats, pass)), "");
     EXPECT_EQ(check_hash_words(hash_slots(ship, pass)), "");
     EXPECT_EQ(check_hash_words(hash_slots(projectile, pass)), "");
     EXPECT_EQ(check_hash_words(hash_slots(explosion, pass)), "");
     EXPECT_EQ(check_hash_words(hash_slots(camera, pass)), "");
     EXPECT_EQ(check_hash_words(hash_slots(world, pass)), "");
   }
-  EXPECT_EQ(hash_slots(ship, kStateHashPass).size(), 23u);  // word 22: its particle owner
+  EXPECT_EQ(hash_slots(ship, kStateHashPass).size(), 24u);  // word 22: its particle owner, 23: its combat stats
   EXPECT_EQ(hash_slots(ship, kPresentationHashPass).size(), 11u);
 }
 

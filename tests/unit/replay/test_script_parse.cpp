@@ -125,6 +125,27 @@ TEST(ReplayParse, SettingsToleranceAndSnapshotsLike) {
   EXPECT_EQ(s.header.snapshots_like, "gallery-near_1");
 }
 
+// The combat counters' expectations: kills as one number or a range, damage, accuracy per weapon.
+TEST(ReplayParse, CounterExpectations) {
+  Script s = parse_script(kHead +
+                              "60 expect kills Player 1\n60 expect kills Player 0..2\n"
+                              "60 expect damage_dealt Player 100..400\n60 expect damage_taken \"Red Leader\" 0..50\n"
+                              "60 expect accuracy Player beam 0.2..0.9\n"
+                              "60 expect accuracy Player missile 0..1\n60 end\n",
+                          "c.replay");
+  ASSERT_EQ(s.expectations.size(), 6u);
+  EXPECT_EQ(s.expectations[0].kind, Expectation::Kind::Kills);
+  EXPECT_EQ(s.expectations[0].range, (Range{1, 1}));
+  EXPECT_EQ(s.expectations[1].range, (Range{0, 2}));
+  EXPECT_EQ(s.expectations[2].kind, Expectation::Kind::DamageDealt);
+  EXPECT_EQ(s.expectations[3].kind, Expectation::Kind::DamageTaken);
+  EXPECT_EQ(s.expectations[3].ship, "Red Leader");
+  EXPECT_EQ(s.expectations[4].kind, Expectation::Kind::Accuracy);
+  EXPECT_EQ(s.expectations[4].weapon, "beam");
+  EXPECT_EQ(s.expectations[4].range, (Range{0.2, 0.9}));
+  EXPECT_EQ(s.expectations[5].weapon, "missile");
+}
+
 TEST(ReplayParse, MissingEndRunsToTheLastStampedTick) {
   Script s = parse_script(kHead + "10 press afterburner\n250 hash 1\n", "cut.replay");
   EXPECT_FALSE(s.end_tick.has_value());
@@ -187,6 +208,12 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"extra", kHead + "0 press afterburner now\n", "s.replay:3:21: unexpected 'now' after press afterburner"},
         BadCase{"bad_expect", kHead + "0 expect happy Player\n", "s.replay:3:10: unknown expectation 'happy'"},
         BadCase{"bad_range", kHead + "0 expect hull Player 50\n", "s.replay:3:22: hull must be a range MIN..MAX"},
+        BadCase{"bad_kills", kHead + "0 expect kills Player many\n",
+                "s.replay:3:23: kill count must be a number N or a range MIN..MAX, got 'many'"},
+        BadCase{"bad_weapon", kHead + "0 expect accuracy Player laser 0..1\n",
+                "s.replay:3:26: unknown weapon 'laser'; allowed: beam or missile"},
+        BadCase{"no_accuracy_range", kHead + "0 expect accuracy Player beam\n",
+                "s.replay:3:30: missing accuracy range MIN..MAX"},
         BadCase{"empty_range", kHead + "0 expect hull Player 50..10\n", "s.replay:3:22: hull range is empty"},
         BadCase{"range_words", kHead + "0 expect hull Player a..b\n", "s.replay:3:22: hull range bounds must be finite"},
         BadCase{"box_short", kHead + "0 expect position P 0..1 0..1\n", "s.replay:3:30: missing z range MIN..MAX"},

@@ -1,0 +1,113 @@
+// The menu headless: scripted UI inputs, the attract demo behind, a PNG and a text per screen.
+#include "game/app/menu_snapshots.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "core/error.h"
+#include "core/json.h"
+#include "core/settings.h"
+#include "game/app/frame_renderer.h"
+#include "game/app/menu.h"
+#include "game/sim/game.h"
+#include "game/sim/world.h"
+
+namespace arc {
+namespace {
+
+constexpr int kTicksPerInput = 20;  // the demo behind moves on a third of a second per input
+
+struct MenuRun {
+  const AppOptions& o;
+  std::string out;
+  Menu menu;
+  std::unique_ptr<Game> game;
+  std::unique_ptr<FrameRenderer> renderer;
+  int shot = 0;
+
+  void advance(int ticks) {
+    for (int i = 0; i < ticks; ++i) game->step(InputFrame{});
+  }
+
+  void load(const std::string& level, Difficulty d) {
+    GameOptions g = o.game;
+    g.difficulty = d;
+    g.difficulty_override = true;
+    game = std::make_unique<Game>(Game::load_level(level, g));
+    if (renderer) renderer->load_level(*game);
+  }
+
+  void snapshot() {
+    const MenuPage page = menu.page();
+    char name[64];
+    std::snprintf(name, sizeof name, "%02d_%s", shot++, menu_screen_name(menu.screen()));
+    const std::string text = describe_page(page);
+    std::printf("== %s\n%s", name, text.c_str());
+    if (out.empty()) return;
+    const std::string base = (std::filesystem::path(out) / name).string();
+    write_file_atomic(base + ".txt", text);
+    if (!renderer) return;
+    HudState hud;
+    hud.show_hud = hud.show_outcome = !menu.open();
+    HudLayer overlay;
+    if (menu.open()) layout_menu(page, o.width, o.height, overlay, nullptr);
+    save_image(base + ".png", renderer->render(*game, 1.0, hud, overlay));
+  }
+
+  // A launched level is fought without input until decided; the results open over it.
+  void fight(const MenuRequest& launch) {
+    load(launch.level, launch.difficulty);
+    const int64_t limit = o.ticks > 0 ? o.ticks : 7200;
+    for (int64_t t = 0; t < limit && game->world().outcome == Outcome::Undecided; ++t) game->step(InputFrame{});
+    advance(60);
+    snapshot();
+    carry_out(menu.show_results(launch.level, launch.difficulty, mission_result(game->world())));
+  }
+
+  void carry_out(const std::vector<MenuRequest>& requests) {
+    for (const MenuRequest& r : requests) {
+      if (r.kind == MenuRequest::Kind::Launch) fight(r);
+      if (r.kind == MenuRequest::Kind::SaveSettings) save_settings(user_config_dir(), menu.settings());
+      if (r.kind == MenuRequest::Kind::SaveProgress) save_progress(user_config_dir(), menu.progress());
+    }
+  }
+};
+
+Menu make_menu(const AppOptions& o) {
+  const std::string root = o.game.root_dir;
+  UserFiles files = load_user_files(user_config_dir(), root + "/assets/settings/quality.json");
+  Bindings b = load_bindings(root + "/assets/settings/bindings.json");
+  Bindings flown = b;
+  apply_user_settings(files.settings, flown);
+  return Menu(load_mission_catalog(root + "/levels", root), files, flown, b, root + "/assets/settings/quality.json");
+}
+
+}  // namespace
+
+int run_menu_script(const AppOptions& o) {
+  const std::vector<UiInput> inputs = parse_ui_inputs(read_text_file(o.menu_script), o.menu_script);
+  MenuRun run{o, o.out_dir, make_menu(o), nullptr, nullptr};
+  const std::string attract = o.game.root_dir + "/levels/attract.json";
+  run.load(attract, o.game.difficulty);
+  run.advance(180);
+  if (!run.out.empty()) {
+    std::filesystem::create_directories(run.out);
+    FrameRendererDesc desc;
+    desc.width = o.width;
+    desc.height = o.height;
+    desc.root_dir = o.game.root_dir;
+    if (!o.no_render) run.renderer = std::make_unique<FrameRenderer>(desc, o.settings, *run.game);
+  }
+  run.snapshot();
+  for (const UiInput& in : inputs) {
+    const MenuScreen before = run.menu.screen();
+    run.carry_out(run.menu.handle(in));
+    if (run.menu.screen() == MenuScreen::Main && before == MenuScreen::Results) run.load(attract, Difficulty::Normal);
+    run.advance(kTicksPerInput);
+    run.snapshot();
+  }
+  return kExitOk;
+}
+
+}  // namespace arc

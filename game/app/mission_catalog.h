@@ -1,0 +1,29 @@
+// game/app/mission_catalog.h — the levels the menu lists, from their "mission" blocks.
+//
+// load_mission_catalog() reads every *.json of a folder as a level (validated like
+// --level), keeps those with a "mission" block and sorts them by category, then order. Two
+// levels of one category with the same order are an InputError at the second one's `order`.
+//
+//   std::vector<MissionInfo> all = load_mission_catalog("levels", ".");
+//   const MissionInfo* next = next_mission(all, "levels/duel.json");   // skirmish
+#pragma once
+#include <string>
+#include <vector>
+
+#include "game/sim/defs.h"
+
+namespace arc {
+
+struct MissionInfo {
+  std::string path;  // the level file, as --level takes it
+  std::string title, briefing, objective;
+  int order = 0;
+  MissionCategory category = MissionCategory::Mission;
+};
+
+std::vector<MissionInfo> load_mission_catalog(const std::string& levels_dir, const std::string& root_dir);
+// The mission after `path` in order (category Mission only), or nullptr after the last.
+const MissionInfo* next_mission(const std::vector<MissionInfo>& all, const std::string& path);
+const MissionInfo* find_mission(const std::vector<MissionInfo>& all, const std::string& path);
+
+}  // namespace arc

@@ -1,0 +1,91 @@
+// game/app/user_settings.h — the player's own settings and progress, kept between runs.
+//
+// Two JSON files in user_config_dir() ($XDG_CONFIG_HOME/arcfire, default ~/.config/arcfire):
+//   settings.json  quality preset and single render settings over it, mouse sensitivity and Y
+//                  inversion, gamepad dead zone, field of view, fullscreen, vsync, and the
+//                  keys the player remapped (action → key)
+//   progress.json  the best result per mission and difficulty
+// Both are written atomically (core/json.h write_file_atomic). A file that does not parse or
+// validate is never lost silently: load_user_files() copies it to NAME.bak, writes the defaults
+// in its place and returns the message the menu shows on screen. No GL: the menu's tests drive
+// it in a temporary folder.
+//
+//   UserFiles files = load_user_files(user_config_dir(), "assets/settings/quality.json");
+//   if (!files.message.empty()) show(files.message);
+//   files.settings.mouse_sensitivity = 0.2;
+//   save_settings(files.dir, files.settings);
+#pragma once
+#include <map>
+#include <string>
+#include <vector>
+
+#include "core/settings.h"
+#include "game/app/input_bindings.h"
+
+namespace arc {
+
+struct UserSettings {
+  std::string quality = "medium";   // a preset of assets/settings/quality.json
+  double mouse_sensitivity = 0.12;  // degrees per pixel (relative mouse mode)
+  bool invert_y = false;            // mouse and gamepad
+  double pad_deadzone = 0.12;
+  double fov = 60.0;                // degrees, vertical, for chase and cockpit cameras
+  bool fullscreen = false;
+  bool vsync = true;
+  std::map<std::string, std::string> keys;  // remap action id (key_remap.h) → key name
+  std::map<std::string, std::string> render;  // setting key (core/settings.h) → value, over the preset
+  bool operator==(const UserSettings&) const = default;
+};
+
+// One mission's best: a victory beats any defeat; between victories the quicker, between
+// defeats the one that dealt more damage.
+struct MissionResult {
+  bool victory = false;
+  double seconds = 0;
+  int kills = 0;
+  double damage_dealt = 0, damage_taken = 0;
+  double beam_accuracy = 0, missile_accuracy = 0;
+  bool operator==(const MissionResult&) const = default;
+};
+bool better_result(const MissionResult& a, const MissionResult& than);
+
+struct Progress {
+  std::map<std::string, MissionResult> best;  // progress_key(level, difficulty) → best result
+  bool operator==(const Progress&) const = default;
+};
+// "duel/normal": the level file's stem and the difficulty.
+std::string progress_key(const std::string& level_path, const std::string& difficulty);
+// Keeps `r` as the best of its mission when it beats the one kept (or there is none); true if kept.
+bool record_result(Progress& p, const std::string& key, const MissionResult& r);
+
+struct UserFiles {
+  std::string dir;
+  UserSettings settings;
+  Progress progress;
+  std::string message;  // why a file was replaced by defaults (and where its copy is); "" if none
+};
+
+// $XDG_CONFIG_HOME/arcfire, else $HOME/.config/arcfire (else ./.arcfire-config).
+std::string user_config_dir();
+// Reads both files; a missing file gives defaults, a bad one is kept as .bak and replaced.
+// `quality_file` lists the allowed quality presets.
+UserFiles load_user_files(const std::string& dir, const std::string& quality_file);
+// Positioned InputError for a bad file (load_user_files catches it).
+UserSettings parse_settings(const std::string& text, const std::string& path,
+                            const std::vector<std::string>& quality_presets);
+Progress parse_progress(const std::string& text, const std::string& path);
+std::string settings_json(const UserSettings& s);
+std::string progress_json(const Progress& p);
+// Atomic writes into `dir` (made if missing); InputError when it cannot be written.
+void save_settings(const std::string& dir, const UserSettings& s);
+void save_progress(const std::string& dir, const Progress& p);
+
+// The render and simulation settings the user chose: the defaults, their quality preset from
+// `quality_file`, then their own values of single settings. InputError for a bad preset or value.
+Settings user_quality_settings(const UserSettings& s, const std::string& quality_file);
+
+// The bindings a session flies with: the bindings file, then the user's settings over it,
+// unless the file was named with --bindings (it overrides the user's settings then).
+void apply_user_settings(const UserSettings& s, Bindings& b);
+
+}  // namespace arc

@@ -1,0 +1,299 @@
+// The menu (game/app/menu.h) driven headless by scripted UI inputs: main menu → mission select
+// → briefing with a difficulty → launch → the fight → results → next mission; settings and key
+// remapping; mouse hovering and clicking on the laid-out items. Each screen is checked as text
+// (describe_page), the snapshot of what it shows.
+#include <filesystem>
+#include <gtest/gtest.h>
+
+#include "game/app/key_remap.h"
+#include "game/app/menu.h"
+#include "game/app/menu_input.h"
+#include "game/render/menu_layout.h"
+#include "game/sim/game.h"
+#include "game/sim/world.h"
+#include "platform/platform.h"
+
+namespace arc {
+namespace {
+
+const std::string kRoot = ARCFIRE_SOURCE_DIR;
+
+Menu make_menu() {
+  Bindings b = load_bindings(kRoot + "/assets/settings/bindings.json");
+  return Menu(load_mission_catalog(kRoot + "/levels", kRoot), UserFiles{}, b, b,
+              kRoot + "/assets/settings/quality.json");
+}
+
+// Feeds the script's inputs; returns every request they made.
+std::vector<MenuRequest> run(Menu& m, const std::string& script) {
+  std::vector<MenuRequest> all;
+  for (const UiInput& in : parse_ui_inputs(script, "script")) {
+    std::vector<MenuRequest> r = m.handle(in);
+    all.insert(all.end(), r.begin(), r.end());
+  }
+  return all;
+}
+
+bool has_line(const MenuPage& p, const std::string& text) {
+  return describe_page(p).find(text) != std::string::npos;
+}
+
+// The fight a Launch request starts, run headless without input until decided (at most 2 min).
+MissionResult fight(const MenuRequest& launch) {
+  GameOptions o;
+  o.root_dir = kRoot;
+  o.difficulty = launch.difficulty;
+  o.difficulty_override = true;
+  Game g = Game::load_level(launch.level, o);
+  for (int i = 0; i < 7200 && g.world().outcome == Outcome::Undecided; ++i) g.step(InputFrame{});
+  return mission_result(g.world());
+}
+
+TEST(Menu, CatalogListsMissionsInOrderAndTheGalleryUnderEffects) {
+  const auto all = load_mission_catalog(kRoot + "/levels", kRoot);
+  std::vector<std::string> titles;
+  for (const MissionInfo& m : all) titles.push_back(m.title);
+  EXPECT_EQ(titles, (std::vector<std::string>{"Duel", "Skirmish", "Arena", "Effect gallery", "Attract demo"}));
+  EXPECT_EQ(all[3].category, MissionCategory::Effects);
+  ASSERT_NE(next_mission(all, all[0].path), nullptr);
+  EXPECT_EQ(next_mission(all, all[0].path)->title, "Skirmish");
+  EXPECT_EQ(next_mission(all, all[2].path), nullptr);
+}
+
+TEST(Menu, ADuplicateOrderIsAnErrorAtItsPosition) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("arcfire_catalog_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  fs::copy_file(kRoot + "/levels/duel.json", dir / "a.json", fs::copy_options::overwrite_existing);
+  fs::copy_file(kRoot + "/levels/duel.json", dir / "b.json", fs::copy_options::overwrite_existing);
+  try {
+    load_mission_catalog(dir.string(), kRoot);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("b.json:12:14: 'order' 1 is already taken by"), std::string::npos) << e.what();
+  }
+  fs::remove_all(dir);
+}
+
+// Long: one scripted session through every screen, checked screen by screen.
+TEST(Menu, ScriptedSessionReachesTheResultsAndGoesOn) {
+  Menu m = make_menu();
+  EXPECT_EQ(describe_page(m.page()),
+            "title: ARCFIRE\nsubtitle: space combat with lightning\n> Play\n  Effects\n  Settings\n  Quit\n");
+  run(m, "accept");
+  ASSERT_EQ(m.screen(), MenuScreen::Missions);
+  EXPECT_TRUE(has_line(m.page(), "> 1. Duel"));
+  EXPECT_TRUE(has_line(m.page(), "  3. Arena"));
+  EXPECT_TRUE(has_line(m.page(), "best: no result yet"));
+  EXPECT_TRUE(has_line(m.page(), "  Difficulty: < normal >"));
+  run(m, "down accept");  // Skirmish's briefing
+  ASSERT_EQ(m.screen(), MenuScreen::Briefing);
+  EXPECT_EQ(m.page().title, "Skirmish");
+  EXPECT_NE(m.page().paragraph.find("wingman"), std::string::npos);
+  EXPECT_TRUE(has_line(m.page(), "subtitle: Objective: With your wingman, destroy all four hostiles."));
+  run(m, "right");  // hard
+  EXPECT_TRUE(has_line(m.page(), "line: Difficulty: hard"));
+  run(m, "back left accept");  // back in the list, easy there, the briefing again
+  EXPECT_EQ(m.page().title, "Skirmish");
+  EXPECT_EQ(m.difficulty(), Difficulty::Normal);
+  std::vector<MenuRequest> launch = run(m, "left accept");  // easy, Launch
+  ASSERT_EQ(launch.size(), 1u);
+  EXPECT_EQ(launch[0].kind, MenuRequest::Kind::Launch);
+  EXPECT_EQ(launch[0].level, kRoot + "/levels/skirmish.json");
+  EXPECT_EQ(launch[0].difficulty, Difficulty::Easy);
+  EXPECT_FALSE(m.open());
+
+  const MissionResult r = fight(launch[0]);
+  std::vector<MenuRequest> saved = m.show_results(launch[0].level, launch[0].difficulty, r);
+  ASSERT_EQ(saved.size(), 1u);
+  EXPECT_EQ(saved[0].kind, MenuRequest::Kind::SaveProgress);
+  ASSERT_EQ(m.screen(), MenuScreen::Results);
+  const MenuPage res = m.page();
+  EXPECT_EQ(res.title, r.victory ? "VICTORY" : "DEFEAT");
+  EXPECT_EQ(res.subtitle, "Skirmish (easy)");
+  EXPECT_TRUE(has_line(res, "line: Kills             " + std::to_string(r.kills)));
+  EXPECT_TRUE(has_line(res, "line: New best!"));
+  EXPECT_EQ(res.items, (std::vector<std::string>{"Retry", "Next mission: Arena", "Menu"}));
+  EXPECT_EQ(m.progress().best.count("skirmish/easy"), 1u);
+
+  std::vector<MenuRequest> next = run(m, "down accept");
+  ASSERT_EQ(next.size(), 1u);
+  EXPECT_EQ(next[0].level, kRoot + "/levels/arena.json");
+  EXPECT_EQ(next[0].difficulty, Difficulty::Easy);
+  // A worse result later keeps the best, and Menu leads back to the main menu.
+  MissionResult worse = r;
+  worse.victory = false;
+  worse.damage_dealt = -1;
+  EXPECT_TRUE(m.show_results(launch[0].level, Difficulty::Easy, worse).empty());
+  EXPECT_TRUE(has_line(m.page(), "line: Best so far: "));
+  run(m, "up accept");
+  EXPECT_EQ(m.screen(), MenuScreen::Main);
+  run(m, "accept");
+  EXPECT_TRUE(has_line(m.page(), "2. Skirmish"));
+  EXPECT_FALSE(has_line(m.page(), "2. Skirmish              best: no result yet"));
+}
+
+TEST(Menu, EffectsListTheGalleryAndLaunchIt) {
+  Menu m = make_menu();
+  run(m, "down accept");
+  ASSERT_EQ(m.screen(), MenuScreen::Effects);
+  EXPECT_EQ(m.page().items, (std::vector<std::string>{"Effect gallery", "Back"}));
+  std::vector<MenuRequest> r = run(m, "accept");
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_EQ(r[0].level, kRoot + "/levels/gallery.json");
+}
+
+TEST(Menu, SettingsChangeSaveAndRemapWithConflicts) {
+  Menu m = make_menu();
+  run(m, "down down accept");
+  ASSERT_EQ(m.screen(), MenuScreen::Settings);
+  EXPECT_TRUE(has_line(m.page(), "> Quality preset: < medium >"));
+  std::vector<MenuRequest> r = run(m, "right down down right right right down accept");
+  EXPECT_EQ(m.settings().quality, "high");
+  EXPECT_DOUBLE_EQ(m.settings().mouse_sensitivity, 0.15);
+  EXPECT_TRUE(m.settings().invert_y);
+  int saves = 0;
+  for (const MenuRequest& q : r) saves += q.kind == MenuRequest::Kind::SaveSettings ? 1 : 0;
+  EXPECT_EQ(saves, 5);
+  run(m, "down down down down down accept");  // Controls
+  ASSERT_EQ(m.screen(), MenuScreen::Controls);
+  EXPECT_TRUE(has_line(m.page(), "> Fire beam               MOUSE_LEFT"));
+  run(m, "accept");
+  EXPECT_TRUE(m.capturing());
+  EXPECT_TRUE(has_line(m.page(), "> Fire beam               press a key..."));
+  run(m, "back");  // Esc cancels
+  EXPECT_FALSE(m.capturing());
+  EXPECT_EQ(m.page().message, "Remap cancelled");
+  r = run(m, "accept bind SPACE");
+  EXPECT_EQ(bound_key(m.bindings(), "fire_primary"), key_code("SPACE"));
+  EXPECT_EQ(bound_key(m.bindings(), "strafe_up"), key_code("MOUSE_LEFT"));
+  EXPECT_EQ(m.page().message, "SPACE was on Strafe up: Strafe up now uses MOUSE_LEFT");
+  EXPECT_EQ(m.settings().keys.size(), 2u);
+  ASSERT_EQ(r.size(), 2u);
+  EXPECT_EQ(r[1].kind, MenuRequest::Kind::ApplyBindings);
+  run(m, "up accept");  // Back (the list wraps)
+  EXPECT_EQ(m.screen(), MenuScreen::Settings);
+  EXPECT_TRUE(has_line(m.page(), "> Controls (remap keys)"));
+  run(m, "accept up up accept");  // Controls, Reset keys
+  EXPECT_TRUE(m.settings().keys.empty());
+  EXPECT_EQ(bound_key(m.bindings(), "fire_primary"), key_code("MOUSE_LEFT"));
+}
+
+// Single render settings over the preset: stepped, marked as the player's, saved, reset.
+TEST(Menu, RenderSettingsOverThePreset) {
+  Menu m = make_menu();
+  run(m, "down down accept down accept");  // Settings, Render settings
+  ASSERT_EQ(m.screen(), MenuScreen::Render);
+  EXPECT_TRUE(has_line(m.page(), "> render.soft_edges"));
+  EXPECT_FALSE(m.page().message.empty()) << "the selected setting's doc line";
+  std::vector<MenuRequest> r = run(m, "right");
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_EQ(r[0].kind, MenuRequest::Kind::SaveSettings);
+  ASSERT_EQ(m.settings().render.size(), 1u);
+  const std::string chosen = m.settings().render.at("render.soft_edges");
+  EXPECT_TRUE(has_line(m.page(), "< " + chosen + " >  *"));
+  EXPECT_EQ(user_quality_settings(m.settings(), kRoot + "/assets/settings/quality.json").choice("render.soft_edges"),
+            chosen);
+  run(m, "up up accept");  // Back to the preset's values
+  EXPECT_TRUE(m.settings().render.empty());
+  run(m, "back");
+  EXPECT_TRUE(has_line(m.page(), "> Render settings (0 of yours over the preset)"));
+}
+
+TEST(Menu, ResettingProgressAsksTwice) {
+  Menu m = make_menu();
+  m.show_results(kRoot + "/levels/duel.json", Difficulty::Normal, {true, 40, 1});
+  run(m, "down down accept");  // Results: Retry, Next, Menu
+  run(m, "down down accept");  // Settings
+  for (int i = 0; i < 9; ++i) run(m, "down");
+  EXPECT_TRUE(has_line(m.page(), "> Reset progress"));
+  EXPECT_TRUE(run(m, "accept").empty());
+  EXPECT_TRUE(has_line(m.page(), "> Reset progress: press again to confirm"));
+  EXPECT_EQ(m.progress().best.size(), 1u);
+  std::vector<MenuRequest> r = run(m, "accept");
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_EQ(r[0].kind, MenuRequest::Kind::SaveProgress);
+  EXPECT_TRUE(m.progress().best.empty());
+}
+
+// The mouse: items are hit-tested against the boxes the layout drew.
+TEST(Menu, MouseHoverAndClickFollowTheLayout) {
+  Menu m = make_menu();
+  HudLayer layer;
+  std::vector<HudBox> boxes;
+  layout_menu(m.page(), 1920, 1080, layer, &boxes);
+  ASSERT_EQ(boxes.size(), 4u);
+  EXPECT_FALSE(layer.texts.empty());
+  const HudBox& settings = boxes[2];
+  const double x = (settings.x0 + settings.x1) / 2, y = (settings.y0 + settings.y1) / 2;
+  EXPECT_EQ(menu_item_at(boxes, x, y), 2);
+  EXPECT_EQ(menu_item_at(boxes, 1, 1), -1);
+  m.handle(UiInput::hover(menu_item_at(boxes, x, y)));
+  EXPECT_TRUE(has_line(m.page(), "> Settings"));
+  m.handle(UiInput::click(2));
+  EXPECT_EQ(m.screen(), MenuScreen::Settings);
+  // The long controls list scrolls: only the rows on screen get boxes.
+  run(m, "up up up accept");
+  ASSERT_EQ(m.screen(), MenuScreen::Controls);
+  layout_menu(m.page(), 1280, 720, layer, &boxes);
+  EXPECT_GT(boxes.size(), 20u);
+  EXPECT_GE(boxes[0].x1, 0);
+  EXPECT_LT(boxes.back().x1, 0);
+}
+
+// Devices to menu inputs: keys by their presses, the gamepad by its edges, the mouse by the boxes.
+TEST(MenuInput, KeysGamepadAndMouseBecomeUiInputs) {
+  InputState before, now;
+  now.keys[size_t(key_code("DOWN"))] = true;
+  now.key_presses[size_t(key_code("DOWN"))] = 2;  // two taps within the frame
+  now.keys[size_t(key_code("ENTER"))] = true;
+  now.gamepad_present = true;
+  now.gamepad_buttons[size_t(gamepad_button_code("B"))] = true;
+  now.gamepad_axes[size_t(gamepad_axis_code("LEFT_Y"))] = -0.9f;  // stick up
+  const std::vector<HudBox> boxes = {{0, 0, 100, 20}, {0, 30, 100, 50}};
+  now.mouse_x = 50;
+  now.mouse_y = 40;
+  now.mouse_buttons[0] = true;
+  std::vector<UiInput> in = menu_inputs(before, now, false, boxes);
+  std::vector<std::string> seen;
+  for (const UiInput& i : in)
+    seen.push_back(i.kind == UiInput::Kind::Key     ? "key " + std::to_string(int(i.key))
+                   : i.kind == UiInput::Kind::Hover ? "hover " + std::to_string(i.item)
+                   : i.kind == UiInput::Kind::Click ? "click " + std::to_string(i.item)
+                                                    : "bind");
+  EXPECT_EQ(seen, (std::vector<std::string>{"key 1", "key 1", "key 4", "key 5", "key 0", "hover 1", "click 1"}));
+  // Held, nothing new: no input. While a remap waits, a key is a bind and Esc cancels.
+  InputState held = now;
+  held.key_presses = {};
+  held.mouse_presses = {};
+  EXPECT_TRUE(menu_inputs(now, held, false, boxes).empty());
+  InputState space = before;
+  space.keys[size_t(key_code("SPACE"))] = true;
+  in = menu_inputs(before, space, true, boxes);
+  ASSERT_EQ(in.size(), 1u);
+  EXPECT_EQ(in[0].kind, UiInput::Kind::Bind);
+  EXPECT_EQ(in[0].code, key_code("SPACE"));
+  InputState pad = before;
+  pad.gamepad_present = true;
+  pad.gamepad_buttons[size_t(gamepad_button_code("X"))] = true;
+  in = menu_inputs(before, pad, true, boxes);
+  ASSERT_EQ(in.size(), 1u);
+  EXPECT_EQ(in[0].code, kPadButtonBase + gamepad_button_code("X"));
+  InputState esc = before;
+  esc.keys[size_t(key_code("ESCAPE"))] = true;
+  in = menu_inputs(before, esc, true, boxes);
+  ASSERT_EQ(in.size(), 1u);
+  EXPECT_EQ(in[0].key, UiKey::Back);
+}
+
+TEST(Menu, BadScriptWordsArePositioned) {
+  try {
+    parse_ui_inputs("accept\ndown jump\n", "s.ui");
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("s.ui:2:6: unknown UI input 'jump'", 0), 0u) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace arc
