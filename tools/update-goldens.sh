@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The one command that rewrites goldens: every replay script under tests/replays/ (image tests
+# The one command that rewrites goldens: every replay script under tests/replays/ and the
+# benchmark's recorded dogfight (tests/bench/combat_view.replay) (image tests
 # are scene_*.replay scripts) replayed with --update-golden, which rewrites its hash lines,
 # golden/<script>/hashes.txt and its snapshot PNGs. Scripts whose snapshots compare with
 # another script's frames (`snapshots_like`) run last, against the fresh frames. Look at the
@@ -12,7 +13,7 @@ shopt -s nullglob
 update() {
   ./build/arcfire --headless --replay "$1" --update-golden --out "build/replay-out/$(basename "$1" .replay)" || true
 }
-for s in tests/replays/*.replay; do
+for s in tests/replays/*.replay tests/bench/*.replay; do
   grep -Eq '^[[:space:]]*snapshots_like[[:space:]]' "$s" || update "$s"
 done
 for s in tests/replays/*.replay; do
