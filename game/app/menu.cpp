@@ -269,6 +269,7 @@ void Menu::fill_results_page(MenuPage& p) const {
   const MissionInfo* m = find_mission(catalog_, chosen_);
   const MissionResult& r = last_;
   p.title = r.victory ? "VICTORY" : "DEFEAT";
+  p.title_tone = r.victory ? 1 : -1;
   p.subtitle = (m ? m->title : chosen_) + " (" + difficulty_name(difficulty_) + ")";
   p.lines = {"Time              " + clock_text(r.seconds),
              "Kills             " + std::to_string(r.kills),
@@ -276,7 +277,9 @@ void Menu::fill_results_page(MenuPage& p) const {
              "Damage taken      " + number_text("%.0f", r.damage_taken),
              "Beam accuracy     " + percent(r.beam_accuracy),
              "Missile accuracy  " + percent(r.missile_accuracy),
-             last_is_best_ ? "New best!" : "Best so far: " + best_text(chosen_)};
+             !last_is_best_ ? "Best so far: " + best_text(chosen_)
+             : r.victory    ? "New best!"
+                            : "Your best try yet (no win so far)"};
 }
 
 MenuPage Menu::page() const {

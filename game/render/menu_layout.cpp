@@ -40,7 +40,7 @@ void layout_menu(const MenuPage& page, int width, int height, HudLayer& out, std
   const double panel_w = std::min(kPanelWidth, w - 40), left = (w - panel_w) * 0.5, inner = panel_w - 48;
   const double top = std::max(20.0, hgt * 0.08);
   double y = top + 24;
-  centred(h, w * 0.5, y, 3.0, kHudWhite, page.title);
+  centred(h, w * 0.5, y, 3.0, page.title_tone > 0 ? kHudGreen : page.title_tone < 0 ? kHudRed : kHudWhite, page.title);
   y += 50;
   if (!page.subtitle.empty()) {
     centred(h, w * 0.5, y, 1.4, kHudYellow, page.subtitle);

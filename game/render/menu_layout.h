@@ -20,6 +20,7 @@ namespace arc {
 
 struct MenuPage {
   std::string title;               // large, at the top
+  int title_tone = 0;              // 1: good news (green, a victory), -1: bad (red, a defeat), 0: plain
   std::string subtitle;            // under it (a mission's objective, a results verdict)
   std::string paragraph;           // wrapped text (a briefing); "" for none
   std::vector<std::string> lines;  // a table of plain lines (results, best so far)

@@ -112,7 +112,8 @@ TEST(Menu, ScriptedSessionReachesTheResultsAndGoesOn) {
   EXPECT_EQ(res.title, r.victory ? "VICTORY" : "DEFEAT");
   EXPECT_EQ(res.subtitle, "Skirmish (easy)");
   EXPECT_TRUE(has_line(res, "line: Kills             " + std::to_string(r.kills)));
-  EXPECT_TRUE(has_line(res, "line: New best!"));
+  EXPECT_TRUE(has_line(res, r.victory ? "line: New best!" : "line: Your best try yet (no win so far)"));
+  EXPECT_EQ(res.title_tone, r.victory ? 1 : -1);
   EXPECT_EQ(res.items, (std::vector<std::string>{"Retry", "Next mission: Arena", "Menu"}));
   EXPECT_EQ(m.progress().best.count("skirmish/easy"), 1u);
 
