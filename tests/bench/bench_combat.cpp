@@ -148,7 +148,10 @@ void sample(CameraRun& c, const RenderView& view, bool compare, bool reverse, st
                  st.particle_prep_ms, st.particle_cpu_ms);
   ++c.samples;
   c.ms.push_back(ms);
-  const double measured = double(std::max(0LL, st.particle_fragments)) / (double(kWidth) * kHeight);
+  // Layers of the scene buffer (render.scale sizes it), the unit the budget's estimate is in.
+  const double scale = c.main->render_settings().scale;
+  const double scene_pixels = std::max(1.0, std::round(kWidth * scale)) * std::max(1.0, std::round(kHeight * scale));
+  const double measured = double(std::max(0LL, st.particle_fragments)) / scene_pixels;
   c.layers.push_back(measured);
   if (measured > 0.01) c.estimate_ratio.push_back(st.overdraw_budgeted_layers / measured);
   c.draws_max = std::max(c.draws_max, st.particle_draw_calls);
