@@ -174,7 +174,8 @@ int ParticlePass::draw(const ParticleBatch& batch, const ShaderPrograms& program
   glDepthMask(GL_FALSE);
   glEnable(GL_BLEND);
   glBlendEquation(GL_FUNC_ADD);
-  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  if (frame.transmittance_alpha) glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);
+  else glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D_ARRAY, sprite_texture(rs.hdr));
   glActiveTexture(GL_TEXTURE1);

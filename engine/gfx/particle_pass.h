@@ -34,7 +34,9 @@ struct ParticleFrame {
   double fov_y_radians = 1.0;
   float near_plane = 0.5f;
   GLuint depth_copy = 0;  // RenderTargets::depth_copy(), sampled by the soft programs
-  int scene_width = 1, scene_height = 1;
+  int scene_width = 1, scene_height = 1;  // of the target drawn into (the depth copy is read in [0, 1])
+  // Drawing into the half-resolution target (particle_target.h): alpha keeps the transmittance.
+  bool transmittance_alpha = false;
 };
 
 class ParticlePass {

@@ -54,6 +54,7 @@ class RenderTargets {
   int scene_height() const { return scene_h_; }
   bool has_scene() const { return scene_fbo_ != 0; }
   GLuint scene_color() const { return scene_color_; }  // for the post passes
+  GLuint scene_fbo() const { return scene_fbo_; }
   GLenum scene_internal_format() const { return scene_internal_; }
   int samples() const { return samples_; }  // of the opaque target as allocated (0: no MSAA)
 

@@ -39,6 +39,7 @@
 #include "gfx/mesh_pass.h"
 #include "gfx/particle_batch.h"
 #include "gfx/particle_pass.h"
+#include "gfx/particle_target.h"
 #include "gfx/post_pass.h"
 #include "gfx/render_targets.h"
 #include "gfx/shader_programs.h"
@@ -79,6 +80,7 @@ struct Renderer::Impl {
   MeshPass meshes;
   ParticleBatch batch;  // CPU only, kept for its buffers
   ParticlePass particles;
+  ParticleTarget half_particles;
   BloomPass bloom;
   PostPass post;
   HudPass hud;
@@ -142,6 +144,7 @@ void Renderer::apply_settings(const Settings& s) {
   r.sky_resolution = int(s.integer("render.sky_resolution"));
   r.overdraw_budget = float(s.number("render.overdraw_budget"));
   r.overdraw_near = float(s.number("render.overdraw_near"));
+  r.half_res_particles = s.choice("render.particle_resolution") == "half";
   r.hdr = s.flag("render.hdr");
   r.exposure = float(s.number("render.exposure"));
   const std::string& bloom = s.choice("render.bloom");
@@ -222,8 +225,10 @@ void Renderer::Impl::draw_particles(const RenderView& v, const ViewProjection& v
   options.overdraw = {rs.overdraw_budget, rs.overdraw_near};
   options.size_clamp = rs.size_clamp;
   options.max_runs = std::max(1, rs.max_particle_draws);
-  options.width = targets.scene_width();
-  options.height = targets.scene_height();
+  // The budget counts layers of the target the particles blend into.
+  const int div = rs.half_res_particles ? 2 : 1;
+  options.width = std::max(1, targets.scene_width() / div);
+  options.height = std::max(1, targets.scene_height() / div);
   batch.prepare(v, vp, meshes.cover_boxes(), options);
   stats.particles_drawn = batch.visible;
   stats.overdraw_estimated_layers = batch.overdraw.estimated_layers;
@@ -246,9 +251,22 @@ void Renderer::Impl::draw_particles(const RenderView& v, const ViewProjection& v
     targets.copy_depth();
     stats.depth_copied = true;
   }
-  const ParticleFrame frame{vp, v.camera.fov_y_radians, float(v.camera.near_plane), targets.depth_copy(),
-                            targets.scene_width(), targets.scene_height()};
-  const int draws = particles.draw(batch, programs, rs, frame, &stats.particle_fragments);
+  ParticleFrame frame{vp, v.camera.fov_y_radians, float(v.camera.near_plane), targets.depth_copy(),
+                      targets.scene_width(), targets.scene_height()};
+  if (rs.half_res_particles) {
+    half_particles.begin(targets.scene_fbo(), targets.scene_width(), targets.scene_height(),
+                         targets.scene_internal_format());
+    frame.scene_width = half_particles.width();
+    frame.scene_height = half_particles.height();
+    frame.transmittance_alpha = true;
+  }
+  stats.particle_target_pixels = double(frame.scene_width) * double(frame.scene_height);
+  int draws = particles.draw(batch, programs, rs, frame, &stats.particle_fragments);
+  if (rs.half_res_particles) {
+    half_particles.composite(programs.particle_composite, targets.scene_fbo(), targets.scene_width(),
+                             targets.scene_height());
+    ++draws;
+  }
   stats.draw_calls += draws;
   stats.particle_draw_calls += draws;
   stats.particle_pass_gpu_ms = timers.end_particle_pass();

@@ -90,7 +90,7 @@ ShaderPrograms::ShaderPrograms(std::string shader_dir) : dir_(std::move(shader_d
 
 ShaderPrograms::~ShaderPrograms() {
   for (Program* p : {&sky, &sky_exact, &stars, &mesh, &hud, &particle_hard, &particle_soft, &particle_contrast,
-                     &particle_square, &bloom_prefilter, &bloom_down_karis, &bloom_down, &bloom_up, &tonemap, &tonemap_bloom, &fxaa, &msaa_resolve})
+                     &particle_square, &bloom_prefilter, &bloom_down_karis, &bloom_down, &bloom_up, &tonemap, &tonemap_bloom, &fxaa, &msaa_resolve, &particle_composite})
     glDeleteProgram(p->id);
 }
 
@@ -129,7 +129,8 @@ void ShaderPrograms::build_all() {
                         {&tonemap, "post.vert", "tonemap.frag", "#define BLOOM 0\n"},
                         {&tonemap_bloom, "post.vert", "tonemap.frag", "#define BLOOM 1\n"},
                         {&fxaa, "post.vert", "fxaa.frag", ""},
-                        {&msaa_resolve, "post.vert", "msaa_resolve.frag", ""}};
+                        {&msaa_resolve, "post.vert", "msaa_resolve.frag", ""},
+                        {&particle_composite, "post.vert", "particle_composite.frag", ""}};
   std::vector<GLuint> built;
   for (auto& s : specs) built.push_back(build_program(dir_, s.vs, s.fs, s.defines, err));
   bool all = std::all_of(built.begin(), built.end(), [](GLuint id) { return id != 0; });

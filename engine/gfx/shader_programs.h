@@ -43,6 +43,7 @@ class ShaderPrograms {
   // and with bloom, FXAA.
   Program bloom_prefilter, bloom_down_karis, bloom_down, bloom_up, tonemap, tonemap_bloom, fxaa;
   Program msaa_resolve;  // the HDR scene's multisampled colour, averaged as if tone-mapped
+  Program particle_composite;  // half-resolution particles over the scene (particle_target.h)
 
  private:
   void build_all();  // throws with the compiler's text; leaves the old programs on failure

@@ -148,10 +148,9 @@ void sample(CameraRun& c, const RenderView& view, bool compare, bool reverse, st
                  st.particle_prep_ms, st.particle_cpu_ms);
   ++c.samples;
   c.ms.push_back(ms);
-  // Layers of the scene buffer (render.scale sizes it), the unit the budget's estimate is in.
-  const double scale = c.main->render_settings().scale;
-  const double scene_pixels = std::max(1.0, std::round(kWidth * scale)) * std::max(1.0, std::round(kHeight * scale));
-  const double measured = double(std::max(0LL, st.particle_fragments)) / scene_pixels;
+  // Layers of the target the particles blend into (render.scale and render.particle_resolution
+  // size it), the unit the budget's estimate is in.
+  const double measured = double(std::max(0LL, st.particle_fragments)) / std::max(1.0, st.particle_target_pixels);
   c.layers.push_back(measured);
   if (measured > 0.01) c.estimate_ratio.push_back(st.overdraw_budgeted_layers / measured);
   c.draws_max = std::max(c.draws_max, st.particle_draw_calls);
