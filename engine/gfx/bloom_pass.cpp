@@ -1,5 +1,6 @@
 // gfx/bloom_pass.cpp — the bloom chain's textures and its down and up steps.
 #include "gfx/bloom_pass.h"
+#include "gfx/texture_filter.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -32,10 +33,7 @@ void BloomPass::allocate(int scene_w, int scene_h) {
     }
     glBindTexture(GL_TEXTURE_2D, l.tex);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, w, h, 0, GL_RGBA, GL_FLOAT, nullptr);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    set_target_sampling(GL_TEXTURE_2D, GL_LINEAR);
     glBindFramebuffer(GL_FRAMEBUFFER, l.fbo);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, l.tex, 0);
     if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)

@@ -1,5 +1,6 @@
 // gfx/hud_pass.cpp — font atlas texture, HUD vertex buffer and the overlay draw.
 #include "gfx/hud_pass.h"
+#include "gfx/texture_filter.h"
 
 #include <cstddef>
 
@@ -21,10 +22,7 @@ HudPass::HudPass() {
   glGenTextures(1, &font_tex_);
   glBindTexture(GL_TEXTURE_2D, font_tex_);
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, font_.width(), font_.height(), 0, GL_RGBA, GL_UNSIGNED_BYTE, font_.pixels());
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  set_target_sampling(GL_TEXTURE_2D, GL_NEAREST);
 }
 
 HudPass::~HudPass() {

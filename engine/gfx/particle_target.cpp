@@ -1,5 +1,6 @@
 // gfx/particle_target.cpp — the half-resolution particle target and its composite.
 #include "gfx/particle_target.h"
+#include "gfx/texture_filter.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -28,10 +29,7 @@ void ParticleTarget::allocate(int w, int h, GLenum color_format) {
   // Alpha holds the transmittance: a format with an alpha channel even when the scene's has none.
   const GLenum internal = is_float ? GL_RGBA16F : GL_RGBA8;
   glTexImage2D(GL_TEXTURE_2D, 0, GLint(internal), w, h, 0, GL_RGBA, is_float ? GL_FLOAT : GL_UNSIGNED_BYTE, nullptr);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  set_target_sampling(GL_TEXTURE_2D, GL_LINEAR);
   glBindRenderbuffer(GL_RENDERBUFFER, depth_);
   glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, w, h);
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_);

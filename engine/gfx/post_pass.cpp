@@ -1,5 +1,6 @@
 // gfx/post_pass.cpp — tone map, FXAA and the image between them.
 #include "gfx/post_pass.h"
+#include "gfx/texture_filter.h"
 
 #include <stdexcept>
 
@@ -29,10 +30,7 @@ void PostPass::ensure_tonemapped(int w, int h) {
   }
   glBindTexture(GL_TEXTURE_2D, ldr_tex_);
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  set_target_sampling(GL_TEXTURE_2D, GL_LINEAR);
   glBindFramebuffer(GL_FRAMEBUFFER, ldr_fbo_);
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, ldr_tex_, 0);
   if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)

@@ -1,5 +1,6 @@
 // gfx/render_targets.cpp — scene buffer, depth copy, offscreen target and read-back.
 #include "gfx/render_targets.h"
+#include "gfx/texture_filter.h"
 
 #include <algorithm>
 #include <cmath>
@@ -51,10 +52,7 @@ void RenderTargets::allocate_scene(int sw, int sh) {
   glBindTexture(GL_TEXTURE_2D, scene_color_);
   glTexImage2D(GL_TEXTURE_2D, 0, GLint(scene_internal_), sw, sh, 0, is_float ? GL_RGB : GL_RGBA,
                is_float ? GL_FLOAT : GL_UNSIGNED_BYTE, nullptr);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  set_target_sampling(GL_TEXTURE_2D, GL_LINEAR);
   // Float depth in both modes: reversed-Z needs it, and the copy must match the format.
   glBindRenderbuffer(GL_RENDERBUFFER, scene_depth_);
   glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, sw, sh);
@@ -65,10 +63,7 @@ void RenderTargets::allocate_scene(int sw, int sh) {
     throw std::runtime_error("scene framebuffer incomplete");
   glBindTexture(GL_TEXTURE_2D, copy_depth_);
   glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT32F, sw, sh, 0, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  set_target_sampling(GL_TEXTURE_2D, GL_NEAREST);
   glBindFramebuffer(GL_FRAMEBUFFER, copy_fbo_);
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, copy_depth_, 0);
   glDrawBuffer(GL_NONE);

@@ -18,4 +18,13 @@ inline void apply_texture_filter(GLenum target, RenderSettings::Filter filter) {
   glTexParameteri(target, GL_TEXTURE_MAG_FILTER, filter == RenderSettings::Filter::Nearest ? GL_NEAREST : GL_LINEAR);
 }
 
+// A render target's texture: one filter both ways (GL_LINEAR to be filtered when read back
+// scaled, GL_NEAREST for depth) and clamped to its edges.
+inline void set_target_sampling(GLenum target, GLint filter) {
+  glTexParameteri(target, GL_TEXTURE_MIN_FILTER, filter);
+  glTexParameteri(target, GL_TEXTURE_MAG_FILTER, filter);
+  glTexParameteri(target, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(target, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
 }  // namespace arc
