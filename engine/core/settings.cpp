@@ -59,9 +59,10 @@ Settings Settings::defaults() {
   s.define_number("render.overdraw_budget", 3.0, 0.0, 64.0,
                   "screen layers of particle blending per frame before the nearest, largest particles are shrunk,"
                   " faded and dropped (low screen priority first); 0: no budget");
-  s.define_choice("render.particle_resolution", "half", {"full", "half"},
+  s.define_choice("render.particle_resolution", "auto", {"full", "half", "auto"},
                   "particles blended at the scene's resolution, or at half its width and height and put over it"
-                  " (a quarter of the blending; edges over meshes soften by a pixel)");
+                  " (a quarter of the blending, softer particles), or auto: half while they blend more than one"
+                  " screen layer, full again under 0.6");
   s.define_number("render.overdraw_near", 40.0, 1.0, 1e6,
                   "distance in world units within which the overdraw budget reduces particles at full strength");
   // The look (HDR, bloom, edge filter) is the high and reference presets' and the attract

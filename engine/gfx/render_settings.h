@@ -33,7 +33,12 @@ struct RenderSettings {
   float overdraw_budget = 0.0f;
   float overdraw_near = 40.0f;  // m: beyond this the budget's reductions weaken with distance squared
   int max_particle_draws = 24;  // runs the particle batch may be split into (particle_runs.h); ≥ 1
-  bool half_res_particles = false;  // particles drawn at half resolution, then put over the scene (particle_target.h)
+  // Particles drawn at half resolution, then put over the scene (particle_target.h): Full never,
+  // Half always, Auto when a frame's particles blend more than kHalfResAbove screen layers
+  // (after the budget) and again at full resolution once under kHalfResBelow (hysteresis, so a
+  // frame near the line does not flicker between the two).
+  enum class ParticleResolution { Full, Half, Auto } particle_resolution = ParticleResolution::Full;
+  static constexpr double kHalfResAbove = 1.0, kHalfResBelow = 0.6;
   // HDR: a linear-light float scene, colours decoded from sRGB, one tone-map pass (post_pass.h).
   bool hdr = false;
   float exposure = 1.0f;        // scene scale before the tone curve (0.05..16)

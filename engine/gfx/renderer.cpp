@@ -81,6 +81,7 @@ struct Renderer::Impl {
   ParticleBatch batch;  // CPU only, kept for its buffers
   ParticlePass particles;
   ParticleTarget half_particles;
+  bool half_res = false;  // this frame's particles at half resolution (kept between frames for Auto's hysteresis)
   BloomPass bloom;
   PostPass post;
   HudPass hud;
@@ -144,7 +145,10 @@ void Renderer::apply_settings(const Settings& s) {
   r.sky_resolution = int(s.integer("render.sky_resolution"));
   r.overdraw_budget = float(s.number("render.overdraw_budget"));
   r.overdraw_near = float(s.number("render.overdraw_near"));
-  r.half_res_particles = s.choice("render.particle_resolution") == "half";
+  const std::string& pr = s.choice("render.particle_resolution");
+  r.particle_resolution = pr == "half"   ? RenderSettings::ParticleResolution::Half
+                          : pr == "auto" ? RenderSettings::ParticleResolution::Auto
+                                         : RenderSettings::ParticleResolution::Full;
   r.hdr = s.flag("render.hdr");
   r.exposure = float(s.number("render.exposure"));
   const std::string& bloom = s.choice("render.bloom");
@@ -225,10 +229,9 @@ void Renderer::Impl::draw_particles(const RenderView& v, const ViewProjection& v
   options.overdraw = {rs.overdraw_budget, rs.overdraw_near};
   options.size_clamp = rs.size_clamp;
   options.max_runs = std::max(1, rs.max_particle_draws);
-  // The budget counts layers of the target the particles blend into.
-  const int div = rs.half_res_particles ? 2 : 1;
-  options.width = std::max(1, targets.scene_width() / div);
-  options.height = std::max(1, targets.scene_height() / div);
+  // Layers are shares of the screen whichever target the particles blend into.
+  options.width = targets.scene_width();
+  options.height = targets.scene_height();
   batch.prepare(v, vp, meshes.cover_boxes(), options);
   stats.particles_drawn = batch.visible;
   stats.overdraw_estimated_layers = batch.overdraw.estimated_layers;
@@ -241,6 +244,11 @@ void Renderer::Impl::draw_particles(const RenderView& v, const ViewProjection& v
   stats.sorted = batch.sorted;
   stats.soft_shaded = batch.soft_shaded;
   stats.particle_prep_ms = ms_since(t0);
+  using Res = RenderSettings::ParticleResolution;
+  if (rs.particle_resolution != Res::Auto) half_res = rs.particle_resolution == Res::Half;
+  else if (batch.overdraw.budgeted_layers > RenderSettings::kHalfResAbove) half_res = true;
+  else if (batch.overdraw.budgeted_layers < RenderSettings::kHalfResBelow) half_res = false;
+  stats.particles_half_res = half_res;
   if (batch.particles.empty()) {
     stats.particle_cpu_ms = stats.particle_prep_ms;
     return;
@@ -253,7 +261,7 @@ void Renderer::Impl::draw_particles(const RenderView& v, const ViewProjection& v
   }
   ParticleFrame frame{vp, v.camera.fov_y_radians, float(v.camera.near_plane), targets.depth_copy(),
                       targets.scene_width(), targets.scene_height()};
-  if (rs.half_res_particles) {
+  if (half_res) {
     half_particles.begin(targets.scene_fbo(), targets.scene_width(), targets.scene_height(),
                          targets.scene_internal_format());
     frame.scene_width = half_particles.width();
@@ -262,7 +270,7 @@ void Renderer::Impl::draw_particles(const RenderView& v, const ViewProjection& v
   }
   stats.particle_target_pixels = double(frame.scene_width) * double(frame.scene_height);
   int draws = particles.draw(batch, programs, rs, frame, &stats.particle_fragments);
-  if (rs.half_res_particles) {
+  if (half_res) {
     half_particles.composite(programs.particle_composite, targets.scene_fbo(), targets.scene_width(),
                              targets.scene_height());
     ++draws;

@@ -119,7 +119,7 @@ TEST(ParticleDraws, HalfResolutionChainsTheSameBlend) {
   const Image full = r.read_pixels();
   test::dump_if_asked("particles_full_resolution", full);
   const FrameStats full_stats = r.last_stats();
-  s.half_res_particles = true;
+  s.particle_resolution = RenderSettings::ParticleResolution::Half;
   r.set_render_settings(s);
   r.render(v, 160, 90);
   const Image half = r.read_pixels();
@@ -143,6 +143,44 @@ TEST(ParticleDraws, HalfResolutionChainsTheSameBlend) {
   for (size_t k = 3; k < half.rgba.size(); k += 4) alpha_min = std::min(alpha_min, int(half.rgba[k]));
   EXPECT_EQ(alpha_min, 255);
   EXPECT_GT(test::channel(full, 80, 45, 2), 0.1f) << "the particles are there";
+}
+
+// render.particle_resolution = auto: half resolution while the particles blend more than one
+// screen layer, full again only under 0.6 (in between, the last frame's choice stays).
+TEST(ParticleDraws, AutoResolutionFollowsTheLayersWithHysteresis) {
+  REQUIRE_CONTEXT();
+  Renderer r(RendererDesc{.offscreen = true});
+  RenderSettings s = test::plain_settings();
+  s.particle_resolution = RenderSettings::ParticleResolution::Auto;
+  r.set_render_settings(s);
+  auto frame_with = [&](int puffs) {
+    RenderView v;
+    v.camera.fov_y_radians = 0.9;
+    v.camera.near_plane = 0.1;
+    for (int i = 0; i < puffs; ++i)
+      v.particles.push_back(particle({float(i % 6) - 2.5f, float(i / 6) * 0.5f - 1.25f, -2.5f}, 1.2f, glm::vec3(0.3f), 0.4f, 0.0f));
+    r.render(v, 320, 180);
+    return r.last_stats();
+  };
+  FrameStats f = frame_with(2);
+  ASSERT_LT(f.overdraw_budgeted_layers, 0.6);
+  EXPECT_FALSE(f.particles_half_res);
+  f = frame_with(36);
+  ASSERT_GT(f.overdraw_budgeted_layers, 1.0);
+  EXPECT_TRUE(f.particles_half_res);
+  EXPECT_EQ(f.particle_target_pixels, 160.0 * 90.0);
+  int between = 0;
+  for (int n = 35; n > 0; --n) {
+    f = frame_with(n);
+    if (f.overdraw_budgeted_layers >= 0.6 && f.overdraw_budgeted_layers <= 1.0) {
+      ++between;
+      EXPECT_TRUE(f.particles_half_res) << n << " puffs, " << f.overdraw_budgeted_layers << " layers: stays half";
+    }
+    if (f.overdraw_budgeted_layers < 0.6) break;
+  }
+  EXPECT_GT(between, 0) << "the sweep must cross the band";
+  EXPECT_FALSE(f.particles_half_res);
+  EXPECT_EQ(f.particle_target_pixels, 320.0 * 180.0);
 }
 
 }  // namespace
