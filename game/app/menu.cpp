@@ -138,8 +138,10 @@ Menu::Menu(std::vector<MissionInfo> catalog, UserFiles files, Bindings bindings,
       presets_(Settings::preset_names(quality_file)),
       quality_file_(quality_file),
       message_(files_.message) {
-  // The quality file's presets come in name order; offer them from cheap to exact.
-  const std::vector<std::string> known = {"low", "medium", "high", "reference"};
+  // The quality file's presets come in name order; offer them from cheap to exact, with the
+  // built-in settings ("default") after low.
+  presets_.push_back(kDefaultQuality);
+  const std::vector<std::string> known = {"low", kDefaultQuality, "medium", "high", "reference"};
   auto rank = [&](const std::string& p) { return std::find(known.begin(), known.end(), p) - known.begin(); };
   std::stable_sort(presets_.begin(), presets_.end(), [&](const auto& a, const auto& b) { return rank(a) < rank(b); });
   refresh_effective();

@@ -152,7 +152,7 @@ UserSettings parse_settings(const std::string& text, const std::string& path,
   UserSettings s;
   if (auto q = r.get("quality")) {
     s.quality = q->string();
-    bool known = quality_presets.empty();
+    bool known = quality_presets.empty() || s.quality == kDefaultQuality;
     for (const std::string& p : quality_presets) known = known || p == s.quality;
     if (!known) q->fail("'quality' must be one of " + join_allowed(quality_presets) + ", got \"" + s.quality + "\"");
   }
@@ -235,7 +235,7 @@ void save_progress(const std::string& dir, const Progress& p) { write_into(dir, 
 
 Settings user_quality_settings(const UserSettings& us, const std::string& quality_file) {
   Settings s = Settings::defaults();
-  s.apply_preset_file(quality_file, us.quality);
+  if (us.quality != kDefaultQuality) s.apply_preset_file(quality_file, us.quality);
   for (const auto& [key, value] : us.render) s.set(key, value, "settings.json render");
   return s;
 }

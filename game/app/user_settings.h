@@ -24,8 +24,13 @@
 
 namespace arc {
 
+// The quality choice that applies no preset: Settings::defaults().
+inline constexpr const char* kDefaultQuality = "default";
+
 struct UserSettings {
-  std::string quality = "medium";   // a preset of assets/settings/quality.json
+  // A preset of assets/settings/quality.json, or "default": the built-in settings (made for a
+  // software rasteriser: the look's presets cost more than a 60 Hz frame on llvmpipe).
+  std::string quality = "default";
   double mouse_sensitivity = 0.12;  // degrees per pixel (relative mouse mode)
   bool invert_y = false;            // mouse and gamepad
   double pad_deadzone = 0.12;

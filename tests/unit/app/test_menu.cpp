@@ -148,9 +148,9 @@ TEST(Menu, SettingsChangeSaveAndRemapWithConflicts) {
   Menu m = make_menu();
   run(m, "down down accept");
   ASSERT_EQ(m.screen(), MenuScreen::Settings);
-  EXPECT_TRUE(has_line(m.page(), "> Quality preset: < medium >"));
+  EXPECT_TRUE(has_line(m.page(), "> Quality preset: < default >"));
   std::vector<MenuRequest> r = run(m, "right down down right right right down accept");
-  EXPECT_EQ(m.settings().quality, "high");
+  EXPECT_EQ(m.settings().quality, "medium");
   EXPECT_DOUBLE_EQ(m.settings().mouse_sensitivity, 0.15);
   EXPECT_TRUE(m.settings().invert_y);
   int saves = 0;
