@@ -7,7 +7,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <fcntl.h>
+#include <unistd.h>
 
 #include "audio/synth.h"
 #include "core/json.h"
@@ -30,6 +33,29 @@ struct Voice {
   double fade = 1, fade_rate = 0;  // fade_rate per second: < 0 out, > 0 in
   double cue_gain = 1;
   uint64_t started = 0;    // order of starting, for "oldest among equals"
+};
+
+// While a device opens, ALSA and OpenAL Soft write their own diagnostics to stderr (several
+// lines when there is no sound card); the game says what matters in one notice line instead.
+class QuietStderr {
+ public:
+  QuietStderr() {
+    std::fflush(stderr);
+    saved_ = dup(2);
+    const int null = open("/dev/null", O_WRONLY);
+    if (saved_ >= 0 && null >= 0) dup2(null, 2);
+    if (null >= 0) ::close(null);
+  }
+  ~QuietStderr() {
+    if (saved_ < 0) return;
+    dup2(saved_, 2);
+    ::close(saved_);
+  }
+  QuietStderr(const QuietStderr&) = delete;
+  QuietStderr& operator=(const QuietStderr&) = delete;
+
+ private:
+  int saved_ = -1;
 };
 
 using LoopbackOpen = ALCdevice*(ALC_APIENTRY*)(const ALCchar*);
@@ -92,6 +118,8 @@ bool AudioEngine::Impl::open_loopback() {
 }
 
 bool AudioEngine::Impl::open_device() {
+  setenv("ALSOFT_LOGLEVEL", "0", 0);  // OpenAL Soft's own log only when asked for
+  QuietStderr quiet;
   if (desc.loopback) {
     if (!open_loopback()) return false;
   } else {

@@ -179,6 +179,10 @@ void WindowSession::setup() {
   hud_.show_fps = options_.show_fps;
   window_->set_mouse_captured(!menu_);
   mouse_captured_ = !menu_;
+  if (!audio_->engine().active()) {
+    notice_ = "Sound off: " + audio_->engine().notice();
+    notice_until_ = window_->time_seconds() + 6.0;
+  }
   if (!user_.message.empty() && !menu_) {
     notice_ = user_.message;
     notice_until_ = window_->time_seconds() + 15.0;
