@@ -12,6 +12,8 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <glm/geometric.hpp>
+
 #include "audio/synth.h"
 #include "core/json.h"
 
@@ -22,6 +24,7 @@ constexpr double kStealFade = 0.03;  // seconds over which a taken voice fades o
 constexpr double kLoopFade = 0.06;   // seconds over which a loop no longer asked for fades out
 constexpr double kLoopFadeIn = 0.02;
 constexpr int kSpareSources = 8;     // fading voices play on these, beyond the voice limit
+constexpr double kInaudible = 0.002; // a new sound quieter than this at the listener is not started
 
 struct Voice {
   ALuint source = 0;
@@ -87,7 +90,8 @@ struct AudioEngine::Impl {
   double mix_gain(const SoundDef& def) const;
   Voice* find_loop(int sound, uint64_t key);
   Voice* free_voice();
-  Voice* take_voice(int priority);
+  Voice* take_voice(int priority, bool loop);
+  bool audible(const SoundDef& def, const SoundCue& cue) const;
   void stop(Voice& v);
   void start(Voice& v, int sound, const SoundCue& cue);
 };
@@ -199,9 +203,19 @@ Voice* AudioEngine::Impl::free_voice() {
   return nullptr;
 }
 
+// OpenAL's inverse-distance-clamped gain at the cue's distance, times the cue's own.
+bool AudioEngine::Impl::audible(const SoundDef& def, const SoundCue& cue) const {
+  if (!def.positional) return true;
+  const double d = std::clamp(glm::length(cue.position - listener_pos), def.reference_distance, def.max_distance);
+  const double falloff = def.reference_distance / (def.reference_distance + def.rolloff * (d - def.reference_distance));
+  return falloff * cue.gain * def.gain >= kInaudible;
+}
+
 // When the pool is full: the lowest-priority playing voice (oldest among equals) starts fading
-// out, if it is not above `priority`. Returns the source the new sound takes, or null.
-Voice* AudioEngine::Impl::take_voice(int priority) {
+// out, if it is below `priority` — or equal, when neither is a loop (a newer spark replaces an
+// older one; loops of equal priority, asked for every tick, would otherwise take turns).
+// Returns the source the new sound takes, or null.
+Voice* AudioEngine::Impl::take_voice(int priority, bool loop) {
   int playing = 0;
   Voice* victim = nullptr;
   for (Voice& v : voices) {
@@ -212,7 +226,9 @@ Voice* AudioEngine::Impl::take_voice(int priority) {
     if (p < vp || (p == vp && v.started < victim->started)) victim = &v;
   }
   if (playing >= mix.voices) {
-    if (!victim || library.sounds[size_t(victim->sound)].priority > priority) return nullptr;
+    if (!victim) return nullptr;
+    const int vp = library.sounds[size_t(victim->sound)].priority;
+    if (vp > priority || (vp == priority && (loop || victim->loop))) return nullptr;
     victim->fading = true;
     victim->fade_rate = -1.0 / kStealFade;
   }
@@ -331,7 +347,8 @@ void AudioEngine::play(const SoundCue& cue) {
       return;
     }
   }
-  if (Voice* v = m.take_voice(def.priority)) m.start(*v, sound, cue);
+  if (!m.audible(def, cue)) return;
+  if (Voice* v = m.take_voice(def.priority, def.loop)) m.start(*v, sound, cue);
 }
 
 void AudioEngine::update(double seconds) {

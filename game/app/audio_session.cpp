@@ -65,6 +65,7 @@ bool AudioSession::toggle_mute() {
 }
 
 void AudioSession::after_tick(const World& w) {
+  ticked_ = true;
   events_ = tracker_.collect(w);
   for (const SoundEvent& e : events_) engine_->play(sound_cue(e));
   stinger(w);
@@ -73,6 +74,11 @@ void AudioSession::after_tick(const World& w) {
 void AudioSession::frame(const World& w, double seconds) {
   const glm::dvec3 velocity = (w.camera.position - w.prev_camera.position) / std::max(w.dt, 1e-9);
   engine_->set_listener(w.camera.position, w.camera.orientation, velocity);
+  // A frame without a tick (a display faster than the tick rate) keeps the loops of the last.
+  if (!ticked_)
+    for (const SoundEvent& e : events_)
+      if (is_loop(e.kind)) engine_->play(sound_cue(e));
+  ticked_ = false;
   engine_->update(seconds);
 }
 

@@ -60,6 +60,7 @@ class AudioSession {
   SoundEventTracker tracker_;
   std::vector<SoundEvent> events_;
   int stinger_outcome_ = 0;
+  bool ticked_ = false;  // a tick was stepped since the last frame()
 };
 
 // A headless or replayed session's sound: after each tick, that tick's share of samples from

@@ -161,6 +161,26 @@ TEST(AudioEngine, VoiceLimitKeepsThePriorityOnes) {
   EXPECT_EQ(int(lb.audio.voices().size()), 3) << "fades end and free their sources";
 }
 
+// Loops of equal priority asked for every tick (engine hums) keep the voices they have rather
+// than taking turns: nothing fades while the pool stays full.
+TEST(AudioEngine, EqualLoopsDoNotTakeTurns) {
+  Loopback lb(2);
+  lb.run(20, [&](int) {
+    for (uint64_t key = 1; key <= 4; ++key) lb.audio.play({.sound = "tone", .key = key, .position = glm::dvec3(0, 0, -5)});
+    for (const VoiceInfo& v : lb.audio.voices()) EXPECT_FALSE(v.fading);
+  });
+  EXPECT_EQ(lb.audio.voice_count(), 2);
+}
+
+// A sound too far away to hear does not take a voice.
+TEST(AudioEngine, InaudibleSoundsAreNotStarted) {
+  Loopback lb;
+  lb.audio.play({.sound = "boom", .position = glm::dvec3(0, 0, -1e7)});
+  EXPECT_EQ(lb.audio.voice_count(), 0);
+  lb.audio.play({.sound = "boom", .position = glm::dvec3(0, 0, -100)});
+  EXPECT_EQ(lb.audio.voice_count(), 1);
+}
+
 // A loud tone's voice is taken by a slow-attack boom: the tone fades, it is not cut. The largest
 // sample-to-sample step around the steal stays near the steady tone's own.
 TEST(AudioEngine, AStolenVoiceFadesWithoutAClick) {
