@@ -8,6 +8,7 @@ packages=(
   libglfw3-dev libglm-dev libtinygltf-dev libopenimageio-dev libegl-dev libepoxy-dev
   nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev libimgui-dev
   libegl-mesa0 libgl1-mesa-dri libgbm1
+  libopenal-dev
   xvfb xauth xdotool
 )
 

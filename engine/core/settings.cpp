@@ -83,6 +83,12 @@ Settings Settings::defaults() {
                   "clusters farther than this from the camera are not animated until needed");
   // Simulation
   s.define_integer("sim.substeps", 1, 1, 16, "physics sub-steps per tick");
+  // Audio (engine/audio): never part of the simulation or its hash.
+  s.define_number("audio.volume", 0.8, 0.0, 1.0, "master volume");
+  s.define_number("audio.effects_volume", 1.0, 0.0, 1.0, "volume of the game's positional sounds, under the master");
+  s.define_flag("audio.mute", false, "no sound at all (M toggles it in the game)");
+  s.define_integer("audio.voices", 32, 4, 128,
+                   "sounds playing at once; beyond it the lowest priority (sparks before explosions) fades out");
   return s;
 }
 

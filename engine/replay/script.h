@@ -133,7 +133,8 @@ struct Range {
 struct Expectation {
   enum class Kind : uint8_t {
     Alive, Destroyed, Hull, Shield, Position, Distance, Particles, Winner,
-    Kills, DamageDealt, DamageTaken, Accuracy  // the ship's combat counters
+    Kills, DamageDealt, DamageTaken, Accuracy,  // the ship's combat counters
+    Sound  // a sound event of that tick (game/render/sound_events.h), e.g. `expect sound explosion`
   };
   uint64_t tick = 0;
   Kind kind = Kind::Alive;
@@ -142,6 +143,8 @@ struct Expectation {
   int ship_col = 0, other_col = 0;  // where the names are written, for "no such ship" errors
   std::string team;   // Winner: a team name, or "none" while undecided
   std::string weapon; // Accuracy: "beam" or "missile"
+  std::string sound;  // Sound: the event's name, checked against the game's at load
+  int sound_col = 0;
   Range range;        // Hull, Shield, Distance, Particles, Kills, DamageDealt, DamageTaken, Accuracy
   std::array<Range, 3> box{};  // Position: x, y, z
   SourceLine src;

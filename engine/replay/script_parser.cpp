@@ -290,7 +290,7 @@ Expectation parse_expect(LineParser& lp, uint64_t tick) {
   e.tick = tick;
   const Token& what = lp.take(
       "what to expect (alive, destroyed, hull, shield, position, distance, particles, winner, kills, damage_dealt, "
-      "damage_taken, accuracy)");
+      "damage_taken, accuracy, sound)");
   const std::string& w = what.text;
   if (w == "alive" || w == "destroyed") {
     e.kind = w == "alive" ? Expectation::Kind::Alive : Expectation::Kind::Destroyed;
@@ -316,10 +316,15 @@ Expectation parse_expect(LineParser& lp, uint64_t tick) {
   } else if (w == "winner") {
     e.kind = Expectation::Kind::Winner;
     e.team = lp.take("team name (or none)").text;
+  } else if (w == "sound") {
+    e.kind = Expectation::Kind::Sound;
+    const Token& t = lp.take("sound event name (explosion, beam, missile_launch, ...)");
+    e.sound = t.text;
+    e.sound_col = t.col;
   } else if (!parse_counter_expect(lp, w, e)) {
     lp.fail(what, "unknown expectation '" + w +
                       "'; allowed: alive, destroyed, hull, shield, position, distance, particles, winner, kills, "
-                      "damage_dealt, damage_taken or accuracy");
+                      "damage_dealt, damage_taken, accuracy or sound");
   }
   lp.done("expect " + w);
   return e;

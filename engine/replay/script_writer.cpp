@@ -114,6 +114,7 @@ std::string expectation_line(const Expectation& e) {
       return s + "damage_taken " + quoted(e.ship) + " " + range_text(e.range) + "\n";
     case Expectation::Kind::Accuracy:
       return s + "accuracy " + quoted(e.ship) + " " + e.weapon + " " + range_text(e.range) + "\n";
+    case Expectation::Kind::Sound: return s + "sound " + e.sound + "\n";
   }
   return s + "\n";
 }

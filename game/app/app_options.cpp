@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "core/error.h"
+#include "audio/sound_library.h"
 #include "core/json.h"
 #include "game/app/input_bindings.h"
 
@@ -87,6 +88,9 @@ void define_options(CLI::App& app, AppOptions& o, CommandLineText& t) {
   app.add_option("--seed", t.seed, "override the level's random seed")->check(CLI::Range(int64_t(0), int64_t(4294967295)));
   app.add_option("--bindings", o.bindings_path,
                  "key and gamepad bindings file; a missing file is created with the defaults to edit");
+  app.add_option("--sounds", o.sounds_path, "sound definitions, synthesised at start-up (default assets/sounds/sounds.json)");
+  app.add_option("--audio-out", o.audio_out,
+                 "headless or replay: render the session's sound through OpenAL's loopback device into this WAV file");
   app.add_flag("--fullscreen", o.fullscreen, "start in fullscreen (F11 or Alt+Enter toggles)");
   app.add_flag("--no-vsync", t.no_vsync, "do not wait for vertical sync");
   app.add_flag("--fps", o.show_fps, "show the FPS counter (F3 toggles)");
@@ -105,6 +109,8 @@ void resolve_options(const CLI::App& app, const CommandLineText& t, AppOptions& 
   }
   o.bindings_path = resolve_data_path(o.bindings_path, "--bindings");
   load_bindings(o.bindings_path);  // a bad bindings file is bad input in every mode
+  o.sounds_path = resolve_data_path(o.sounds_path, "--sounds");
+  load_sound_library(o.sounds_path);  // so is a bad sound file
   if (!parse_size(t.size, o.width, o.height))
     throw InputError("--size: expected WIDTHxHEIGHT with each in 16..8192, got '" + t.size + "'");
   // The attract demo renders offline frames for people to look at: the full look (the high
@@ -126,6 +132,8 @@ void resolve_options(const CLI::App& app, const CommandLineText& t, AppOptions& 
   }
   if (o.no_render && !o.headless && o.replay_path.empty())
     throw InputError("--no-render: only with --headless or --replay");
+  if (!o.audio_out.empty() && !o.headless && o.replay_path.empty())
+    throw InputError("--audio-out: only with --headless or --replay");
   if (o.update_golden && o.replay_path.empty()) throw InputError("--update-golden: only with --replay");
 }
 

@@ -27,6 +27,8 @@ struct AppOptions {
   bool update_golden = false;
   int64_t serialization_test = 0;  // N > 0: save/load every N ticks
   std::string bindings_path = "assets/settings/bindings.json";
+  std::string sounds_path = "assets/sounds/sounds.json";  // --sounds: checked at start in every mode
+  std::string audio_out;    // --audio-out: headless and replay sound through the loopback device, as WAV
   bool bindings_given = false;  // --bindings: that file wins over the user's settings
   bool quality_given = false;   // --quality: that preset wins over the user's settings
   std::vector<std::string> setting_overrides;  // the --set texts, applied again over the user's preset

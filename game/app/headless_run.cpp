@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "core/json.h"
+#include "game/app/audio_session.h"
 #include "game/app/contact_sheet.h"
 #include "game/app/frame_renderer.h"
 #include "game/sim/game.h"
@@ -50,6 +51,9 @@ int run_headless(const AppOptions& o) {
     renderer = std::make_unique<FrameRenderer>(desc, o.settings, game);
   }
 
+  std::unique_ptr<AudioCapture> audio;
+  if (!o.audio_out.empty()) audio = std::make_unique<AudioCapture>(o.sounds_path, o.settings, o.audio_out);
+
   std::vector<Image> frames;
   std::vector<std::string> written;
   // The demo ends two seconds after the battle is decided, so the sheet shows the fight.
@@ -58,6 +62,7 @@ int run_headless(const AppOptions& o) {
     if (demo && demo_end < 0 && game.world().outcome != Outcome::Undecided) demo_end = t + 120;
     if (t == demo_end) ticks = t;
     game.step(InputFrame{});
+    if (audio) audio->after_tick(game.world());
     if (renderer && t % every == 0) {
       Image img = renderer->render(game);
       std::string path = frame_name(out, game.tick());
@@ -67,6 +72,7 @@ int run_headless(const AppOptions& o) {
     }
   }
   if (!o.summary_path.empty()) write_file_atomic(o.summary_path, game.summary_json());
+  if (audio) audio->finish();
   if (!written.empty())
     std::printf("arcfire: wrote %zu frames to %s/ (%s .. %s)\n", written.size(), out.c_str(),
                 std::filesystem::path(written.front()).filename().c_str(),

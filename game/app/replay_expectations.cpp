@@ -1,6 +1,7 @@
 // Expectations of replay scripts evaluated against the World, and their names checked up front.
 #include "game/app/replay_expectations.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -37,16 +38,32 @@ void check_expectation_names(const replay::Script& s, const World& w) {
     throw InputError(s.path + ":" + std::to_string(e.src.line) + ":" + std::to_string(col) + ": no ship named '" + name +
                      "' in level " + w.level.name + "; ships: " + join_allowed(names));
   };
+  std::vector<std::string> sounds;
+  for (int k = 0; k <= int(SoundKind::EngineHum); ++k) sounds.push_back(sound_kind_name(SoundKind(k)));
   for (const Expectation& e : s.expectations) {
     require(e, e.ship, e.ship_col);
     require(e, e.other, e.other_col);
+    if (e.kind == Expectation::Kind::Sound && std::find(sounds.begin(), sounds.end(), e.sound) == sounds.end())
+      throw InputError(s.path + ":" + std::to_string(e.src.line) + ":" + std::to_string(e.sound_col) +
+                       ": unknown sound event '" + e.sound + "'; allowed: " + join_allowed(sounds));
   }
   if (s.header.tick_rate && std::lround(1.0 / w.dt) != *s.header.tick_rate)
     throw InputError(s.path + ": header tick_rate " + std::to_string(*s.header.tick_rate) +
                      " differs from the level's " + std::to_string(std::lround(1.0 / w.dt)));
 }
 
-std::optional<std::string> expectation_failure(const Expectation& e, const World& w) {
+// "beam ×2, engine_hum ×2" for a failure message.
+static std::string sounds_text(const std::vector<SoundEvent>& sounds) {
+  std::string out;
+  for (int k = 0; k <= int(SoundKind::EngineHum); ++k) {
+    const auto n = std::count_if(sounds.begin(), sounds.end(), [&](const SoundEvent& s) { return int(s.kind) == k; });
+    if (n > 0) out += (out.empty() ? "" : ", ") + std::string(sound_kind_name(SoundKind(k))) + " x" + std::to_string(n);
+  }
+  return out.empty() ? "none" : out;
+}
+
+std::optional<std::string> expectation_failure(const Expectation& e, const World& w,
+                                               const std::vector<SoundEvent>& sounds) {
   const Ship* a = find_ship(w, e.ship);
   switch (e.kind) {
     case Expectation::Kind::Alive:
@@ -94,6 +111,10 @@ std::optional<std::string> expectation_failure(const Expectation& e, const World
       return e.weapon + " accuracy of " + e.ship + " is " + number(accuracy(hits, shots)) + " (" +
              std::to_string(hits) + " hits of " + std::to_string(shots) + " shots)";
     }
+    case Expectation::Kind::Sound:
+      for (const SoundEvent& s : sounds)
+        if (e.sound == sound_kind_name(s.kind)) return std::nullopt;
+      return "no " + e.sound + " sound at this tick; sounds: " + sounds_text(sounds);
     case Expectation::Kind::Winner: {
       const std::string winner = w.outcome == Outcome::Undecided ? "none" : w.team_name(w.winner);
       if (winner == e.team) return std::nullopt;

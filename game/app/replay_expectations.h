@@ -7,17 +7,20 @@
 #include <optional>
 #include <string>
 
+#include "game/render/sound_events.h"
 #include "replay/script.h"
 
 namespace arc {
 
 class World;
 
-// InputError "path:line:col: no ship named ..." for an unknown ship, or a header tick rate
-// that differs from the level's.
+// InputError "path:line:col: no ship named ..." for an unknown ship or sound event name, or a
+// header tick rate that differs from the level's.
 void check_expectation_names(const replay::Script& script, const World& world);
 
-// Why the expectation fails ("hull of Drone is 220"), or nullopt when it holds.
-std::optional<std::string> expectation_failure(const replay::Expectation& expectation, const World& world);
+// Why the expectation fails ("hull of Drone is 220"), or nullopt when it holds. `sounds` are
+// the sound events of the tick just stepped.
+std::optional<std::string> expectation_failure(const replay::Expectation& expectation, const World& world,
+                                               const std::vector<SoundEvent>& sounds = {});
 
 }  // namespace arc

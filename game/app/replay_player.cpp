@@ -14,6 +14,7 @@
 
 #include "core/error.h"
 #include "core/json.h"
+#include "game/app/audio_session.h"
 #include "game/app/frame_renderer.h"
 #include "game/app/replay_expectations.h"
 #include "game/app/script_feeder.h"
@@ -29,7 +30,9 @@ ReplayRunOptions::ReplayRunOptions(const AppOptions& app)
       update_golden(app.update_golden),
       no_render(app.no_render),
       game(app.game),
-      settings(app.settings) {}
+      settings(app.settings),
+      sounds_path(app.sounds_path),
+      audio_out(app.audio_out) {}
 
 namespace {
 
@@ -108,6 +111,9 @@ class ReplayPlayer {
   uint64_t last_matching_hash_tick_ = 0;
   size_t next_full_ = 0;          // golden_log_->full entries before this one are behind us
   uint64_t last_full_match_ = 0;  // the last tick whose full hash matched the log
+  SoundEventTracker sounds_;       // `expect sound` lines, without an audio device
+  std::unique_ptr<AudioCapture> audio_;  // --audio-out
+  std::vector<SoundEvent> tick_sounds_;  // the sound events of the tick just stepped
 };
 
 ReplayPlayer::ReplayPlayer(const ReplayRunOptions& opt, replay::Script script)
@@ -119,6 +125,7 @@ ReplayPlayer::ReplayPlayer(const ReplayRunOptions& opt, replay::Script script)
       game_options_(script_game_options(script_, settings_, opt.game)),
       game_(Game::load_level(level_path_, game_options_)) {
   check_expectation_names(script_, game_.world());
+  if (!opt.audio_out.empty()) audio_ = std::make_unique<AudioCapture>(opt.sounds_path, settings_, opt.audio_out);
   const std::string stem = fs::path(opt.script_path).stem().string();
   golden_dir_ = !opt.golden_dir.empty() ? opt.golden_dir
                                         : (fs::path(opt.script_path).parent_path() / "golden" / stem).string();
@@ -300,12 +307,14 @@ void ReplayPlayer::run() {
     for (; ei < script_.expectations.size() && script_.expectations[ei].tick == t; ++ei) {
       const Expectation& e = script_.expectations[ei];
       ++result_.checks;
-      if (auto why = expectation_failure(e, game_.world())) fail(t, e.src, *why);
+      if (auto why = expectation_failure(e, game_.world(), tick_sounds_)) fail(t, e.src, *why);
       else pass(t, e.src);
     }
     for (; si < script_.snapshots.size() && script_.snapshots[si].tick == t; ++si) check_snapshot(script_.snapshots[si], t);
     if (t >= last) break;
     feed.step(game_, t);
+    if (audio_) audio_->after_tick(game_.world());
+    tick_sounds_ = audio_ ? audio_->session().last_events() : sounds_.collect(game_.world());
     if (renderer_ && opt_.render_every > 0 && (t + 1) % uint64_t(opt_.render_every) == 0) {
       renderer_->render(game_);
       ++result_.frames_rendered;
@@ -314,6 +323,7 @@ void ReplayPlayer::run() {
   }
   result_.ticks = last;
   result_.final_hash = game_.hash();
+  if (audio_) audio_->finish();
 }
 
 void ReplayPlayer::update_golden(const std::string& original_text) {

@@ -42,6 +42,8 @@ struct ReplayRunOptions {
   int full_hash_every = 60;     // ticks between full hashes in the hash log
   bool quiet = false;           // no per-check output (benchmarks); failures still printed
   int render_every = 0;         // benchmarks: also render every N-th tick without checking (0 = never)
+  std::string sounds_path = "assets/sounds/sounds.json";
+  std::string audio_out;        // --audio-out: the replay's sound as WAV, through the loopback device
 };
 
 struct ReplayOutcome {

@@ -9,6 +9,7 @@
 
 #include "core/clock.h"
 #include "core/error.h"
+#include "game/app/audio_session.h"
 #include "game/app/file_watcher.h"
 #include "game/app/input_bindings.h"
 #include "game/app/menu.h"
@@ -31,16 +32,17 @@ namespace {
 // the simulated game, fixed when it starts, so a change says that it waits for the restart.
 // Started from the main menu, it also leads back there.
 struct PauseMenu {
-  enum class Item { Resume, Restart, Difficulty, MainMenu, Quit };
+  enum class Item { Resume, Restart, Difficulty, Sound, MainMenu, Quit };
   int selection = 0;
   static std::vector<Item> items(bool decided, bool has_main_menu) {
     std::vector<Item> v = decided ? std::vector<Item>{Item::Restart, Item::Resume, Item::Difficulty}
                                   : std::vector<Item>{Item::Resume, Item::Restart, Item::Difficulty};
+    v.push_back(Item::Sound);
     if (has_main_menu) v.push_back(Item::MainMenu);
     v.push_back(Item::Quit);
     return v;
   }
-  static std::string label(Item item, bool decided, Difficulty chosen, int playing, bool recording) {
+  static std::string label(Item item, bool decided, Difficulty chosen, int playing, bool recording, bool muted) {
     const char* restart = decided ? "Retry" : "Restart";
     switch (item) {
       case Item::Resume: return "Resume";
@@ -48,6 +50,7 @@ struct PauseMenu {
       case Item::Difficulty:
         return std::string("Difficulty: ") + difficulty_name(chosen) +
                (int(chosen) != playing ? std::string(" (applies on ") + (decided ? "retry)" : "restart)") : "");
+      case Item::Sound: return muted ? "Sound: muted (M)" : "Sound: on (M)";
       case Item::MainMenu: return std::string("Main menu") + (recording ? " (ends the recording)" : "");
       case Item::Quit: return "Quit";
     }
@@ -104,6 +107,7 @@ class WindowSession {
   void reload_changed_files();
   void step_ticks(double frame_seconds);
   void count_fps(double frame_seconds);
+  void handle_sound_keys(bool in_menu);
 
   const AppOptions& options_;
   GameOptions game_options_;  // the pause menu's difficulty changes it for the next restart
@@ -121,6 +125,7 @@ class WindowSession {
   std::vector<ModelId> models_;  // the renderer's id of each of the level's model slots
   std::unique_ptr<Game> game_;
   std::unique_ptr<SessionRecorder> recorder_;
+  std::unique_ptr<AudioSession> audio_;  // sounds.json is checked before the window opens
   std::optional<LiveInput> input_;
   std::optional<FixedStepClock> clock_;
   InputState devices_, previous_devices_;
@@ -157,6 +162,7 @@ void WindowSession::setup() {
                   defaults, game_options_.root_dir + "/assets/settings/quality.json");
   }
   start_game(std::make_unique<Game>(Game::load_level(level_, game_options_)));
+  audio_ = std::make_unique<AudioSession>(options_.sounds_path, settings_, false);
   WindowDesc wd;
   wd.width = options_.width;
   wd.height = options_.height;
@@ -173,6 +179,10 @@ void WindowSession::setup() {
   hud_.show_fps = options_.show_fps;
   window_->set_mouse_captured(!menu_);
   mouse_captured_ = !menu_;
+  if (!audio_->engine().active()) {
+    notice_ = "Sound off: " + audio_->engine().notice();
+    notice_until_ = window_->time_seconds() + 6.0;
+  }
   if (!user_.message.empty() && !menu_) {
     notice_ = user_.message;
     notice_until_ = window_->time_seconds() + 15.0;
@@ -182,6 +192,7 @@ void WindowSession::setup() {
   watcher_.watch(game_options_.root_dir + "/assets/ships", "data");
   watcher_.watch(game_options_.root_dir + "/assets/effects", "data");
   watcher_.watch(game_options_.root_dir + "/shaders", "shaders");
+  watcher_.watch(options_.sounds_path, "sounds");
   watcher_.poll();
 }
 
@@ -259,6 +270,7 @@ void WindowSession::update(double frame_seconds) {
   const bool in_menu = menu_ && menu_->open();
   handle_actions(menu_commands, in_menu);
   if (in_menu) update_menu();
+  handle_sound_keys(in_menu);
   const bool paused = game_->paused();
   const bool capture = !paused && !(menu_ && menu_->open());
   if (capture != mouse_captured_) {
@@ -274,8 +286,20 @@ void WindowSession::update(double frame_seconds) {
   }
   pending_.insert(pending_.end(), menu_commands.begin(), menu_commands.end());
   step_ticks(frame_seconds);
+  audio_->frame(game_->world(), frame_seconds);
   show_results_when_decided();
   count_fps(frame_seconds);
+}
+
+// M toggles mute (not while the menu waits for a key to remap); a menu move or choice clicks.
+void WindowSession::handle_sound_keys(bool in_menu) {
+  auto hits = [&](const char* key) { return presses_between(previous_devices_, devices_, key_code(key)); };
+  const bool paused_menu = game_->paused() && !in_menu;
+  if ((in_menu || paused_menu) && hits("UP") + hits("DOWN") + hits("ENTER") + hits("ESCAPE") > 0)
+    audio_->ui("ui_click");
+  if ((menu_ && menu_->capturing()) || hits("M") == 0) return;
+  notice_ = audio_->toggle_mute() ? "Sound muted (M)" : "Sound on (M)";
+  notice_until_ = window_->time_seconds() + 2.0;
 }
 
 // With the main menu open only the screenshot and FPS keys act; the rest is the menu's.
@@ -339,6 +363,7 @@ void WindowSession::apply_changed_settings() {
   settings_ = user_render_settings();
   renderer_->apply_settings(settings_);
   apply_simulation_settings(settings_, game_options_);
+  audio_->apply_settings(settings_);
 }
 
 std::string WindowSession::attract_level() const { return game_options_.root_dir + "/levels/attract.json"; }
@@ -407,6 +432,7 @@ void WindowSession::navigate_pause_menu(std::vector<Command>& menu_commands) {
       game_options_.difficulty = Difficulty((int(game_options_.difficulty) + 1) % 3);
       game_options_.difficulty_override = true;
       break;
+    case PauseMenu::Item::Sound: audio_->toggle_mute(); break;
     case PauseMenu::Item::MainMenu:
       try {
         back_to_main_menu();
@@ -425,6 +451,9 @@ void WindowSession::reload_changed_files() {
     if (group == "shaders") {
       reload_error_ = renderer_->reload();
       std::printf("arcfire: shaders reloaded%s\n", reload_error_.empty() ? "" : " with errors (kept the old ones)");
+    } else if (group == "sounds") {
+      reload_error_ = audio_->reload();
+      std::printf("arcfire: sounds reloaded%s\n", reload_error_.empty() ? "" : " with errors (kept the old ones)");
     } else {
       try {
         auto fresh = std::make_unique<Game>(Game::load_level(level_, game_options_));
@@ -457,6 +486,7 @@ void WindowSession::step_ticks(double frame_seconds) {
     }
     if (recorder_) recorder_->record(*game_, frame, commands);
     game_->step(frame, commands);
+    audio_->after_tick(game_->world());
   }
 }
 
@@ -476,7 +506,7 @@ void WindowSession::draw() {
   hud_.pause_items.clear();
   for (PauseMenu::Item item : PauseMenu::items(decided, menu_.has_value()))
     hud_.pause_items.push_back(
-        PauseMenu::label(item, decided, game_options_.difficulty, w.difficulty, recorder_ != nullptr));
+        PauseMenu::label(item, decided, game_options_.difficulty, w.difficulty, recorder_ != nullptr, audio_->muted()));
   hud_.error_banner = reload_error_.empty() ? "" : "reload failed: " + reload_error_;
   hud_.notice = window_->time_seconds() < notice_until_ ? notice_ : "";
   const bool menu_open = menu_ && menu_->open();

@@ -1,0 +1,84 @@
+#include "audio/sound_library.h"
+
+#include "core/error.h"
+#include "core/json.h"
+
+namespace arc {
+namespace {
+
+SoundLayerDef::Source source_of(const std::string& name) {
+  if (name == "square") return SoundLayerDef::Source::Square;
+  if (name == "saw") return SoundLayerDef::Source::Saw;
+  if (name == "triangle") return SoundLayerDef::Source::Triangle;
+  if (name == "noise") return SoundLayerDef::Source::Noise;
+  return SoundLayerDef::Source::Sine;
+}
+
+SoundLayerDef parse_layer(JsonObject o) {
+  SoundLayerDef l;
+  l.source = source_of(o.choice("source", "sine", {"sine", "square", "saw", "triangle", "noise"}));
+  l.freq_start = o.number("freq", l.freq_start, 10, 20000);
+  l.freq_end = o.number("freq_end", l.freq_start, 10, 20000);
+  l.gain = o.number("gain", l.gain, 0, 4);
+  l.delay = o.number("delay", l.delay, 0, 10);
+  l.attack = o.number("attack", l.attack, 0.0005, 10);
+  l.hold = o.number("hold", l.hold, 0, 10);
+  l.decay = o.number("decay", l.decay, 0.001, 20);
+  l.decay_curve = o.number("decay_curve", l.decay_curve, 0.25, 8);
+  l.lowpass = o.number("lowpass", 0, 0, 20000);
+  l.highpass = o.number("highpass", 0, 0, 20000);
+  l.burst_period = o.number("burst_period", 0, 0, 5);
+  l.burst_length = o.number("burst_length", l.burst_period * 0.5, 0, 5);
+  l.jitter = o.number("jitter", 0, 0, 1);
+  if (l.burst_period > 0 && l.burst_length > l.burst_period)
+    o.fail_key("burst_length", "'burst_length' must not be longer than 'burst_period' (" +
+                                   std::to_string(l.burst_period) + " s)");
+  o.allow({"doc"});
+  o.finish();
+  return l;
+}
+
+SoundDef parse_sound(const std::string& name, JsonObject o) {
+  SoundDef s;
+  s.name = name;
+  s.loop = o.boolean("loop", false);
+  s.duration = o.number("duration", s.duration, 0.02, 10);
+  s.priority = int(o.integer("priority", s.priority, 0, 100));
+  s.gain = o.number("gain", s.gain, 0, 4);
+  s.positional = o.boolean("positional", true);
+  s.reference_distance = o.number("reference_distance", s.reference_distance, 0.01, 1e6);
+  s.max_distance = o.number("max_distance", s.max_distance, 0.01, 1e9);
+  s.rolloff = o.number("rolloff", s.rolloff, 0, 10);
+  s.seed = uint64_t(o.integer("seed", 1, 0, UINT32_MAX));
+  for (JsonObject layer : o.objects("layers")) s.layers.push_back(parse_layer(layer));
+  if (s.layers.empty()) o.fail("sound '" + name + "' needs 'layers': a non-empty array of layer objects");
+  o.allow({"doc"});
+  o.finish();
+  return s;
+}
+
+SoundLibraryDef parse_root(const std::shared_ptr<const JsonDoc>& doc) {
+  JsonObject root = JsonValue(doc, "", &doc->root()).object();
+  SoundLibraryDef lib;
+  lib.speed_of_sound = root.number("speed_of_sound", lib.speed_of_sound, 1, 1e6);
+  lib.doppler_factor = root.number("doppler_factor", lib.doppler_factor, 0, 10);
+  JsonObject sounds = root.require_object("sounds");
+  for (auto it = sounds.raw().begin(); it != sounds.raw().end(); ++it) {
+    JsonValue v = *sounds.get(it.key());
+    lib.sounds.push_back(parse_sound(it.key(), v.object()));
+  }
+  sounds.finish();
+  root.allow({"doc"});
+  root.finish();
+  return lib;
+}
+
+}  // namespace
+
+SoundLibraryDef load_sound_library(const std::string& path) { return parse_root(JsonDoc::load_file(path)); }
+
+SoundLibraryDef parse_sound_library(const std::string& text, const std::string& path) {
+  return parse_root(JsonDoc::parse(text, path));
+}
+
+}  // namespace arc

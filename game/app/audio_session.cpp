@@ -1,0 +1,126 @@
+#include "game/app/audio_session.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "audio/sound_library.h"
+#include "core/error.h"
+#include "game/sim/world.h"
+
+namespace arc {
+namespace {
+
+constexpr double kReferenceBlast = 48;  // a fighter's blast radius (collision radius 8 × 6)
+
+}  // namespace
+
+SoundCue sound_cue(const SoundEvent& e) {
+  SoundCue c;
+  c.sound = sound_kind_name(e.kind);
+  c.key = is_loop(e.kind) ? e.owner : 0;
+  c.position = e.position;
+  c.velocity = e.velocity;
+  c.gain = e.intensity;
+  if (e.kind == SoundKind::Explosion) {
+    const double scale = std::max(e.size, 1.0) / kReferenceBlast;
+    c.gain = std::clamp(std::sqrt(scale), 0.6, 1.6);
+    c.pitch = std::clamp(std::pow(scale, -0.3), 0.55, 1.4);
+  }
+  if (e.kind == SoundKind::EngineHum) c.pitch = 0.75 + 0.5 * e.intensity;
+  return c;
+}
+
+AudioMix audio_mix(const Settings& s) {
+  AudioMix m;
+  m.volume = s.number("audio.volume");
+  m.effects_volume = s.number("audio.effects_volume");
+  m.mute = s.flag("audio.mute");
+  m.voices = int(s.integer("audio.voices"));
+  return m;
+}
+
+AudioSession::AudioSession(const std::string& sounds_path, const Settings& settings, bool loopback)
+    : path_(sounds_path), mix_(audio_mix(settings)) {
+  SoundLibraryDef library = load_sound_library(sounds_path);  // throws before any device opens
+  AudioDesc desc;
+  desc.loopback = loopback;
+  desc.voices = mix_.voices;
+  engine_ = std::make_unique<AudioEngine>(desc);
+  engine_->set_mix(mix_);
+  engine_->load(library);
+}
+
+void AudioSession::apply_settings(const Settings& settings) {
+  const bool mute = mix_.mute;
+  mix_ = audio_mix(settings);
+  mix_.mute = mix_.mute || mute;  // M's toggle stands until the setting is changed to on
+  engine_->set_mix(mix_);
+}
+
+bool AudioSession::toggle_mute() {
+  mix_.mute = !mix_.mute;
+  engine_->set_mix(mix_);
+  return mix_.mute;
+}
+
+void AudioSession::after_tick(const World& w) {
+  ticked_ = true;
+  events_ = tracker_.collect(w);
+  for (const SoundEvent& e : events_) engine_->play(sound_cue(e));
+  stinger(w);
+}
+
+void AudioSession::frame(const World& w, double seconds) {
+  const glm::dvec3 velocity = (w.camera.position - w.prev_camera.position) / std::max(w.dt, 1e-9);
+  engine_->set_listener(w.camera.position, w.camera.orientation, velocity);
+  // A frame without a tick (a display faster than the tick rate) keeps the loops of the last.
+  if (!ticked_)
+    for (const SoundEvent& e : events_)
+      if (is_loop(e.kind)) engine_->play(sound_cue(e));
+  ticked_ = false;
+  engine_->update(seconds);
+}
+
+void AudioSession::ui(const std::string& sound) { engine_->play({.sound = sound}); }
+
+void AudioSession::stinger(const World& w) {
+  const int outcome = int(w.outcome);
+  if (outcome == stinger_outcome_) return;
+  stinger_outcome_ = outcome;
+  if (!w.player) return;  // the attract demo has no winner to cheer
+  if (w.outcome == Outcome::Victory) ui("victory");
+  if (w.outcome == Outcome::Defeat) ui("defeat");
+}
+
+std::string AudioSession::reload() {
+  try {
+    engine_->load(load_sound_library(path_));
+    return "";
+  } catch (const InputError& e) {
+    return e.what();
+  }
+}
+
+AudioCapture::AudioCapture(const std::string& sounds_path, const Settings& settings, std::string wav_path)
+    : session_(sounds_path, settings, true), wav_path_(std::move(wav_path)) {}
+
+void AudioCapture::after_tick(const World& w) {
+  session_.after_tick(w);
+  session_.frame(w, w.dt);
+  owed_ += w.dt * session_.engine().sample_rate();
+  const int frames = int(std::floor(owed_));
+  owed_ -= frames;
+  const size_t at = samples_.size();
+  samples_.resize(at + size_t(frames) * 2);
+  session_.engine().render(samples_.data() + at, frames);
+}
+
+size_t AudioCapture::finish() {
+  write_wav_stereo16(wav_path_, samples_, session_.engine().sample_rate());
+  std::printf("arcfire: sound: %s (%.2f s)\n", wav_path_.c_str(),
+              double(samples_.size() / 2) / session_.engine().sample_rate());
+  return samples_.size() / 2;
+}
+
+}  // namespace arc
