@@ -64,6 +64,12 @@ bool AudioSession::toggle_mute() {
   return mix_.mute;
 }
 
+double AudioSession::step_volume(int steps) {
+  mix_.volume = std::clamp(std::round(mix_.volume * 10.0 + steps) / 10.0, 0.0, 1.0);
+  engine_->set_mix(mix_);
+  return mix_.volume;
+}
+
 void AudioSession::after_tick(const World& w) {
   ticked_ = true;
   events_ = tracker_.collect(w);

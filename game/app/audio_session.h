@@ -38,6 +38,9 @@ class AudioSession {
   void apply_settings(const Settings& settings);
   bool toggle_mute();  // returns whether it is muted now
   bool muted() const { return mix_.mute; }
+  // The master volume in steps of 0.1 within [0, 1] (the pause menu's Volume item).
+  double step_volume(int steps);
+  double volume() const { return mix_.volume; }
   // The events of the tick just stepped, played; the last list stays for expectations.
   void after_tick(const World& w);
   // Listener at the camera, fades advanced by the frame's time.

@@ -32,17 +32,19 @@ namespace {
 // the simulated game, fixed when it starts, so a change says that it waits for the restart.
 // Started from the main menu, it also leads back there.
 struct PauseMenu {
-  enum class Item { Resume, Restart, Difficulty, Sound, MainMenu, Quit };
+  enum class Item { Resume, Restart, Difficulty, Sound, Volume, MainMenu, Quit };
   int selection = 0;
   static std::vector<Item> items(bool decided, bool has_main_menu) {
     std::vector<Item> v = decided ? std::vector<Item>{Item::Restart, Item::Resume, Item::Difficulty}
                                   : std::vector<Item>{Item::Resume, Item::Restart, Item::Difficulty};
     v.push_back(Item::Sound);
+    v.push_back(Item::Volume);
     if (has_main_menu) v.push_back(Item::MainMenu);
     v.push_back(Item::Quit);
     return v;
   }
-  static std::string label(Item item, bool decided, Difficulty chosen, int playing, bool recording, bool muted) {
+  static std::string label(Item item, bool decided, Difficulty chosen, int playing, bool recording, bool muted,
+                           double volume) {
     const char* restart = decided ? "Retry" : "Restart";
     switch (item) {
       case Item::Resume: return "Resume";
@@ -51,6 +53,7 @@ struct PauseMenu {
         return std::string("Difficulty: ") + difficulty_name(chosen) +
                (int(chosen) != playing ? std::string(" (applies on ") + (decided ? "retry)" : "restart)") : "");
       case Item::Sound: return muted ? "Sound: muted (M)" : "Sound: on (M)";
+      case Item::Volume: return "Volume: < " + std::to_string(int(std::lround(volume * 100))) + "% >";
       case Item::MainMenu: return std::string("Main menu") + (recording ? " (ends the recording)" : "");
       case Item::Quit: return "Quit";
     }
@@ -419,6 +422,9 @@ void WindowSession::navigate_pause_menu(std::vector<Command>& menu_commands) {
   const auto items = PauseMenu::items(game_->world().outcome != Outcome::Undecided, menu_.has_value());
   const int count = int(items.size());
   pause_menu_.selection = ((pause_menu_.selection + hits("DOWN") - hits("UP")) % count + count) % count;
+  if (items[size_t(pause_menu_.selection)] == PauseMenu::Item::Volume) {
+    if (const int steps = hits("RIGHT") - hits("LEFT")) audio_->step_volume(steps);
+  }
   if (hits("ENTER") + hits("SPACE") == 0) return;
   switch (items[size_t(pause_menu_.selection)]) {
     case PauseMenu::Item::Resume: menu_commands.push_back(Command::Resume); break;
@@ -433,6 +439,7 @@ void WindowSession::navigate_pause_menu(std::vector<Command>& menu_commands) {
       game_options_.difficulty_override = true;
       break;
     case PauseMenu::Item::Sound: audio_->toggle_mute(); break;
+    case PauseMenu::Item::Volume: audio_->step_volume(audio_->volume() >= 1.0 ? -10 : 1); break;  // Enter: up, wrapping
     case PauseMenu::Item::MainMenu:
       try {
         back_to_main_menu();
@@ -506,7 +513,8 @@ void WindowSession::draw() {
   hud_.pause_items.clear();
   for (PauseMenu::Item item : PauseMenu::items(decided, menu_.has_value()))
     hud_.pause_items.push_back(
-        PauseMenu::label(item, decided, game_options_.difficulty, w.difficulty, recorder_ != nullptr, audio_->muted()));
+        PauseMenu::label(item, decided, game_options_.difficulty, w.difficulty, recorder_ != nullptr, audio_->muted(),
+                        audio_->volume()));
   hud_.error_banner = reload_error_.empty() ? "" : "reload failed: " + reload_error_;
   hud_.notice = window_->time_seconds() < notice_until_ ? notice_ : "";
   const bool menu_open = menu_ && menu_->open();
