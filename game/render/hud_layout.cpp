@@ -157,7 +157,9 @@ void hud_target(const World& w, const Ship& me, const Projector& pr, int width, 
   const bool in_front = pr.project(tp, px, &depth);
   const bool on_screen = in_front && px.x >= 0 && px.x <= width && px.y >= 0 && px.y <= height;
   const double dist = std::sqrt(glm::dot(t.position - me.position, t.position - me.position));
-  if (on_screen) {
+  // Paused, the pause menu stands in the middle of the screen: only the target's panel stays.
+  const bool cues = !w.paused;
+  if (cues && on_screen) {
     const double r = t.cls->shield_radius * pr.focal / depth;
     const bool in_range = dist <= me.cls->beam.range;
     brackets(h, px, r, col, in_range ? 3.0f : 2.0f);
@@ -178,7 +180,7 @@ void hud_target(const World& w, const Ship& me, const Projector& pr, int width, 
         line(h, lp.x, lp.y + d, lp.x - d, lp.y, kHudYellow);
       }
     }
-  } else {
+  } else if (cues) {
     // Arrow at the screen edge toward the target.
     glm::dvec3 v = pr.to_view(tp);
     glm::dvec2 dir(v.x, -v.y);
@@ -198,15 +200,18 @@ void hud_target(const World& w, const Ship& me, const Projector& pr, int width, 
 }
 
 void hud_own(const World& w, const Ship& me, const Projector& pr, int width, int height, double alpha, HudLayer& h) {
-  // Crosshair where the guns converge ahead of the nose.
+  // Crosshair where the guns converge ahead of the nose; not while paused, where the pause
+  // menu stands in the middle of the screen.
   const glm::dvec3 pos = lerp_pos(me.prev_position, me.position, alpha);
   const glm::dquat q = glm::slerp(me.prev_orientation, me.orientation, alpha);
   glm::dvec2 c(width * 0.5, height * 0.5);
   pr.project(pos + forward_of(q) * me.cls->beam.range * 0.5, c);
-  line(h, c.x - 14, c.y, c.x - 5, c.y, kHudGreen);
-  line(h, c.x + 5, c.y, c.x + 14, c.y, kHudGreen);
-  line(h, c.x, c.y - 14, c.x, c.y - 5, kHudGreen);
-  line(h, c.x, c.y + 5, c.x, c.y + 14, kHudGreen);
+  if (!w.paused) {
+    line(h, c.x - 14, c.y, c.x - 5, c.y, kHudGreen);
+    line(h, c.x + 5, c.y, c.x + 14, c.y, kHudGreen);
+    line(h, c.x, c.y - 14, c.x, c.y - 5, kHudGreen);
+    line(h, c.x, c.y + 5, c.x, c.y + 14, kHudGreen);
+  }
   const double x = 24, y = height - 110;
   bar(h, x, y, 220, 12, me.cls->shield > 0 ? me.shield / me.cls->shield : 0.0, kHudBlue, "SHIELD");
   bar(h, x, y + 34, 220, 12, me.hull / me.cls->hull, me.hull < 0.3 * me.cls->hull ? kHudRed : kHudGreen, "HULL");
@@ -261,7 +266,7 @@ void layout_hud(const World& w, const CameraView& cam, const HudState& state, do
     layout_kill_feed(w, flying ? &w.ship(focus) : nullptr, state.rules, 24, 44, h);
     if (flying) {
       const Ship& me = w.ship(focus);
-      layout_combat_cues(w, me, pr, state.rules, alpha, width, height, h);
+      if (!w.paused) layout_combat_cues(w, me, pr, state.rules, alpha, width, height, h);
       hud_own(w, me, pr, width, height, alpha, h);
       hud_target(w, me, pr, width, height, alpha, h);
       layout_radar(w, me, state.rules, width, height, h);

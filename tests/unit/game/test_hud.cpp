@@ -56,6 +56,27 @@ TEST(Hud, BeamRangeCueOnTheTargetBrackets) {
   EXPECT_TRUE(has_text(far, "900 m"));
 }
 
+// Paused, the pause menu stands in the middle of the screen: no crosshair or target cues
+// show through it (the bars, radar and kill feed stay).
+TEST(Hud, NoCrosshairOrCuesThroughThePauseMenu) {
+  Game g = range_game();
+  auto green_lines_near_centre = [](const HudLayer& h) {
+    int n = 0;
+    for (const HudLine& l : h.lines)
+      if (std::hypot(l.x0 - 640.0, l.y0 - 360.0) < 40.0 && l.color == kHudGreen) ++n;
+    return n;
+  };
+  const HudLayer flying = hud_of(g.world());
+  EXPECT_GE(green_lines_near_centre(flying), 4) << "the crosshair";
+  EXPECT_TRUE(has_text(flying, "IN RANGE"));
+  g.step(InputFrame{}, {Command::Pause});
+  ASSERT_TRUE(g.world().paused);
+  const HudLayer paused = hud_of(g.world());
+  EXPECT_EQ(green_lines_near_centre(paused), 0);
+  EXPECT_FALSE(has_text(paused, "IN RANGE"));
+  EXPECT_TRUE(has_text(paused, "SHIELD"));
+}
+
 TEST(Hud, HitMarkerWhileTheBeamHitsAndNotBefore) {
   Game g = range_game();
   const World& w = g.world();
