@@ -117,26 +117,21 @@ double OverdrawBudget::estimate(const std::vector<ParticleInstance>& particles, 
 }
 
 // Each cluster drawn before moves its cap toward the frame's solution; a cluster new this
-// frame starts at the cap that meets the budget beside the others (at most the solution).
-void OverdrawBudget::update_caps(const std::vector<ParticleInstance>& particles, double target, double budget_px,
-                                 bool budgeted, double time_seconds) {
+// frame (nothing of it on screen to jump from) starts at the solution.
+void OverdrawBudget::update_caps(const std::vector<ParticleInstance>& particles, double target, double time_seconds) {
   const double dt = time_seconds - last_time_;
   const bool continuing = has_state_ && dt >= 0.0 && dt <= kRestartSeconds;
-  std::vector<std::pair<uint32_t, double>> next;
-  for (const ParticleInstance& p : particles) next.emplace_back(p.cluster, 0.0);
-  std::sort(next.begin(), next.end());
-  next.erase(std::unique(next.begin(), next.end(), [](auto& a, auto& b) { return a.first == b.first; }), next.end());
+  next_caps_.clear();
+  for (const ParticleInstance& p : particles) next_caps_.emplace_back(p.cluster, 0.0);
+  std::sort(next_caps_.begin(), next_caps_.end());
+  next_caps_.erase(std::unique(next_caps_.begin(), next_caps_.end(), [](auto& a, auto& b) { return a.first == b.first; }),
+                   next_caps_.end());
   const double lt = std::log(target);
-  bool any_fresh = false;
-  for (auto& [cluster, log_k] : next) {
+  for (auto& [cluster, log_k] : next_caps_) {
     const double before = continuing ? log_cap_of(cluster) : std::nan("");
-    log_k = std::isnan(before) ? std::nan("") : dt > 0.0 ? step_toward(before, lt, dt) : before;
-    any_fresh = any_fresh || std::isnan(log_k);
+    log_k = std::isnan(before) ? lt : dt > 0.0 ? step_toward(before, lt, dt) : before;
   }
-  caps_.swap(next);
-  const double fresh_log_k = lt;
-  for (auto& entry : caps_)
-    if (std::isnan(entry.second)) entry.second = fresh_log_k;
+  caps_.swap(next_caps_);
   has_state_ = true;
   last_time_ = time_seconds;
 }
@@ -151,16 +146,21 @@ OverdrawStats OverdrawBudget::apply(std::vector<ParticleInstance>& particles, st
   const bool budgeted = o.budget_layers > 0.0f;
   const double budget_px = std::max(0.0, double(o.budget_layers) * screen - fixed);
   const double target = budgeted ? solve(candidates_, budget_px, kMinCap, k_none) : k_none;
-  update_caps(particles, target, budget_px, budgeted, frame.time_seconds);
+  update_caps(particles, target, frame.time_seconds);
   s.cap = target < k_none * 0.999 ? target : 0.0;
 
   areas.resize(particles.size());
   size_t kept = 0;
+  uint32_t cluster = 0;
+  double k = k_none;
   for (size_t i = 0; i < particles.size(); ++i) {
     ParticleInstance p = particles[i];
     const Footprint& f = fp_[i];
     float area = f.area;
-    const double k = std::exp(log_cap_of(p.cluster));
+    if (i == 0 || p.cluster != cluster) {  // a cluster's particles come together: one look-up each
+      cluster = p.cluster;
+      k = std::exp(log_cap_of(cluster));
+    }
     if (k < k_none * 0.999 && double(f.threshold) > k) {
       const float r = float(k / double(f.threshold));
       const float fade = std::pow(r, kOverdrawFadeGamma[std::min<int>(p.screen_priority, 2)]);

@@ -26,9 +26,8 @@
 // time constant and a rate limit (0.08 s and 12 e-folds a second toward more reduction, 0.3 s
 // and 4 toward less: at 60 Hz no particle shrinks by more than 18 % from one frame to the
 // next), by the view's game time, so nothing pops. A cluster that was not drawn the frame
-// before (an explosion's first frame) has no size to jump from: it starts at the cap that
-// meets the budget beside the others (at most the frame's solution) and then eases toward
-// the solution like the rest. A frame that stands still in time keeps the caps; one that
+// before (an explosion's first frame) has no size to jump from: it starts at the frame's
+// solution and then follows it like the rest. A frame that stands still in time keeps the caps; one that
 // jumps back or by more than half a second starts every cluster from the solution.
 //
 //   OverdrawBudget budget;
@@ -93,14 +92,12 @@ class OverdrawBudget {
   double total_area(const std::vector<uint32_t>& set, double k) const;
   double solve(const std::vector<uint32_t>& set, double budget_px, double k_lo, double k_hi) const;
   double estimate(const std::vector<ParticleInstance>& particles, const OverdrawFrame& frame, float near_m, double& fixed);
-  void update_caps(const std::vector<ParticleInstance>& particles, double target, double budget_px, bool budgeted,
-                   double time_seconds);
+  void update_caps(const std::vector<ParticleInstance>& particles, double target, double time_seconds);
   double log_cap_of(uint32_t cluster) const;  // NaN when the cluster has none
 
   std::vector<Footprint> fp_;
   std::vector<uint32_t> candidates_;  // particles whose cap can bind at all
-  std::vector<uint32_t> fresh_;       // those of clusters new this frame
-  std::vector<std::pair<uint32_t, double>> caps_;  // log k by cluster id, sorted
+  std::vector<std::pair<uint32_t, double>> caps_, next_caps_;  // log k by cluster id, sorted
   double last_time_ = 0;
   bool has_state_ = false;
 };

@@ -21,6 +21,16 @@ HeadlessContext* headless(std::string& why) {
   return ctx.get();
 }
 
+RenderView dark_view() {
+  RenderView v;
+  v.camera.fov_y_radians = 0.9;
+  v.camera.near_plane = 0.1;
+  v.light_color = glm::vec3(0);
+  v.ambient = glm::vec3(0);
+  v.starfield_seed = 7;
+  return v;
+}
+
 RenderSettings plain_settings() {
   RenderSettings s;
   s.near_fade = 0.0f;

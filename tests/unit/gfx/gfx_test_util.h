@@ -17,6 +17,8 @@ namespace arc::test {
 HeadlessContext* headless(std::string& why);
 
 RenderSettings plain_settings();  // no near fade, full sort, given depth mode defaults
+// Camera at the origin looking along −Z (fov 0.9, near 0.1), no light or ambient, starfield 7.
+RenderView dark_view();
 void dump_if_asked(const std::string& name, const Image& img);  // $ARCFIRE_GFX_DUMP/<name>.png
 float channel(const Image& img, int x, int y, int c);  // 0..1
 

@@ -16,15 +16,7 @@ namespace {
 using scenes::particle;
 using test::channel;
 
-RenderView dark_view() {
-  RenderView v;
-  v.camera.fov_y_radians = 0.9;
-  v.camera.near_plane = 0.1;
-  v.light_color = glm::vec3(0);
-  v.ambient = glm::vec3(0);
-  v.starfield_seed = 7;
-  return v;
-}
+using test::dark_view;
 
 std::unique_ptr<Renderer> make_renderer(bool float_scene, HdrFormat format = HdrFormat::Rgba16f) {
   RendererDesc d;

@@ -18,16 +18,7 @@ namespace {
 using test::channel;
 using scenes::particle;
 
-RenderView base_view() {
-  RenderView v;
-  v.camera.position = {0, 0, 0};
-  v.camera.fov_y_radians = 0.9;
-  v.camera.near_plane = 0.1;
-  v.light_color = glm::vec3(0);
-  v.ambient = glm::vec3(0);
-  v.starfield_seed = 7;
-  return v;
-}
+RenderView base_view() { return test::dark_view(); }
 
 std::unique_ptr<Renderer> make_renderer(bool float_scene = false) {
   RendererDesc d;
