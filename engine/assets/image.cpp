@@ -9,6 +9,7 @@
 #include "assets/image_decode.h"
 #include "assets/image.h"
 #include "core/error.h"
+#include "core/file_writer.h"
 
 namespace arc {
 namespace {
@@ -104,29 +105,29 @@ Image load_sprite(const std::string& path) {
   return img;
 }
 
-void save_image(const std::string& path, const Image& image) {
+std::vector<uint8_t> encode_image(const std::string& path, const Image& image) {
   if (image.width <= 0 || image.height <= 0 || image.rgba.size() != size_t(image.width) * size_t(image.height) * 4)
     throw InputError(path + ": cannot save an image whose size does not match its pixel data");
-  // The writer is chosen by the final name's extension; the temporary name only has to be unique.
-  auto out = OIIO::ImageOutput::create(path);
-  if (!out) throw InputError(path + ": no image writer for this file extension: " + OIIO::geterror());
-  const std::string tmp = path + ".tmp";
+  // Encoded in memory: OIIO's own file writes (libpng's fwrite) go unchecked, so the bytes
+  // reach the disk through core/file_writer.h instead. The encoder is chosen by extension.
+  std::vector<uint8_t> bytes;
+  OIIO::Filesystem::IOVecOutput sink(bytes);
+  auto out = OIIO::ImageOutput::create(path, &sink);
+  if (!out || !out->supports("ioproxy"))
+    throw InputError(path + ": no image writer for this file extension that can encode in memory (use .png)");
   OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::UINT8);
   spec.attribute("oiio:UnassociatedAlpha", 1);
-  if (!out->open(tmp, spec)) throw InputError(path + ": cannot write image: " + out->geterror());
-  const bool wrote = out->write_image(OIIO::TypeDesc::UINT8, image.rgba.data());
-  const bool closed = out->close();
-  if (!wrote || !closed) {
-    std::error_code ec;
-    std::filesystem::remove(tmp, ec);
-    throw InputError(path + ": cannot write image: " + out->geterror());
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::filesystem::remove(tmp, ec);
-    throw InputError(path + ": cannot replace file: " + ec.message());
-  }
+  if (!out->set_ioproxy(&sink) || !out->open(path, spec) ||
+      !out->write_image(OIIO::TypeDesc::UINT8, image.rgba.data()) || !out->close())
+    throw InputError(path + ": cannot encode image: " + out->geterror());
+  return bytes;
+}
+
+void save_image(const std::string& path, const Image& image) {
+  const std::vector<uint8_t> bytes = encode_image(path, image);
+  FileWriter file(path);
+  file.write(bytes.data(), bytes.size());
+  file.commit();
 }
 
 }  // namespace arc

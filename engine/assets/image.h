@@ -1,8 +1,9 @@
 // assets/image.h — RGBA8 images as plain CPU data, read and written through OpenImageIO (no GL).
 //
 // load_image() reads any format OpenImageIO knows into RGBA8; load_sprite() also premultiplies
-// colour by alpha (Ilmonen eq. 10: tcola = tcol·talpha). save_image() writes atomically (a
-// temporary file renamed into place). Every failure throws arc::InputError("path: what is wrong").
+// colour by alpha (Ilmonen eq. 10: tcola = tcol·talpha). save_image() encodes in memory and writes
+// through core/file_writer.h (checked, atomic; WriteError). Other failures throw
+// arc::InputError("path: what is wrong").
 //
 //   arc::Image smoke = arc::load_sprite("assets/textures/sprite_smoke.png");
 //   arc::save_image("out/smoke.png", smoke);
@@ -25,7 +26,9 @@ Image load_sprite(const std::string& path);  // RGBA8, premultiplied
 void premultiply(Image& image);
 // Reverses the row order (GL reads images bottom to top; Image rows run top to bottom).
 void flip_rows(Image& image);
-// Writes RGBA8 as PNG (or any format by extension) through OpenImageIO, atomically.
+// RGBA8 encoded in memory as the format of path's extension (PNG), through OpenImageIO.
+std::vector<uint8_t> encode_image(const std::string& path, const Image& image);
+// encode_image(), then written through core/file_writer.h: checked, atomic, WriteError on failure.
 void save_image(const std::string& path, const Image& image);
 
 }  // namespace arc

@@ -2,19 +2,25 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
-#include <unistd.h>
 
 #include "core/error.h"
+#include "core/file_writer.h"
 
 namespace arc {
 namespace {
 
+// The shortest text that reads back as exactly v: "got 1000000000000.0001" shows why a value
+// just over a limit of 1e+12 is out, where six significant digits would print "1e+12".
 std::string fmt_num(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
+  char buf[32];
+  for (int digits = 6; digits <= 17; ++digits) {
+    std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+    if (std::strtod(buf, nullptr) == v) break;
+  }
+  return buf;
 }
 
 // Converts byte offsets to 1-based line and column.
@@ -418,29 +424,10 @@ void JsonObject::finish() const {
 // ---- files -----------------------------------------------------------------------------------
 
 void write_file_atomic(const std::string& path, const std::string& text, const std::function<void()>& before_rename) {
-  std::string tmp = path + ".tmp." + std::to_string(::getpid());
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw InputError(path + ": cannot write (folder missing or not writable)");
-    out << text;
-    out.flush();
-    if (!out) {
-      std::remove(tmp.c_str());
-      throw InputError(path + ": write failed (disk full?)");
-    }
-  }
-  if (before_rename) {
-    try {
-      before_rename();
-    } catch (...) {
-      std::remove(tmp.c_str());
-      throw;
-    }
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw InputError(path + ": cannot replace file");
-  }
+  FileWriter out(path);
+  out.write(text);
+  if (before_rename) before_rename();  // a throw here leaves the old file: ~FileWriter removes the temporary
+  out.commit();
 }
 
 }  // namespace arc

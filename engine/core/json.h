@@ -123,8 +123,8 @@ std::string json_pointer_escape(const std::string& key);
 // "a, b or c" for messages.
 std::string join_allowed(const std::vector<std::string>& names);
 
-// Writes text to path atomically: a temporary file in the same folder, then rename.
-// Throws InputError naming the path when the folder is not writable. `before_rename` runs
+// Writes text to path atomically through core/file_writer.h's FileWriter (every write checked,
+// a temporary file in the same folder, then rename); WriteError on failure. `before_rename` runs
 // between the two (tests throw from it to stand for a crash there: the old file stays whole).
 void write_file_atomic(const std::string& path, const std::string& text,
                        const std::function<void()>& before_rename = {});

@@ -96,7 +96,9 @@ int MeshPass::draw(const RenderView& v, const Program& mesh, const glm::mat4& vi
   int draw_calls = 0;
   glEnable(GL_DEPTH_TEST);
   glDepthMask(GL_TRUE);
-  glDepthFunc(reversed_z ? GL_GREATER : GL_LESS);
+  // Standard depth keeps equal depths: a float buffer rounds 1 − near/d to exactly 1 (the clear
+  // value) beyond about near × 1.7e7 (8e6 m at near 0.5), where GL_LESS would drop whole ships.
+  glDepthFunc(reversed_z ? GL_GREATER : GL_LEQUAL);
   glDisable(GL_CULL_FACE);
   glUseProgram(mesh.id);
   glUniformMatrix4fv(mesh.loc("u_view_proj"), 1, GL_FALSE, glm::value_ptr(view_proj));

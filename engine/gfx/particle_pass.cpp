@@ -170,7 +170,7 @@ void ParticlePass::upload(const std::vector<ParticleInstance>& particles) {
 int ParticlePass::draw(const ParticleBatch& batch, const ShaderPrograms& programs, const RenderSettings& rs,
                        const ParticleFrame& frame, long long* fragments) {
   glEnable(GL_DEPTH_TEST);
-  glDepthFunc(rs.reversed_z ? GL_GREATER : GL_LESS);
+  glDepthFunc(rs.reversed_z ? GL_GREATER : GL_LEQUAL);  // as the mesh pass: far ones round to depth 1
   glDepthMask(GL_FALSE);
   glEnable(GL_BLEND);
   glBlendEquation(GL_FUNC_ADD);

@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "audio/sound_library.h"
+#include "core/file_writer.h"
 #include "core/json.h"
 #include "game/app/input_bindings.h"
 
@@ -135,6 +136,10 @@ void resolve_options(const CLI::App& app, const CommandLineText& t, AppOptions& 
   if (!o.audio_out.empty() && !o.headless && o.replay_path.empty())
     throw InputError("--audio-out: only with --headless or --replay");
   if (o.update_golden && o.replay_path.empty()) throw InputError("--update-golden: only with --replay");
+  // Output files are checked before any run starts (core/file_writer.h); --out and --summary
+  // are checked by the modes that write them.
+  if (!o.audio_out.empty()) check_output_file(o.audio_out, "--audio-out");
+  if (!o.record_path.empty()) check_output_file(o.record_path, "--record");
 }
 
 }  // namespace

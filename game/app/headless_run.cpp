@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "core/error.h"
-#include "core/json.h"
+#include "core/file_writer.h"
 #include "game/app/audio_session.h"
 #include "game/app/contact_sheet.h"
 #include "game/app/frame_renderer.h"
@@ -23,13 +23,6 @@ std::string frame_name(const std::string& dir, uint64_t tick) {
   return (std::filesystem::path(dir) / buf).string();
 }
 
-void make_dir(const std::string& dir) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec || !std::filesystem::is_directory(dir))
-    throw InputError("--out " + dir + ": cannot create folder (" + ec.message() + ")");
-}
-
 }  // namespace
 
 int run_headless(const AppOptions& o) {
@@ -41,8 +34,10 @@ int run_headless(const AppOptions& o) {
   int64_t every = o.every > 0 ? o.every : (demo ? 60 : 30);
   const bool render = !o.no_render && !out.empty();
 
+  // Every output is checked before the first tick: a bad path is refused, not found at the end.
+  if (!out.empty()) check_output_dir(out, "--out");
+  if (!o.summary_path.empty()) check_output_file(o.summary_path, "--summary");
   Game game = Game::load_level(level, o.game);
-  if (!out.empty()) make_dir(out);
   std::unique_ptr<FrameRenderer> renderer;
   if (render) {
     FrameRendererDesc desc;
@@ -71,7 +66,9 @@ int run_headless(const AppOptions& o) {
       if (demo) frames.push_back(std::move(img));
     }
   }
-  if (!o.summary_path.empty()) write_file_atomic(o.summary_path, game.summary_json());
+  // Each write throws WriteError on failure (exit 1, one line): nothing below reports a file
+  // that is not complete on disk.
+  if (!o.summary_path.empty()) write_file_checked(o.summary_path, game.summary_json());
   if (audio) audio->finish();
   if (!written.empty())
     std::printf("arcfire: wrote %zu frames to %s/ (%s .. %s)\n", written.size(), out.c_str(),

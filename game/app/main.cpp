@@ -1,10 +1,12 @@
 // arcfire — entry point. Parses the command line and hands over to one of the modes:
 // window (play), headless frames / demo / summary, replay, serialization test.
-// Exit codes: 0 success, 1 a check failed, 2 bad input or usage.
+// Exit codes: 0 success, 1 a check failed (a write that failed on the way counts as one), 2 bad
+// input or usage (an output path that cannot be used too).
 #include <cstdio>
 #include <exception>
 
 #include "core/error.h"
+#include "core/file_writer.h"
 #include "game/app/app_options.h"
 #include "game/app/headless_run.h"
 #include "game/app/menu_snapshots.h"
@@ -22,6 +24,9 @@ int main(int argc, char** argv) {
     if (!options.menu_script.empty()) return arc::run_menu_script(options);
     if (options.headless || options.demo) return arc::run_headless(options);
     return arc::run_window(options);
+  } catch (const arc::WriteError& e) {
+    std::fprintf(stderr, "arcfire: %s\n", e.what());
+    return e.exit_code;
   } catch (const arc::InputError& e) {
     std::fprintf(stderr, "arcfire: %s\n", e.what());
     return arc::kExitBadInput;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/file_writer.h"
 #include "core/json.h"
 #include "game/app/audio_session.h"
 #include "game/app/frame_renderer.h"
@@ -45,10 +46,25 @@ std::string trimmed(const std::string& line) {
   return b == std::string::npos ? "" : line.substr(b, e - b + 1);
 }
 
-void make_dir(const std::string& dir, const std::string& what) {
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec || !fs::is_directory(dir)) throw InputError(what + " " + dir + ": cannot create folder (" + ec.message() + ")");
+// libpng reports a damaged PNG on stderr itself before OpenImageIO's error comes back: those
+// lines are captured so that a damaged golden is one FAIL line of the report. Empty `why` = read.
+std::optional<Image> load_golden(const std::string& path, std::string& why) {
+  std::fflush(stderr);
+  const int saved = ::dup(STDERR_FILENO);
+  std::FILE* sink = std::tmpfile();
+  const bool captured = saved >= 0 && sink && ::dup2(::fileno(sink), STDERR_FILENO) >= 0;
+  std::optional<Image> image;
+  try {
+    image = load_image(path);
+  } catch (const InputError& e) {
+    why = e.what();
+  }
+  std::fflush(stderr);
+  if (captured) ::dup2(saved, STDERR_FILENO);
+  if (saved >= 0) ::close(saved);
+  if (sink) std::fclose(sink);
+  std::replace(why.begin(), why.end(), '\n', ' ');
+  return image;
 }
 
 class ProgressBar {
@@ -91,6 +107,7 @@ class ReplayPlayer {
   void check_hash(size_t i, uint64_t t, uint64_t cheap, uint64_t full);
   void check_hashes(uint64_t t, size_t& next_hash);
   void check_snapshot(const replay::SnapshotCheck& s, uint64_t t);
+  void stage(const std::string& path, const void* data, size_t size);
 
   const ReplayRunOptions& opt_;
   replay::Script script_;
@@ -114,6 +131,9 @@ class ReplayPlayer {
   SoundEventTracker sounds_;       // `expect sound` lines, without an audio device
   std::unique_ptr<AudioCapture> audio_;  // --audio-out
   std::vector<SoundEvent> tick_sounds_;  // the sound events of the tick just stepped
+  // --update-golden: every new golden file written and closed, renamed into place together
+  // only when all of them are complete, so a failed update leaves the old goldens whole.
+  std::vector<std::unique_ptr<FileWriter>> staged_;
 };
 
 ReplayPlayer::ReplayPlayer(const ReplayRunOptions& opt, replay::Script script)
@@ -146,6 +166,16 @@ ReplayPlayer::ReplayPlayer(const ReplayRunOptions& opt, replay::Script script)
     desc.height = script_.header.snapshot_height;
     renderer_ = std::make_unique<FrameRenderer>(desc, settings_, game_);
   }
+  // Output folders are checked before the first tick (core/file_writer.h).
+  if (renderer_ && !script_.snapshots.empty()) check_output_dir(out_dir_, "--out");
+  if (opt.update_golden) check_output_dir(golden_dir_, "golden folder");
+}
+
+void ReplayPlayer::stage(const std::string& path, const void* data, size_t size) {
+  auto file = std::make_unique<FileWriter>(path);
+  file->write(data, size);
+  file->close();
+  staged_.push_back(std::move(file));
 }
 
 void ReplayPlayer::fail(uint64_t tick, const replay::SourceLine& src, const std::string& why) {
@@ -271,13 +301,11 @@ void ReplayPlayer::check_snapshot(const replay::SnapshotCheck& s, uint64_t t) {
   ++result_.frames_rendered;
   const std::string golden = (fs::path(images_dir_) / (s.name + ".png")).string();
   const std::string written = (fs::path(out_dir_) / (s.name + ".png")).string();
-  make_dir(out_dir_, "--out");
   save_image(written, actual);
   const bool own_images = script_.header.snapshots_like.empty();
   if (opt_.update_golden && own_images) {
-    make_dir(images_dir_, "golden folder");
-    save_image(golden, actual);
-    if (!opt_.quiet) std::printf("updated %s\n", golden.c_str());
+    const std::vector<uint8_t> png = encode_image(golden, actual);
+    stage(golden, png.data(), png.size());
     return;
   }
   if (!fs::exists(golden)) {
@@ -286,14 +314,19 @@ void ReplayPlayer::check_snapshot(const replay::SnapshotCheck& s, uint64_t t) {
                                    : "on " + script_.header.snapshots_like + ", whose frames this script must match"));
     return;
   }
-  Image expected = load_image(golden);
-  ImageDiff d = compare_images(expected, actual, compare_rule_);
+  std::string unreadable;
+  const std::optional<Image> expected = load_golden(golden, unreadable);
+  if (!expected) {
+    fail(t, s.src, "golden image damaged: " + unreadable + "; check " + written + " and run --update-golden");
+    return;
+  }
+  ImageDiff d = compare_images(*expected, actual, compare_rule_);
   if (d.passed) {
     pass(t, s.src);
     return;
   }
   std::string prefix = (fs::path(out_dir_) / s.name).string();
-  write_failure_images(prefix, actual, expected);
+  write_failure_images(prefix, actual, *expected);
   fail(t, s.src, d.summary() + "; wrote " + prefix + "_actual.png and " + prefix + "_diff.png");
 }
 
@@ -327,10 +360,15 @@ void ReplayPlayer::run() {
 }
 
 void ReplayPlayer::update_golden(const std::string& original_text) {
-  make_dir(golden_dir_, "golden folder");
-  write_file_atomic(log_path(), replay::write_hash_log(log_));
-  std::string filled = replay::fill_hash_values(original_text, script_, hash_values_);
-  if (filled != original_text) write_file_atomic(script_.path, filled);
+  const std::string log = replay::write_hash_log(log_);
+  stage(log_path(), log.data(), log.size());
+  const std::string filled = replay::fill_hash_values(original_text, script_, hash_values_);
+  if (filled != original_text) stage(script_.path, filled.data(), filled.size());
+  for (const auto& file : staged_) {
+    file->commit();
+    if (!opt_.quiet && file->path() != log_path() && file->path() != script_.path)
+      std::printf("updated %s\n", file->path().c_str());
+  }
   std::printf("updated %zu hash lines in %s and the hash log %s\n", script_.hashes.size(), script_.path.c_str(),
               log_path().c_str());
 }

@@ -27,6 +27,10 @@ int run_serialization_test(const SerializationTestOptions& opt) {
     game_options = script_game_options(*script, script_settings(*script, opt.settings, data_root(opt.game)), opt.game);
     last = script->last_tick();
   }
+  if (uint64_t(opt.every) > last)
+    throw InputError("--serialization-test: N (" + std::to_string(opt.every) + ") is larger than the run (" +
+                     std::to_string(last) + " ticks), so nothing would be saved; use N up to " +
+                     std::to_string(last) + " or more --ticks");
   Game original = Game::load_level(level, game_options);
   std::optional<Game> restored;
   uint64_t restored_at = 0;

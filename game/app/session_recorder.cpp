@@ -1,14 +1,93 @@
 // The session recorder: a live Game's input, commands and periodic hashes as a replay script.
 #include "game/app/session_recorder.h"
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
 
 #include "core/error.h"
-#include "core/json.h"
+#include "core/file_writer.h"
 #include "game/app/script_feeder.h"
 #include "game/sim/world.h"
 
 namespace arc {
+namespace {
+
+std::string read_small_file(const std::string& path) {
+  std::string text;
+  if (std::FILE* f = std::fopen(path.c_str(), "rb")) {
+    char buf[64];
+    text.assign(buf, std::fread(buf, 1, sizeof buf, f));
+    std::fclose(f);
+  }
+  while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
+  return text;
+}
+
+bool same_file(int fd, const std::string& path) {
+  struct stat a {}, b {};
+  return ::fstat(fd, &a) == 0 && ::stat(path.c_str(), &b) == 0 && a.st_dev == b.st_dev && a.st_ino == b.st_ino;
+}
+
+}  // namespace
+
+// flock() on NAME.lock: released by the kernel when the process ends, however it ends. The
+// file is removed by its holder, so a lock taken on a file just removed is retried.
+void SessionRecorder::lock() {
+  lock_path_ = path_ + ".lock";
+  for (int attempt = 0; attempt < 5; ++attempt) {
+    const int fd = ::open(lock_path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
+    if (fd < 0)
+      throw WriteError("--record " + path_ + ": cannot create the lock file " + lock_path_ + ": " + system_reason(errno),
+                       kExitBadInput);
+    if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+      const int err = errno;
+      ::close(fd);
+      if (err != EWOULDBLOCK)
+        throw WriteError("--record " + path_ + ": cannot lock " + lock_path_ + ": " + system_reason(err), kExitBadInput);
+      const std::string holder = read_small_file(lock_path_);
+      throw InputError("--record " + path_ + ": another arcfire" + (holder.empty() ? "" : " (pid " + holder + ")") +
+                       " is recording to this file; refused (lock " + lock_path_ + ")");
+    }
+    if (same_file(fd, lock_path_)) {
+      const std::string pid = std::to_string(::getpid()) + "\n";
+      if (::ftruncate(fd, 0) == 0) write_all(fd, pid.data(), pid.size());  // who holds it, for the message
+      lock_fd_ = fd;
+      return;
+    }
+    ::close(fd);
+  }
+  throw InputError("--record " + path_ + ": cannot take the lock " + lock_path_ + " (it keeps being replaced)");
+}
+
+void SessionRecorder::unlock() {
+  if (lock_fd_ < 0) return;
+  ::unlink(lock_path_.c_str());
+  ::close(lock_fd_);
+  lock_fd_ = -1;
+}
+
+// An existing recording moves to NAME.bak. An existing NAME.bak is older still: the session
+// that left it ended before its first second, so NAME is that short file and NAME.bak stays.
+void SessionRecorder::keep_previous() {
+  namespace fs = std::filesystem;
+  bak_path_ = path_ + ".bak";
+  std::error_code ec;
+  if (fs::exists(path_, ec) && !fs::exists(bak_path_, ec)) {
+    if (std::rename(path_.c_str(), bak_path_.c_str()) != 0)
+      throw WriteError("--record " + path_ + ": cannot keep the previous recording as " + bak_path_ + ": " +
+                           system_reason(errno),
+                       kExitBadInput);
+    moved_to_bak_ = true;
+  }
+  bak_pending_ = fs::exists(bak_path_, ec);
+}
 
 SessionRecorder::SessionRecorder(const std::string& path, const std::string& level_path, const Game& game,
                                  const std::string& build_id)
@@ -26,27 +105,42 @@ SessionRecorder::SessionRecorder(const std::string& path, const std::string& lev
   h.particle_budget = w.options.particle_budget;
   h.lightning_interval = w.options.lightning_interval;
   h.substeps = w.options.substeps;
-  // The header lands complete or not at all; lines are then appended to the renamed file.
-  write_file_atomic(path, replay::header_text(h) + "# recorded live session\n");
-  file_ = std::fopen(path.c_str(), "ab");
-  if (!file_) throw InputError("--record " + path + ": cannot open for appending");
-  last_tick_ = w.steps;
+  const std::string header = replay::header_text(h) + "# recorded live session\n";
+  lock();
+  try {
+    keep_previous();
+    // The header lands complete or not at all; lines are then appended to the renamed file.
+    write_file_checked(path, header);
+    fd_ = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
+    if (fd_ < 0) throw WriteError("--record " + path + ": cannot open for appending: " + system_reason(errno), kExitBadInput);
+  } catch (...) {
+    if (moved_to_bak_) std::rename(bak_path_.c_str(), path_.c_str());  // no new recording: the old one is back
+    unlock();
+    throw;
+  }
+  size_ = header.size();
+  first_tick_ = last_tick_ = w.steps;
 }
 
 SessionRecorder::~SessionRecorder() {
-  if (finished_ || !file_) return;
-  write(replay::end_line(last_tick_));
-  std::fclose(file_);
+  if (!finished_ && fd_ >= 0) write(replay::end_line(last_tick_));
+  if (fd_ >= 0) ::close(fd_);
+  unlock();
 }
 
+// Appends whole lines or nothing: a failed write is cut back to the last complete line.
 void SessionRecorder::write(const std::string& text) {
-  if (text.empty() || !file_) return;
-  std::fwrite(text.data(), 1, text.size(), file_);
-  std::fflush(file_);
+  if (text.empty() || fd_ < 0 || failed()) return;
+  if (const int err = write_all(fd_, text.data(), text.size())) {
+    const bool cut = ::ftruncate(fd_, off_t(size_)) == 0;
+    error_ = path_ + ": cannot write: " + system_reason(err) + (cut ? "" : " (and cannot cut the last line short)");
+    return;
+  }
+  size_ += text.size();
 }
 
 void SessionRecorder::record(const Game& game, const InputFrame& input, const std::vector<Command>& commands) {
-  if (finished_) return;
+  if (finished_ || failed()) return;
   // Script ticks count step() calls: paused steps do not advance game time but do count.
   const uint64_t t = game.world().steps;
   std::string lines;
@@ -67,18 +161,47 @@ void SessionRecorder::record(const Game& game, const InputFrame& input, const st
     lines += replay::command_line(e);
   }
   write(lines);
+  if (failed()) {
+    replays_to_ = t;
+    return;
+  }
   last_tick_ = t + 1;
+  if (bak_pending_ && last_tick_ - first_tick_ >= tick_rate_) {
+    ::unlink(bak_path_.c_str());  // the new session has its first second: it replaces the old one
+    bak_pending_ = false;
+  }
 }
 
 void SessionRecorder::finish(const Game& game) {
-  if (finished_ || !file_) return;
+  if (finished_ || fd_ < 0) return;
   replay::HashCheck h;
   h.tick = game.world().steps;
   h.value = game.hash();
+  const bool failed_before = failed();
   write(replay::hash_line(h) + replay::end_line(h.tick));
-  std::fclose(file_);
-  file_ = nullptr;
+  if (!failed_before) replays_to_ = h.tick;
+  ::close(fd_);
+  fd_ = -1;
   finished_ = true;
+  unlock();
+}
+
+std::string SessionRecorder::stop(const Game& game, const std::string& why) {
+  finish(game);
+  const std::string tick = std::to_string(replays_to_);
+  const std::string kept = bak_pending_ ? "; it has less than a second, so the previous recording stays as " + bak_path_
+                                        : "";
+  if (failed()) {
+    std::fprintf(stderr, "arcfire: %s; recording stopped, it replays up to tick %s%s\n", error_.c_str(), tick.c_str(),
+                 kept.c_str());
+    return "Recording stopped: " + error_ + " (it replays up to tick " + tick + ")";
+  }
+  if (why.empty()) std::printf("arcfire: recorded %s%s\n", path_.c_str(), kept.c_str());
+  else
+    std::printf("arcfire: recording %s stopped by the %s; it replays up to tick %s%s\n", path_.c_str(), why.c_str(),
+                tick.c_str(), kept.c_str());
+  std::fflush(stdout);
+  return "Recording stopped (" + why + "): " + path_ + " replays up to here";
 }
 
 }  // namespace arc

@@ -85,6 +85,7 @@ class WindowSession {
   void setup();
   bool open() const { return !window_->should_close(); }
   double time() const { return window_->time_seconds(); }
+  bool write_failed() const { return write_failed_ || (recorder_ && recorder_->failed()); }
   // One frame's work before drawing: devices to input and actions, the pause menu, reloads of
   // changed files, and the fixed-step ticks that `frame_seconds` of wall clock owe.
   void update(double frame_seconds);
@@ -145,12 +146,11 @@ class WindowSession {
   double next_watch_ = 0;     // window time of the next poll of the watched files
   double fps_seconds_ = 0;    // frames and time since the FPS counter was last updated
   int fps_frames_ = 0;
+  bool write_failed_ = false;  // a recording failed to write: the session exits 1
 };
 
 WindowSession::~WindowSession() {
-  if (!recorder_) return;
-  recorder_->finish(*game_);
-  std::printf("arcfire: recorded %s\n", recorder_->path().c_str());
+  if (recorder_) recorder_->stop(*game_, "");
 }
 
 void WindowSession::setup() {
@@ -256,12 +256,9 @@ void WindowSession::set_flight_scale() {
 // which stays replayable, and the screen says so.
 void WindowSession::end_recording(const char* why) {
   if (!recorder_) return;
-  recorder_->finish(*game_);
-  notice_ = "Recording stopped (" + std::string(why) + "): " + recorder_->path() + " replays up to here";
+  notice_ = recorder_->stop(*game_, why);
   notice_until_ = window_->time_seconds() + 8.0;
-  std::printf("arcfire: recording %s stopped by the %s; it replays up to tick %llu\n", recorder_->path().c_str(), why,
-              static_cast<unsigned long long>(game_->world().steps));
-  std::fflush(stdout);
+  write_failed_ = write_failed_ || recorder_->failed();
   recorder_.reset();
 }
 
@@ -492,6 +489,7 @@ void WindowSession::step_ticks(double frame_seconds) {
       pending_.clear();
     }
     if (recorder_) recorder_->record(*game_, frame, commands);
+    if (recorder_ && recorder_->failed()) end_recording("write error");  // on screen; the file stays valid
     game_->step(frame, commands);
     audio_->after_tick(game_->world());
   }
@@ -558,7 +556,7 @@ int run_window(const AppOptions& o) {
     last = now;
     session.draw();
   }
-  return kExitOk;
+  return session.write_failed() ? kExitCheckFailed : kExitOk;
 }
 
 }  // namespace arc

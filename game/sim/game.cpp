@@ -4,6 +4,7 @@
 
 #include <array>
 #include <bit>
+#include <cstdio>
 #include <optional>
 #include <ostream>
 #include <sstream>
@@ -182,7 +183,10 @@ std::string Game::summary_json() const {
   j["particles"] = st.live_particles;
   j["clusters"] = st.live_clusters;
   j["refused_particles"] = st.refused_particles;
-  j["hash"] = hash();
+  // 16 hex digits, as the replay prints hashes: a JSON number above 2^53 is rounded by most readers.
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash()));
+  j["hash"] = hex;
   return j.dump(2) + "\n";
 }
 
