@@ -1,10 +1,14 @@
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <set>
 #include <unistd.h>
 #include <gtest/gtest.h>
 
 #include "core/error.h"
+#include "core/json.h"
 #include "game/sim/defs.h"
 #include "game/sim/effects.h"
 #include "test_helpers.h"
@@ -298,6 +302,31 @@ TEST(LevelMissions, BlockIsReadAndErrorsArePositioned) {
   EXPECT_NE(e.find("'category' must be one of \"mission\", \"effects\" or \"demo\""), std::string::npos) << e;
   e = error_of(with_mission(R"({ "title": "T", "briefing": "B.", "objective": "O.", "order": 1, "brief": "x" })"));
   EXPECT_NE(e.find("unknown key 'brief'"), std::string::npos) << e;
+}
+
+// levels/README.md states the position limit once; the loader takes exactly that limit, and a
+// value just over it is reported with the digits that show why (not "got 1e+12").
+TEST(LevelFiles, PositionLimitIsTheReadmesAndItsErrorShowsEveryDigit) {
+  const std::string readme = read_text_file(kRoot + "/levels/README.md");
+  const std::regex limit_rx("within ±([0-9.e+]+)");
+  ASSERT_EQ(std::distance(std::sregex_iterator(readme.begin(), readme.end(), limit_rx), std::sregex_iterator()), 1)
+      << "the README must state the position limit exactly once";
+  std::smatch m;
+  std::regex_search(readme, m, limit_rx);
+  const double limit = std::stod(m[1].str());
+  auto level_at = [](double x) {
+    char pos[64];
+    std::snprintf(pos, sizeof pos, "%.17g", x);
+    std::string text = kGood;
+    text.replace(text.find("\"player\": true"), 14, std::string("\"player\": true, \"position\": [") + pos + ", 0, 0]");
+    return text;
+  };
+  EXPECT_EQ(error_of(level_at(limit)), "");
+  EXPECT_EQ(error_of(level_at(-limit)), "");
+  const std::string e = error_of(level_at(std::nextafter(limit, 2 * limit)));
+  std::smatch example;
+  ASSERT_TRUE(std::regex_search(readme, example, std::regex("e\\.g\\. `([^`]+)`")));
+  EXPECT_NE(e.find(example[1].str()), std::string::npos) << e << "\nREADME: " << example[1];
 }
 
 }  // namespace arc
