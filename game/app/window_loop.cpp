@@ -165,6 +165,10 @@ void WindowSession::setup() {
                   defaults, game_options_.root_dir + "/assets/settings/quality.json");
   }
   start_game(std::make_unique<Game>(Game::load_level(level_, game_options_)));
+  // From the menu, the recording starts with the first mission launched (launch()); a second
+  // arcfire recording to the same file is refused here, before a window opens.
+  if (!options_.record_path.empty() && !menu_)
+    recorder_ = std::make_unique<SessionRecorder>(options_.record_path, level_, *game_);
   audio_ = std::make_unique<AudioSession>(options_.sounds_path, settings_, false);
   WindowDesc wd;
   wd.width = options_.width;
@@ -175,9 +179,6 @@ void WindowSession::setup() {
   window_ = open_window(wd);
   renderer_ = make_renderer();
   models_ = load_scene_resources(*renderer_, game_->world(), game_options_.root_dir);
-  // From the menu, the recording starts with the first mission launched (launch()).
-  if (!options_.record_path.empty() && !menu_)
-    recorder_ = std::make_unique<SessionRecorder>(options_.record_path, level_, *game_);
   clock_.emplace(int(std::lround(1.0 / game_->tick_seconds())));
   hud_.show_fps = options_.show_fps;
   window_->set_mouse_captured(!menu_);
