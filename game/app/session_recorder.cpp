@@ -119,7 +119,7 @@ SessionRecorder::SessionRecorder(const std::string& path, const std::string& lev
     throw;
   }
   size_ = header.size();
-  first_tick_ = last_tick_ = w.steps;
+  first_tick_ = last_tick_ = last_line_tick_ = w.steps;
 }
 
 SessionRecorder::~SessionRecorder() {
@@ -162,9 +162,10 @@ void SessionRecorder::record(const Game& game, const InputFrame& input, const st
   }
   write(lines);
   if (failed()) {
-    replays_to_ = t;
+    replays_to_ = last_line_tick_;  // a replay ends at the file's last line
     return;
   }
+  if (!lines.empty()) last_line_tick_ = t;
   last_tick_ = t + 1;
   if (bak_pending_ && last_tick_ - first_tick_ >= tick_rate_) {
     ::unlink(bak_path_.c_str());  // the new session has its first second: it replaces the old one

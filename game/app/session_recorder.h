@@ -76,6 +76,7 @@ class SessionRecorder {
   uint64_t tick_rate_ = 60;
   uint64_t first_tick_ = 0;
   uint64_t last_tick_ = 0;
+  uint64_t last_line_tick_ = 0;  // the tick of the last line written
   uint64_t replays_to_ = 0;  // the tick the file replays up to once stopped
   bool finished_ = false;
 };

@@ -532,8 +532,13 @@ void WindowSession::draw() {
     if (want_screenshot_) {
       // Read the frame just drawn, before the swap leaves the back buffer undefined.
       std::string path = screenshot_path();
-      save_image(path, read_window_pixels(width, height));
-      std::printf("arcfire: screenshot %s\n", path.c_str());
+      try {
+        save_image(path, read_window_pixels(width, height));
+        std::printf("arcfire: screenshot %s\n", path.c_str());
+      } catch (const InputError& e) {  // a full disk is said on screen, not fatal
+        notice_ = e.what();
+        notice_until_ = window_->time_seconds() + 8.0;
+      }
       want_screenshot_ = false;
     }
   }
