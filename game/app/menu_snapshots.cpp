@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "core/error.h"
+#include "core/file_writer.h"
 #include "core/json.h"
 #include "core/settings.h"
 #include "game/app/frame_renderer.h"
@@ -87,12 +88,12 @@ Menu make_menu(const AppOptions& o) {
 
 int run_menu_script(const AppOptions& o) {
   const std::vector<UiInput> inputs = parse_ui_inputs(read_text_file(o.menu_script), o.menu_script);
+  if (!o.out_dir.empty()) check_output_dir(o.out_dir, "--out");  // before any screen is driven
   MenuRun run{o, o.out_dir, make_menu(o), nullptr, nullptr};
   const std::string attract = o.game.root_dir + "/levels/attract.json";
   run.load(attract, o.game.difficulty);
   run.advance(180);
   if (!run.out.empty()) {
-    std::filesystem::create_directories(run.out);
     FrameRendererDesc desc;
     desc.width = o.width;
     desc.height = o.height;

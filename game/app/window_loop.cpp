@@ -62,7 +62,8 @@ struct PauseMenu {
 };
 
 std::string screenshot_path() {
-  std::filesystem::create_directories("out/screenshots");
+  std::error_code ec;  // a folder that cannot be made is reported by the write (a notice)
+  std::filesystem::create_directories("out/screenshots", ec);
   for (int i = 1;; ++i) {
     char name[64];
     std::snprintf(name, sizeof name, "out/screenshots/arcfire_%04d.png", i);
