@@ -103,7 +103,7 @@ class EffectDocument {
   bool validate(const std::string& text, State& out, std::string& error) const;
   void adopt(State s);
   State current() const;
-  std::string read_disk(bool& ok) const;
+  std::string read_disk(bool& ok);  // the file's text, remembering its time and size
 
   std::string path_;
   std::string text_;
