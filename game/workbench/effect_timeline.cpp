@@ -90,8 +90,8 @@ void EffectTimeline::scrub_to(uint64_t tick, const ParticleCamera& camera) {
   world_->step(tick, camera);
 }
 
-FrameStats EffectTimeline::frame_stats() const {
-  FrameStats s;
+EffectCounts EffectTimeline::frame_stats() const {
+  EffectCounts s;
   s.tick = world_->tick();
   s.live_particles = world_->stats().live_particles;
   for (ClusterHandle c : handle_.clusters) s.cluster_particles.push_back(world_->particle_count(c));

@@ -38,7 +38,7 @@ struct StageOptions {
   double tick_seconds = 1.0 / 60.0;
 };
 
-struct FrameStats {
+struct EffectCounts {
   uint64_t tick = 0;
   uint32_t live_particles = 0;
   std::vector<uint32_t> cluster_particles;  // per cluster of the effect, in file order (0 once gone)
@@ -59,7 +59,7 @@ class EffectTimeline {
   const ParticleWorld& world() const { return *world_; }
   // Where the owner is at the current tick (the stage origin when Still); for a backdrop ship.
   OwnerTransform owner_transform() const;
-  FrameStats frame_stats() const;
+  EffectCounts frame_stats() const;
   // Summary hash of the world and of every particle collect() gives for this camera.
   uint64_t state_hash(const ParticleCamera& camera) const;
 
