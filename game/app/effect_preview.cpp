@@ -14,6 +14,7 @@
 #include "assets/model.h"
 #include "core/error.h"
 #include "core/json.h"
+#include "game/app/app_options.h"
 #include "game/app/scene_resources.h"
 #include "game/workbench/effect_timeline.h"
 #include "gfx/renderer.h"
@@ -130,6 +131,17 @@ Image filmstrip(const std::vector<Image>& frames) {
 }
 
 }  // namespace
+
+PreviewOptions preview_options(const AppOptions& app) {
+  PreviewOptions o;
+  o.effect_path = app.preview_path;
+  o.out_dir = app.out_dir;
+  if (app.size_given) o.frame_width = app.width, o.frame_height = app.height;
+  o.frames = app.preview_frames;
+  o.backdrop = app.preview_backdrop;
+  o.settings = app.settings;
+  return o;
+}
 
 std::string check_preview_backdrop(const std::string& backdrop, const std::string& root_dir) {
   if (backdrop == "space" || backdrop == "wall") return "";

@@ -26,6 +26,10 @@ struct PreviewOptions {
   std::string root_dir = ARCFIRE_SOURCE_DIR;
 };
 
+struct AppOptions;
+// The preview's part of the command line; frames are 320x240 unless --size says otherwise.
+PreviewOptions preview_options(const AppOptions& app);
+
 // "" when the backdrop names space, the wall or a model that exists; else the one-line error.
 std::string check_preview_backdrop(const std::string& backdrop, const std::string& root_dir);
 
