@@ -51,18 +51,30 @@ TEST(Preview, ShieldHitFilmstripMatchesItsGolden) {
   }
 }
 
-TEST(Preview, MissileTrailOnTheWallMatchesItsGolden) {
+TEST(Preview, ShipExplosionOnTheWallMatchesItsGolden) {
   PreviewOptions o;
-  o.effect_path = kRoot + "/assets/effects/missile_trail.json";
+  o.effect_path = kRoot + "/assets/effects/ship_explosion.json";
   o.backdrop = "wall";
   o.frames = 5;
   o.frame_width = 256;
   o.frame_height = 192;
-  const nlohmann::json stats = filmstrip_matches_golden("missile_trail_wall", o);
+  const nlohmann::json stats = filmstrip_matches_golden("ship_explosion_wall", o);
+  ASSERT_EQ(stats["frames"].size(), 5u);
+  EXPECT_EQ(stats["frame_size"], nlohmann::json::array({256, 192}));
+  EXPECT_GT(stats["frames"][0]["particles"].get<int64_t>(), stats["frames"][4]["particles"].get<int64_t>());
+}
+
+// A trail laid along the emitter's path is previewed behind an owner flying a circle.
+TEST(Preview, MissileTrailMatchesItsGolden) {
+  PreviewOptions o;
+  o.effect_path = kRoot + "/assets/effects/missile_trail.json";
+  o.frames = 5;
+  o.frame_width = 256;
+  o.frame_height = 192;
+  const nlohmann::json stats = filmstrip_matches_golden("missile_trail", o);
   ASSERT_EQ(stats["frames"].size(), 5u);
   EXPECT_FALSE(stats["ends"].get<bool>());
-  EXPECT_EQ(stats["frame_size"], nlohmann::json::array({256, 192}));
-  EXPECT_GT(stats["frames"][4]["particles"].get<int64_t>(), stats["frames"][0]["particles"].get<int64_t>());
+  EXPECT_GT(stats["frames"][4]["clusters"]["smoke"].get<int64_t>(), stats["frames"][0]["clusters"]["smoke"].get<int64_t>());
 }
 
 TEST(Preview, BackdropsAreSpaceTheWallOrAModel) {
