@@ -50,7 +50,7 @@ EffectField other(B block, const char* key, K kind, J fallback, bool required = 
   return f;
 }
 
-// Long: the table of the whole format, one line per key, is easier to review in one piece.
+// The table of the whole format, one entry per key, in file order.
 std::vector<EffectField> build() {
   const J zero3 = J::array({0, 0, 0});
   return {
