@@ -13,6 +13,7 @@
 #include "assets/image.h"
 #include "assets/model.h"
 #include "core/error.h"
+#include "core/file_writer.h"
 #include "core/json.h"
 #include "game/app/app_options.h"
 #include "game/app/scene_resources.h"
@@ -170,9 +171,7 @@ int run_preview(const PreviewOptions& o) {
   const std::string name = fs::path(o.effect_path).stem().string();
   const std::string backdrop_error = check_preview_backdrop(o.backdrop, o.root_dir);
   if (!backdrop_error.empty()) throw InputError(backdrop_error);
-  std::error_code ec;
-  fs::create_directories(o.out_dir, ec);
-  if (!fs::is_directory(o.out_dir)) throw InputError("--out " + o.out_dir + ": cannot create folder");
+  check_output_dir(o.out_dir, "--out");
 
   StageOptions stage;
   stage.motion = lays_a_trail(fx->get(name)) ? StageMotion::Circle : StageMotion::Still;
