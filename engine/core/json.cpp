@@ -1,5 +1,6 @@
 #include "core/json.h"
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -96,9 +97,20 @@ struct JsonPositionRecorder : nlohmann::json_sax<nlohmann::json> {
     if (f.is_array) return f.ptr + "/" + std::to_string(f.index++);
     return f.ptr + "/" + json_pointer_escape(f.key);
   }
+  // A scalar's last byte: the lexer has read one character past a number, so scan for it.
+  size_t scalar_end(size_t s) const {
+    if ((*text)[s] == '"') return size_t(cursor - begin);
+    size_t e = s;
+    while (e < text->size() && (std::isalnum((unsigned char)(*text)[e]) || (*text)[e] == '.' || (*text)[e] == '+' ||
+                                (*text)[e] == '-'))
+      ++e;
+    return e;
+  }
   bool value() {
     size_t s = token_start();
-    doc->value_pos_[child_ptr()] = lines->at(s);
+    const std::string p = child_ptr();
+    doc->value_pos_[p] = lines->at(s);
+    doc->value_span_[p] = {s, scalar_end(s)};
     end_token();
     return true;
   }
@@ -113,19 +125,28 @@ struct JsonPositionRecorder : nlohmann::json_sax<nlohmann::json> {
     size_t s = token_start();
     std::string p = child_ptr();
     doc->value_pos_[p] = lines->at(s);
+    doc->value_span_[p] = {s, s};
     end_token();
     stack.push_back({is_array, p, "", 0});
     return true;
   }
+  bool close() {
+    end_token();
+    doc->value_span_[stack.back().ptr].end = last_end;
+    stack.pop_back();
+    return true;
+  }
   bool start_object(std::size_t) override { return open(false); }
   bool start_array(std::size_t) override { return open(true); }
-  bool end_object() override { stack.pop_back(); end_token(); return true; }
-  bool end_array() override { stack.pop_back(); end_token(); return true; }
+  bool end_object() override { return close(); }
+  bool end_array() override { return close(); }
   bool key(string_t& k) override {
     size_t s = token_start();
     stack.back().key = k;
-    doc->key_pos_[stack.back().ptr + "/" + json_pointer_escape(k)] = lines->at(s);
+    const std::string p = stack.back().ptr + "/" + json_pointer_escape(k);
+    doc->key_pos_[p] = lines->at(s);
     end_token();
+    doc->key_span_[p] = {s, last_end};
     return true;
   }
   bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override {
@@ -190,6 +211,20 @@ std::shared_ptr<const JsonDoc> JsonDoc::parse(const std::string& text, const std
 
 static std::string pos_str(const std::string& path, TextPos p) {
   return path + ":" + std::to_string(p.line) + ":" + std::to_string(p.col);
+}
+
+bool JsonDoc::value_span(const std::string& pointer, TextSpan& out) const {
+  auto v = value_span_.find(pointer);
+  if (v == value_span_.end()) return false;
+  out = v->second;
+  return true;
+}
+
+bool JsonDoc::key_span(const std::string& pointer, TextSpan& out) const {
+  auto k = key_span_.find(pointer);
+  if (k == key_span_.end()) return false;
+  out = k->second;
+  return true;
 }
 
 std::string JsonDoc::where(const std::string& pointer) const {
@@ -290,6 +325,10 @@ std::string JsonValue::string() const {
 }
 
 std::string JsonValue::choice(std::initializer_list<const char*> allowed) const {
+  return choice(std::vector<const char*>(allowed));
+}
+
+std::string JsonValue::choice(const std::vector<const char*>& allowed) const {
   std::vector<std::string> names(allowed.begin(), allowed.end());
   for (auto& n : names) n = "\"" + n + "\"";
   if (!j_->is_string()) fail("'" + name() + "' must be one of " + join_allowed(names) + ", got " + type_name(*j_));
@@ -376,6 +415,11 @@ std::string JsonObject::string(const std::string& key, const std::string& fallba
 std::string JsonObject::require_string(const std::string& key) { return require(key).string(); }
 std::string JsonObject::choice(const std::string& key, const std::string& fallback,
                                std::initializer_list<const char*> allowed) {
+  auto v = get(key);
+  return v ? v->choice(allowed) : fallback;
+}
+std::string JsonObject::choice(const std::string& key, const std::string& fallback,
+                               const std::vector<const char*>& allowed) {
   auto v = get(key);
   return v ? v->choice(allowed) : fallback;
 }

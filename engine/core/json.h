@@ -30,6 +30,9 @@
 namespace arc {
 
 struct TextPos { int line = 1; int col = 1; };
+// Bytes [begin, end) of a key or value in the parsed text (a container's span runs from its
+// bracket to its closing bracket). Edits splice at these spans to keep comments (workbench).
+struct TextSpan { size_t begin = 0; size_t end = 0; };
 
 class JsonDoc {
  public:
@@ -42,12 +45,17 @@ class JsonDoc {
   // "path:line:col" of the value at a JSON pointer (the member's key for object members).
   std::string where(const std::string& pointer) const;
   std::string where_value(const std::string& pointer) const;
+  // Byte spans of the value at a pointer and of an object member's key; false when there is none.
+  bool value_span(const std::string& pointer, TextSpan& out) const;
+  bool key_span(const std::string& pointer, TextSpan& out) const;
 
  private:
   std::string path_;
   nlohmann::json root_;
   std::map<std::string, TextPos> value_pos_;
   std::map<std::string, TextPos> key_pos_;
+  std::map<std::string, TextSpan> value_span_;
+  std::map<std::string, TextSpan> key_span_;
   friend struct JsonPositionRecorder;
 };
 
@@ -70,6 +78,7 @@ class JsonValue {
   bool boolean() const;
   std::string string() const;
   std::string choice(std::initializer_list<const char*> allowed) const;
+  std::string choice(const std::vector<const char*>& allowed) const;
   glm::dvec3 vec3(double min, double max) const;
   glm::dvec4 vec4(double min, double max) const;
   std::vector<double> numbers(double min, double max) const;
@@ -103,6 +112,7 @@ class JsonObject : public JsonValue {
   std::string require_string(const std::string& key);
   std::string choice(const std::string& key, const std::string& fallback,
                      std::initializer_list<const char*> allowed);
+  std::string choice(const std::string& key, const std::string& fallback, const std::vector<const char*>& allowed);
   glm::dvec3 vec3(const std::string& key, glm::dvec3 fallback, double min, double max);
   glm::dvec4 vec4(const std::string& key, glm::dvec4 fallback, double min, double max);
   JsonObject require_object(const std::string& key);

@@ -6,13 +6,13 @@
 
 #include "core/error.h"
 #include "core/json.h"
+#include "particles/effect_schema.h"
 #include "particles/sprites.h"
 
 namespace arc {
 namespace {
 
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
-constexpr double kBig = 1e6;
 constexpr double kMinSpacing = 0.01;  // m: a trail of finer spacing would spend the budget on one tick
 
 // The shortest rotation taking −Z onto the unit vector `to`.
@@ -24,10 +24,38 @@ glm::dquat rotation_from_forward(const glm::dvec3& to) {
   return glm::normalize(glm::dquat(1.0 + d, c.x, c.y, c.z));
 }
 
+// Ranges, allowed values and defaults come from the format's table (particles/effect_schema.h),
+// which the workbench's panel reads too.
+using B = EffectBlock;
+
+double number(JsonObject& o, B block, const char* key) {
+  const EffectField& f = effect_field(block, key);
+  return o.number(key, f.fallback.get<double>(), f.min, f.max);
+}
+double required_number(JsonObject& o, B block, const char* key) {
+  const EffectField& f = effect_field(block, key);
+  return o.require_number(key, f.min, f.max);
+}
+int64_t integer(JsonObject& o, B block, const char* key) {
+  const EffectField& f = effect_field(block, key);
+  return o.integer(key, f.fallback.get<int64_t>(), int64_t(f.min), int64_t(f.max));
+}
+std::string pick(JsonObject& o, B block, const char* key) {
+  const EffectField& f = effect_field(block, key);
+  return o.choice(key, f.fallback.get<std::string>(), f.choices);
+}
+glm::dvec3 vec3(JsonObject& o, B block, const char* key) {
+  const EffectField& f = effect_field(block, key);
+  const nlohmann::json& d = f.fallback;
+  return o.vec3(key, glm::dvec3(d[0].get<double>(), d[1].get<double>(), d[2].get<double>()), f.min, f.max);
+}
+
 // A distribution: a number (constant) or [min, max] with min ≤ max.
-Range read_range(JsonObject& o, const std::string& key, Range fallback, double lo, double hi, double unit = 1.0) {
+Range read_range(JsonObject& o, const char* key, double unit = 1.0) {
+  const EffectField& f = effect_field(B::Particles, key);
+  const double lo = f.min, hi = f.max;
   auto v = o.get(key);
-  if (!v) return fallback;
+  if (!v) return {f.fallback.get<double>() * unit, f.fallback.get<double>() * unit};
   if (v->is_number()) {
     double x = v->number(lo, hi) * unit;
     return {x, x};
@@ -73,14 +101,19 @@ std::vector<CurveKey> read_keys(const JsonValue& v, double lo, double hi, int co
 }
 
 void read_curves(JsonObject o, ClusterDef& c) {
-  if (auto v = o.get("size")) c.size = Curve::from_keys(read_keys(*v, 0.0, 1000.0, -1));
-  if (auto v = o.get("alpha")) c.alpha = Curve::from_keys(read_keys(*v, 0.0, 1.0, -1));
-  if (auto v = o.get("burn")) c.burn = Curve::from_keys(read_keys(*v, 0.0, 1.0, -1));
+  auto curve = [&](const char* key, Curve& out) {
+    const EffectField& f = effect_field(B::Curves, key);
+    if (auto v = o.get(key)) out = Curve::from_keys(read_keys(*v, f.min, f.max, -1));
+  };
+  curve("size", c.size);
+  curve("alpha", c.alpha);
+  curve("burn", c.burn);
   if (auto v = o.get("color")) {
+    const EffectField& f = effect_field(B::Curves, "color");
     if (v->is_number()) v->fail("'color' must be an array of [t, [r, g, b]] keyframes");
-    c.red = Curve::from_keys(read_keys(*v, 0.0, 8.0, 0));
-    c.green = Curve::from_keys(read_keys(*v, 0.0, 8.0, 1));
-    c.blue = Curve::from_keys(read_keys(*v, 0.0, 8.0, 2));
+    c.red = Curve::from_keys(read_keys(*v, f.min, f.max, 0));
+    c.green = Curve::from_keys(read_keys(*v, f.min, f.max, 1));
+    c.blue = Curve::from_keys(read_keys(*v, f.min, f.max, 2));
   }
   o.finish();
 }
@@ -89,8 +122,7 @@ void read_emitter(JsonObject o, ClusterDef& c) {
   EmitterDef& e = c.emitter;
   if (c.animation == AnimationType::Sphere && o.has("shape"))
     o.fail_key("shape", "a sphere cluster places its particles uniformly on its sphere; 'shape' is not allowed");
-  static const std::initializer_list<const char*> shapes = {"point", "sphere", "sphere_surface", "cone", "box", "line", "mesh"};
-  std::string shape = o.choice("shape", "point", shapes);
+  std::string shape = pick(o, B::Emitter, "shape");
   e.shape = shape == "point" ? EmitterShape::Point
             : shape == "sphere" ? EmitterShape::Sphere
             : shape == "sphere_surface" ? EmitterShape::SphereSurface
@@ -98,22 +130,26 @@ void read_emitter(JsonObject o, ClusterDef& c) {
             : shape == "box" ? EmitterShape::Box
             : shape == "line" ? EmitterShape::Line
                               : EmitterShape::Mesh;
-  e.offset = o.vec3("offset", glm::dvec3(0.0), -kBig, kBig);
+  e.offset = vec3(o, B::Emitter, "offset");
   if (auto axis = o.get("axis")) {
-    const glm::dvec3 a = axis->vec3(-1.0, 1.0);
+    const EffectField& f = effect_field(B::Emitter, "axis");
+    const glm::dvec3 a = axis->vec3(f.min, f.max);
     const double l = std::sqrt(a.x * a.x + a.y * a.y + a.z * a.z);
     if (l < 1e-6) axis->fail("'axis' must be a non-zero direction [x, y, z]");
     e.axis_rotation = rotation_from_forward(a / l);
   }
   const bool needs_radius = e.shape == EmitterShape::Sphere || e.shape == EmitterShape::SphereSurface;
-  e.radius = needs_radius ? o.require_number("radius", 0.0, kBig) : o.number("radius", 0.0, 0.0, kBig);
-  if (e.shape == EmitterShape::Cone) e.angle = o.require_number("angle_deg", 0.0, 180.0) * kDeg;
-  if (e.shape == EmitterShape::Box) e.half_extents = o.vec3("half_extents", glm::dvec3(0.0), 0.0, kBig);
-  if (e.shape == EmitterShape::Box && !o.has("half_extents")) o.require("half_extents");
-  if (e.shape == EmitterShape::Line) e.length = o.require_number("length", 0.0, kBig);
+  e.radius = needs_radius ? required_number(o, B::Emitter, "radius") : number(o, B::Emitter, "radius");
+  if (e.shape == EmitterShape::Cone) e.angle = required_number(o, B::Emitter, "angle_deg") * kDeg;
+  if (e.shape == EmitterShape::Box) {
+    const EffectField& f = effect_field(B::Emitter, "half_extents");
+    e.half_extents = o.require("half_extents").vec3(f.min, f.max);
+  }
+  if (e.shape == EmitterShape::Line) e.length = required_number(o, B::Emitter, "length");
   if (e.shape == EmitterShape::Mesh) {
+    const EffectField& f = effect_field(B::Emitter, "triangles");
     JsonValue tri = o.require("triangles");
-    for (const JsonValue& v : tri.array()) e.triangles.push_back(v.vec3(-kBig, kBig));
+    for (const JsonValue& v : tri.array()) e.triangles.push_back(v.vec3(f.min, f.max));
     if (e.triangles.empty() || e.triangles.size() % 3 != 0)
       tri.fail("'triangles' must list 3 vertices [x, y, z] per triangle, got " + std::to_string(e.triangles.size()) +
                " vertices");
@@ -126,15 +162,15 @@ void read_emitter(JsonObject o, ClusterDef& c) {
     }
     if (!(total > 0.0)) tri.fail("'triangles' must have a total area above zero");
   }
-  e.rate = o.number("rate", 0.0, 0.0, 1e7);
-  e.spacing = o.number("spacing", 0.0, 0.0, kBig);
+  e.rate = number(o, B::Emitter, "rate");
+  e.spacing = number(o, B::Emitter, "spacing");
   if (e.spacing > 0.0 && e.spacing < kMinSpacing)
     o.fail_key("spacing", "'spacing' must be 0 (none) or at least 0.01 m, got " + std::to_string(e.spacing));
   if (e.spacing > 0.0 && (c.animation != AnimationType::Linear || c.owner_space))
     o.fail_key("spacing", "'spacing' needs a world-space linear cluster: particles are laid along the emitter's path");
-  e.burst = uint32_t(o.integer("burst", 0, 0, 1000000));
-  e.duration = o.number("duration", 0.0, 0.0, 1e6);
-  std::string dir = o.choice("direction", "shape", {"shape", "random", "forward"});
+  e.burst = uint32_t(integer(o, B::Emitter, "burst"));
+  e.duration = number(o, B::Emitter, "duration");
+  std::string dir = pick(o, B::Emitter, "direction");
   e.direction = dir == "shape" ? EmitDirection::Shape : dir == "random" ? EmitDirection::Random : EmitDirection::Forward;
   if (e.rate == 0.0 && e.burst == 0 && e.spacing == 0.0) o.fail("emitter must have 'rate', 'burst' or 'spacing' > 0");
   o.finish();
@@ -142,53 +178,54 @@ void read_emitter(JsonObject o, ClusterDef& c) {
 
 void read_particles(JsonObject o, ClusterDef& c) {
   ParticleInitDef& p = c.particles;
-  p.speed = read_range(o, "speed", p.speed, 0.0, 1e5);
-  p.lifetime = read_range(o, "lifetime", p.lifetime, 0.0, 3600.0);
-  p.size = read_range(o, "size", p.size, 0.0, 1e5);
+  p.speed = read_range(o, "speed");
+  p.lifetime = read_range(o, "lifetime");
+  p.size = read_range(o, "size");
   if (p.size.max <= 0.0) o.fail_key("size", "'size' must be above zero");
-  p.rotation = read_range(o, "rotation_deg", p.rotation, -3600.0, 3600.0, kDeg);
-  p.spin = read_range(o, "spin_deg", p.spin, -1e5, 1e5, kDeg);
-  p.inherit_velocity = o.number("inherit_velocity", p.inherit_velocity, 0.0, 1.0);
+  p.rotation = read_range(o, "rotation_deg", kDeg);
+  p.spin = read_range(o, "spin_deg", kDeg);
+  p.inherit_velocity = number(o, B::Particles, "inherit_velocity");
   o.finish();
 }
 
 void read_animation(JsonObject o, ClusterDef& c) {
-  std::string type = o.choice("type", "linear", {"linear", "sphere", "lightning"});
+  std::string type = pick(o, B::Animation, "type");
   if (type == "linear") {
     c.animation = AnimationType::Linear;
-    c.linear.drag = o.number("drag", 0.0, 0.0, 1e4);
-    c.linear.acceleration = o.vec3("acceleration", glm::dvec3(0.0), -1e5, 1e5);
+    c.linear.drag = number(o, B::Animation, "drag");
+    c.linear.acceleration = vec3(o, B::Animation, "acceleration");
   } else if (type == "sphere") {
     c.animation = AnimationType::Sphere;
     SphereDef& s = c.sphere;
-    std::string m = o.choice("motion", "static", {"static", "stochastic", "rotational"});
+    std::string m = pick(o, B::Animation, "motion");
     s.motion = m == "static" ? SphereMotion::Static : m == "stochastic" ? SphereMotion::Stochastic : SphereMotion::Rotational;
-    s.radius = o.require_number("radius", 0.0, kBig);
-    s.rotation_rate = o.vec3("rotation_deg", glm::dvec3(0.0), -1e5, 1e5) * kDeg;
-    std::string r = o.choice("radius_animation", "constant", {"constant", "pulsating", "contracting", "exploding"});
+    s.radius = required_number(o, B::Animation, "radius");
+    s.rotation_rate = vec3(o, B::Animation, "rotation_deg") * kDeg;
+    std::string r = pick(o, B::Animation, "radius_animation");
     s.radius_animation = r == "constant" ? RadiusAnimation::Constant
                          : r == "pulsating" ? RadiusAnimation::Pulsating
                          : r == "contracting" ? RadiusAnimation::Contracting
                                               : RadiusAnimation::Exploding;
-    s.amplitude = o.number("amplitude", 0.0, 0.0, 1.0);
-    s.frequency = o.number("frequency_hz", 0.0, 0.0, 1000.0);
-    s.ramp = o.number("ramp", 0.2, 1e-3, 0.5);
-    s.growth = o.number("growth", 0.0, 0.0, 1e5);
+    s.amplitude = number(o, B::Animation, "amplitude");
+    s.frequency = number(o, B::Animation, "frequency_hz");
+    s.ramp = number(o, B::Animation, "ramp");
+    s.growth = number(o, B::Animation, "growth");
   } else {
     c.animation = AnimationType::Lightning;
     LightningDef& l = c.lightning;
     auto seed = o.require("seed_length");
-    l.seed_length = seed.number(0.0, kBig);
+    const EffectField& sf = effect_field(B::Animation, "seed_length");
+    l.seed_length = seed.number(sf.min, sf.max);
     if (l.seed_length <= 0.0) seed.fail("'seed_length' must be above zero (a zero-length seed has no direction)");
-    l.max_length = o.require_number("max_length", 0.0, kBig);
+    l.max_length = required_number(o, B::Animation, "max_length");
     if (l.max_length < l.seed_length)
       o.fail_key("max_length", "'max_length' must be at least 'seed_length'");
-    l.max_angle = o.number("max_angle_deg", 20.0, 0.0, 89.0) * kDeg;
-    l.length_jitter = o.number("length_jitter", 0.3, 0.0, 0.9);
-    l.guide_distance = o.number("guide_distance", 0.0, 0.0, kBig);
-    l.sizzle_ticks = int(o.integer("sizzle_ticks", 3, 1, 600));
-    l.width = o.number("width", 1.0, 1e-3, kBig);
-    l.free_lifetime = o.number("free_lifetime", l.free_lifetime, 0.01, 3600.0);
+    l.max_angle = number(o, B::Animation, "max_angle_deg") * kDeg;
+    l.length_jitter = number(o, B::Animation, "length_jitter");
+    l.guide_distance = number(o, B::Animation, "guide_distance");
+    l.sizzle_ticks = int(integer(o, B::Animation, "sizzle_ticks"));
+    l.width = number(o, B::Animation, "width");
+    l.free_lifetime = number(o, B::Animation, "free_lifetime");
     if (l.max_length / (l.seed_length * (1.0 - l.length_jitter)) > 4096.0)
       o.fail_key("max_length", "'max_length' allows more than 4096 segments; raise 'seed_length'");
   }
@@ -197,10 +234,10 @@ void read_animation(JsonObject o, ClusterDef& c) {
 
 // "billboard": "camera" (default) or "velocity" with "stretch" in seconds of motion.
 void read_billboard(JsonObject& o, ClusterDef& c) {
-  const bool velocity = o.choice("billboard", "camera", {"camera", "velocity"}) == "velocity";
+  const bool velocity = pick(o, B::Cluster, "billboard") == "velocity";
   c.billboard = velocity ? ClusterBillboard::Velocity : ClusterBillboard::Camera;
   if (velocity) {
-    c.stretch = o.number("stretch", 0.03, 0.0, 10.0);
+    c.stretch = number(o, B::Cluster, "stretch");
   } else if (o.has("stretch")) {
     o.fail_key("stretch", "'stretch' applies to \"billboard\": \"velocity\" only");
   }
@@ -217,18 +254,18 @@ ClusterDef read_cluster(JsonObject o, int index) {
     o.require("sprite").fail("'sprite' must be one of " + join_allowed(names) + ", got \"" + sprite + "\"");
   }
   c.sprite = *s;
-  std::string soft = o.choice("soft_edge", "off", {"off", "linear", "contrast", "average_density", "density_extent"});
+  std::string soft = pick(o, B::Cluster, "soft_edge");
   c.soft_edge = soft == "off" ? SoftEdge::Off
                 : soft == "linear" ? SoftEdge::Linear
                 : soft == "contrast" ? SoftEdge::Contrast
                 : soft == "average_density" ? SoftEdge::AverageDensity
                                             : SoftEdge::DensityExtent;
-  c.soft_extent = o.number("soft_extent", 0.0, 0.0, kBig);
+  c.soft_extent = number(o, B::Cluster, "soft_extent");
   read_billboard(o, c);
-  c.owner_space = o.choice("space", "world", {"world", "owner"}) == "owner";
-  c.lifetime = o.number("lifetime", 0.0, 0.0, 3600.0);
-  c.priority = int(o.integer("priority", -1, -1, 100));
-  const std::string screen = o.choice("screen_priority", "normal", {"low", "normal", "high"});
+  c.owner_space = pick(o, B::Cluster, "space") == "owner";
+  c.lifetime = number(o, B::Cluster, "lifetime");
+  c.priority = int(integer(o, B::Cluster, "priority"));
+  const std::string screen = pick(o, B::Cluster, "screen_priority");
   c.screen_priority = screen == "low" ? ScreenPriority::Low : screen == "high" ? ScreenPriority::High : ScreenPriority::Normal;
   read_animation(o.require_object("animation"), c);
   if (c.animation == AnimationType::Sphere && c.sphere.radius_animation == RadiusAnimation::Contracting &&

@@ -388,6 +388,11 @@ void ParticleWorld::release_owner(OwnerId owner) {
 
 bool ParticleWorld::alive(ClusterHandle cluster) const { return impl_->find(cluster) != nullptr; }
 
+uint32_t ParticleWorld::particle_count(ClusterHandle cluster) const {
+  const Cluster* c = impl_->find(cluster);
+  return c ? uint32_t(c->pool.count()) : 0u;
+}
+
 void ParticleWorld::set_owner_transform(OwnerId owner, const OwnerTransform& t) {
   if (owner) impl_->owners[owner.value] = t;
 }

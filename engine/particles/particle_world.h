@@ -127,6 +127,7 @@ class ParticleWorld {
   // others stop emitting and are detached, and the owner's transform is forgotten.
   void release_owner(OwnerId owner);
   bool alive(ClusterHandle cluster) const;
+  uint32_t particle_count(ClusterHandle cluster) const;  // live particles of a cluster; 0 once it is gone
 
   // Owners' transforms for this tick; call before step().
   void set_owner_transform(OwnerId owner, const OwnerTransform& t);

@@ -18,12 +18,16 @@ std::vector<ModelId> load_scene_resources(Renderer& renderer, const World& world
   };
   std::vector<ModelId> models;
   for (const std::string& path : world.model_paths) models.push_back(renderer.add_model(load_model(resolve(path))));
+  load_sprites(renderer, root_dir);
+  return models;
+}
+
+void load_sprites(Renderer& renderer, const std::string& root_dir) {
   std::vector<Image> sprites;
   for (std::string_view name : kSpriteNames)
     // Straight alpha as stored: the renderer premultiplies in the colour space it draws in.
-    sprites.push_back(load_image(resolve("assets/textures/sprite_" + std::string(name) + ".png")));
+    sprites.push_back(load_image(root_dir + "/assets/textures/sprite_" + std::string(name) + ".png"));
   renderer.set_sprites(sprites);
-  return models;
 }
 
 }  // namespace arc

@@ -14,5 +14,7 @@ class Renderer;
 class World;
 
 std::vector<ModelId> load_scene_resources(Renderer& renderer, const World& world, const std::string& root_dir);
+// Only the particle sprites (the effect preview has no level).
+void load_sprites(Renderer& renderer, const std::string& root_dir);
 
 }  // namespace arc
