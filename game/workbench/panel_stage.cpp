@@ -43,10 +43,6 @@ void draw_backdrop_section(WorkbenchStage& stage) {
       if (ImGui::Selectable(labels[i].c_str(), i == current)) stage.set_backdrop(choices[i]);
     ImGui::EndCombo();
   }
-  if (b.kind != BackdropKind::Circling) return;
-  int attach = int(stage.attach_point());
-  const char* points[] = {"centre", "stern", "nose"};
-  if (ImGui::Combo("attach at", &attach, points, 3)) stage.set_attach_point(AttachPoint(attach));
 }
 
 void draw_time_section(WorkbenchStage& stage) {
@@ -64,11 +60,12 @@ void draw_time_section(WorkbenchStage& stage) {
   float loop = float(stage.loop_seconds());
   if (ImGui::DragFloat("loop (s)", &loop, 0.02f, 0.1f, 60.0f, "%.2f s", ImGuiSliderFlags_AlwaysClamp))
     stage.set_loop_seconds(loop);
-  const double own = stage.effect_seconds();
+  bool ends = true;
+  const double own = stage.effect_seconds(&ends);
   ImGui::SameLine();
-  if (ImGui::SmallButton("fit") && own > 0.0) stage.set_loop_seconds(own + 0.25);
+  if (ImGui::SmallButton("fit")) stage.set_loop_seconds(own + 0.25);
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip(own > 0.0 ? "the effect lasts %.2f s" : "the effect runs until stopped", own);
+    ImGui::SetTooltip(ends ? "loop over the effect's life: %.2f s" : "it runs until stopped: loop %.2f s of it", own);
   int tick = int(stage.tick());
   char label[64];
   std::snprintf(label, sizeof label, "tick %%d  (%.3f s)", double(stage.tick()) * stage.tick_seconds());

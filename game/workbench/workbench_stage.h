@@ -1,18 +1,17 @@
 // game/workbench/workbench_stage.h — the effect workbench's scene and clock (no GL).
 //
-// One effect spawned at the origin of an empty stage, over a backdrop (empty space, a ship
-// model behind it, the wall it can cut, or a ship flying a circle the effect is attached to),
-// and the timeline a tweaker drives: play, pause, speed, one tick forwards or back, a loop
-// period, and a scrub to any tick. The effect restarts at tick 0 every loop period.
+// One effect on a stage at the origin, over a backdrop (empty space, a ship model behind it,
+// the wall it can cut, or a ship flying a circle the effect is attached to), and the timeline a
+// tweaker drives: play, pause, speed, one tick forwards or back, a loop period, and a scrub to
+// any tick. The effect restarts at tick 0 every loop period.
 //
-// Going back or jumping is exact: a fresh world spawns the effect at tick 0 and steps to the
-// target in one call, which is the particle world's skip/catch-up path (emission and deaths
-// tick by tick, the closed-form animation once at the end), so the state at tick T is the same
-// whether it was played to or scrubbed to. On the circling backdrop the owner's pose is set
-// for every tick on both paths, as the game does.
+// The particles come from an EffectTimeline (effect_timeline.h): playing steps it tick by tick,
+// going back or jumping scrubs it by the catch-up path, and the two give the same state at a
+// tick (tests/unit/workbench compares their hashes). Every step uses the camera last given,
+// so a scrub and a play to the same tick agree for the view on screen too.
 //
-//   WorkbenchStage stage(root, 200000);
-//   stage.set_effect(text, "assets/effects/hull_sparks.json");   // InputError: the loader's line
+//   WorkbenchStage stage;
+//   stage.set_effect(doc->library(), doc->name());
 //   stage.advance(frame_seconds);           // plays at the chosen speed
 //   stage.scrub(90);                         // tick 90 (1.5 s), exactly
 //   stage.build_view(camera, width, height, view);   // meshes and particles for the renderer
@@ -21,12 +20,10 @@
 #include <memory>
 #include <string>
 #include <vector>
-#include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>
 
+#include "game/workbench/effect_timeline.h"
 #include "gfx/render_view.h"
-#include "particles/effect_library.h"
-#include "particles/particle_world.h"
 
 namespace arc {
 
@@ -37,9 +34,6 @@ struct Backdrop {
   size_t model = 0;  // Model and Circling: which of the stage's ship models
 };
 
-// Where an attached effect sits on the circling ship.
-enum class AttachPoint { Centre, Stern, Nose };
-
 struct StageModel {
   std::string name;  // file stem: "viper"
   ModelId id{};      // the renderer's
@@ -49,25 +43,21 @@ struct StageModel {
 
 class WorkbenchStage {
  public:
-  WorkbenchStage(uint32_t particle_budget, double tick_seconds = 1.0 / 60.0);
+  WorkbenchStage();
   ~WorkbenchStage();
 
-  // The models the backdrops use: ships first, the wall separately (ids from the renderer).
+  // The models the backdrops use: the ships, and the wall (ids from the renderer).
   void set_models(std::vector<StageModel> ships, StageModel wall);
   const std::vector<StageModel>& ship_models() const { return ships_; }
 
-  // Parses and validates effect text as the file `path` (InputError: the loader's one line; the
-  // stage keeps the effect it had) and restarts it at the tick it was showing.
-  void set_effect(const std::string& text, const std::string& path);
+  // A new or edited effect (a library holding it, as EffectDocument::library() gives), shown
+  // at the tick the stage was at.
+  void set_effect(std::shared_ptr<const EffectLibrary> library, const std::string& name);
   const EffectDef* effect() const;
 
   void set_backdrop(Backdrop b);
   Backdrop backdrop() const { return backdrop_; }
-  void set_attach_point(AttachPoint p);
-  AttachPoint attach_point() const { return attach_; }
-  // The view the particle world culls by while stepping (culling never changes a particle,
-  // but the world records it, so play and scrub step with the same camera).
-  void set_camera(const ParticleCamera& c) { camera_ = c; }
+  void set_camera(const ParticleCamera& c) { camera_ = c; }  // the view the world steps with
 
   // ---- time ---------------------------------------------------------------------------------
   void advance(double frame_seconds);  // plays `speed` × frame_seconds when playing
@@ -79,39 +69,30 @@ class WorkbenchStage {
   double loop_seconds() const { return loop_seconds_; }
   uint64_t loop_ticks() const;
   void scrub(uint64_t tick);           // exact state at `tick` (clamped to the loop)
-  void step_by(int ticks);             // pauses, then moves by `ticks` within the loop
+  void step_by(int ticks);             // pauses, then moves by `ticks`, wrapping within the loop
   uint64_t tick() const { return tick_; }
-  double tick_seconds() const { return h_; }
-  // The effect's own length in seconds: its longest cluster (lifetime, or emission plus the
-  // longest particle life); 0 when some cluster runs until stopped.
-  double effect_seconds() const;
+  double tick_seconds() const { return options_.tick_seconds; }
+  // The effect's length (EffectTimeline::life_seconds); `ends` false: it runs until stopped.
+  double effect_seconds(bool* ends) const;
 
   // ---- drawing and figures ------------------------------------------------------------------
   void build_view(const CameraView& camera, int width, int height, RenderView& out) const;
-  // Live particles per cluster of the effect (by index in its definition), this tick.
-  std::vector<uint32_t> live_per_cluster() const;
-  uint32_t live_particles() const;
-  uint32_t particle_budget() const { return budget_; }
-  uint64_t state_hash() const;  // ParticleWorld::hash of the current state
-  // A sphere around what is on stage: the particles (world positions) or, with none, the backdrop.
+  EffectCounts counts() const;
+  uint32_t particle_budget() const;
+  // A sphere around what is on stage: the particles or, with none, the backdrop.
   void bounds(glm::dvec3& centre, double& radius) const;
 
  private:
-  void restart();
-  void step_one();
-  OwnerTransform circle_pose(uint64_t tick) const;
-  glm::dvec3 attach_offset() const;
+  void rebuild();
 
-  uint32_t budget_;
-  double h_;
-  std::unique_ptr<EffectLibrary> library_;
-  std::unique_ptr<ParticleWorld> world_;
+  StageOptions options_;
+  std::shared_ptr<const EffectLibrary> library_;
   std::string effect_name_;
+  std::unique_ptr<EffectTimeline> timeline_;
   std::vector<StageModel> ships_;
   StageModel wall_;
   Backdrop backdrop_;
   ParticleCamera camera_;
-  AttachPoint attach_ = AttachPoint::Centre;
   bool playing_ = true;
   double speed_ = 1.0;
   double loop_seconds_ = 3.0;

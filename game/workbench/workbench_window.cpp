@@ -12,11 +12,14 @@
 #include "assets/model.h"
 #include "core/error.h"
 #include "core/json.h"
+#include "game/workbench/effect_document.h"
 #include "game/workbench/orbit_camera.h"
+#include "game/workbench/panel_fields.h"
 #include "game/workbench/panel_stage.h"
 #include "game/workbench/stats_overlay.h"
 #include "game/workbench/workbench_stage.h"
 #include "gfx/renderer.h"
+#include "gfx/ui_texture.h"
 #include "particles/sprites.h"
 #include "platform/platform.h"
 #include "ui/imgui_layer.h"
@@ -37,6 +40,10 @@ std::vector<std::string> effect_files(const std::string& root) {
 }
 
 // The ship models (the "model" of each assets/ships/*.json) and the wall, into the renderer.
+std::string sprite_path(const std::string& root, std::string_view name) {
+  return (fs::path(root) / ("assets/textures/sprite_" + std::string(name) + ".png")).string();
+}
+
 void load_stage_models(Renderer& renderer, const std::string& root, WorkbenchStage& stage) {
   auto load = [&](const std::string& path) {
     const ModelData data = load_model((fs::path(root) / path).string());
@@ -60,14 +67,20 @@ void load_stage_models(Renderer& renderer, const std::string& root, WorkbenchSta
   stage.set_models(std::move(ships), load("assets/models/wall.glb"));
   std::vector<Image> sprites;
   for (std::string_view name : kSpriteNames)
-    sprites.push_back(load_image((fs::path(root) / ("assets/textures/sprite_" + std::string(name) + ".png")).string()));
+    sprites.push_back(load_image(sprite_path(root, name)));
   renderer.set_sprites(sprites);
 }
 
+// What waits for the user's answer about unsaved edits: another effect, or quitting.
+struct PendingLeave {
+  bool asked = false;
+  bool quit = false;
+  size_t effect = 0;
+};
+
 class WorkbenchSession {
  public:
-  explicit WorkbenchSession(const WorkbenchOptions& o)
-      : options_(o), stage_(uint32_t(o.settings.integer("particles.budget"))) {}
+  explicit WorkbenchSession(const WorkbenchOptions& o) : options_(o) {}
   void setup();
   bool open() const { return !window_->should_close(); }
   double time() const { return window_->time_seconds(); }
@@ -75,19 +88,33 @@ class WorkbenchSession {
 
  private:
   void open_effect(size_t index);
+  void leave(bool quit, size_t effect);
   void handle_mouse();
   void handle_keys();
   void frame_effect();
+  void save();
+  void poll_disk();
   void draw_panel();
+  void draw_file_section();
+  void draw_leave_prompt();
+  void draw_stats(int width, int height);
 
   const WorkbenchOptions& options_;
   WorkbenchStage stage_;
   std::vector<std::string> files_;
   size_t current_ = 0;
-  std::string error_;  // the last refused file, shown in the panel
+  std::unique_ptr<EffectDocument> doc_;
+  uint64_t shown_revision_ = ~uint64_t(0);  // the document revision the stage shows
+  std::string error_;   // the last refused file or failed save, shown in the panel
+  std::string notice_;  // the last save or reload
+  bool conflict_ = false;  // changed on disk while there are unsaved edits
+  PendingLeave pending_;
+  double next_poll_ = 0.0;
   std::unique_ptr<Window> window_;
   std::unique_ptr<Renderer> renderer_;
   std::unique_ptr<ImGuiLayer> ui_;
+  std::vector<std::unique_ptr<UiTexture>> thumbnails_;
+  EffectPanel panel_;
   OrbitCamera camera_;
   StatsOverlay stats_;
   InputState devices_;
@@ -97,14 +124,16 @@ class WorkbenchSession {
 
 void WorkbenchSession::setup() {
   files_ = effect_files(options_.root_dir);
-  if (files_.empty()) throw InputError(options_.root_dir + "/assets/effects: no effect files");
   if (!options_.effect_path.empty()) {
     const fs::path wanted = fs::weakly_canonical(options_.effect_path);
     auto same = [&](const std::string& f) { return fs::weakly_canonical(f) == wanted; };
     current_ = size_t(std::find_if(files_.begin(), files_.end(), same) - files_.begin());
     if (current_ == files_.size()) files_.push_back(options_.effect_path);  // outside the folder: listed last
   }
-  stage_.set_effect(read_text_file(files_[current_]), files_[current_]);  // bad file: its line, exit 2
+  if (files_.empty()) throw InputError(options_.root_dir + "/assets/effects: no effect files");
+  std::string error;
+  doc_ = EffectDocument::open(files_[current_], error);
+  if (!doc_) throw InputError(error);  // a bad file: the loader's line, exit 2
   WindowDesc wd;
   wd.width = options_.width;
   wd.height = options_.height;
@@ -120,21 +149,48 @@ void WorkbenchSession::setup() {
   renderer_->time_gpu_passes(true);
   load_stage_models(*renderer_, options_.root_dir, stage_);
   ui_ = std::make_unique<ImGuiLayer>();
-  stage_.scrub(8);  // a moment in, so the first frame has particles to frame
+  std::vector<uint32_t> names;
+  for (std::string_view name : kSpriteNames) {
+    thumbnails_.push_back(std::make_unique<UiTexture>(load_image(sprite_path(options_.root_dir, name))));
+    names.push_back(thumbnails_.back()->gl_name());
+  }
+  panel_.set_sprite_thumbnails(std::move(names));
+  stage_.set_effect(doc_->library(), doc_->name());
+  shown_revision_ = doc_->revision();
+  stage_.set_loop_seconds(stage_.effect_seconds(nullptr) + 0.25);
+  stage_.scrub(8);  // a moment in, so there are particles to frame
   frame_effect();
   stage_.scrub(0);
 }
 
 void WorkbenchSession::open_effect(size_t index) {
-  try {
-    stage_.set_effect(read_text_file(files_[index]), files_[index]);
-    current_ = index;
-    error_.clear();
-    stage_.scrub(0);
-    stage_.set_playing(true);
-  } catch (const InputError& e) {
-    error_ = e.what();
+  std::string error;
+  std::unique_ptr<EffectDocument> doc = EffectDocument::open(files_[index], error);
+  if (!doc) {
+    error_ = error;
+    return;
   }
+  doc_ = std::move(doc);
+  current_ = index;
+  error_.clear();
+  notice_.clear();
+  conflict_ = false;
+  panel_.forget_errors();
+  stage_.set_effect(doc_->library(), doc_->name());
+  shown_revision_ = doc_->revision();
+  stage_.set_loop_seconds(stage_.effect_seconds(nullptr) + 0.25);
+  stage_.scrub(0);
+  stage_.set_playing(true);
+}
+
+// Another effect or quitting: at once without unsaved edits, else after the user's answer.
+void WorkbenchSession::leave(bool quit, size_t effect) {
+  if (doc_->dirty()) {
+    pending_ = {true, quit, effect};
+    return;
+  }
+  if (quit) window_->request_close();
+  else open_effect(effect);
 }
 
 void WorkbenchSession::frame_effect() {
@@ -142,6 +198,29 @@ void WorkbenchSession::frame_effect() {
   double radius = 1.0;
   stage_.bounds(centre, radius);
   camera_.frame(centre, radius);
+}
+
+void WorkbenchSession::save() {
+  try {
+    doc_->save();
+    notice_ = "saved " + doc_->path();
+    error_.clear();
+  } catch (const InputError& e) {
+    error_ = e.what();
+  }
+}
+
+// Twice a second: a file changed on disk reloads unless there are unsaved edits; then the
+// panel asks (keep mine / reload).
+void WorkbenchSession::poll_disk() {
+  if (window_->time_seconds() < next_poll_) return;
+  next_poll_ = window_->time_seconds() + 0.5;
+  switch (doc_->poll()) {
+    case DiskChange::Unchanged: break;
+    case DiskChange::Reloaded: notice_ = "reloaded: the file changed on disk"; break;
+    case DiskChange::Conflict: conflict_ = true; break;
+    case DiskChange::Invalid: error_ = "the file on disk is refused: " + doc_->disk_error(); break;
+  }
 }
 
 // Left drag orbits, right drag pans, the wheel zooms, a double click frames: only where the
@@ -164,16 +243,82 @@ void WorkbenchSession::handle_mouse() {
   }
 }
 
+// Ctrl+S, Ctrl+Z, Ctrl+Y (or Ctrl+Shift+Z), and the stage keys; not while a text field types.
 void WorkbenchSession::handle_keys() {
   if (ui_->wants_keyboard()) return;
+  const ImGuiIO& io = ImGui::GetIO();
   auto pressed = [](const char* name) { return ImGui::IsKeyPressed(key_code(name), false); };
   auto repeated = [](const char* name) { return ImGui::IsKeyPressed(key_code(name), true); };
-  if (pressed("ESCAPE")) window_->request_close();
+  if (io.KeyCtrl) {
+    if (pressed("S")) save();
+    if (repeated("Z") && !io.KeyShift) doc_->undo();
+    if (repeated("Y") || (repeated("Z") && io.KeyShift)) doc_->redo();
+    return;
+  }
+  if (pressed("ESCAPE")) leave(true, current_);
   if (pressed("SPACE")) stage_.set_playing(!stage_.playing());
   if (repeated("LEFT")) stage_.step_by(-1);
   if (repeated("RIGHT")) stage_.step_by(1);
   if (pressed("HOME")) stage_.scrub(0);
   if (pressed("F")) frame_effect();
+}
+
+void WorkbenchSession::draw_file_section() {
+  std::vector<std::string> names;
+  for (const std::string& f : files_) names.push_back(fs::path(f).stem().string());
+  if (const int chosen = draw_effect_list(names, int(current_)); chosen >= 0 && size_t(chosen) != current_)
+    leave(false, size_t(chosen));
+  ImGui::TextDisabled("%s", fs::proximate(doc_->path(), options_.root_dir).c_str());
+  if (ImGui::Button("Save")) save();
+  ImGui::SameLine();
+  ImGui::BeginDisabled(!doc_->can_undo());
+  if (ImGui::Button("Undo")) doc_->undo();
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::BeginDisabled(!doc_->can_redo());
+  if (ImGui::Button("Redo")) doc_->redo();
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  if (doc_->dirty()) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "unsaved edits");
+  else ImGui::TextDisabled("%s", notice_.empty() ? "as on disk" : notice_.c_str());
+  if (conflict_) {
+    ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "The file changed on disk, and you have unsaved edits.");
+    if (ImGui::Button("Keep mine")) doc_->keep_mine(), conflict_ = false;
+    ImGui::SameLine();
+    if (ImGui::Button("Reload from disk")) {
+      const EditResult r = doc_->reload();
+      if (!r.ok) error_ = r.message;
+      conflict_ = false;
+    }
+  }
+  if (!error_.empty()) {
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", error_.c_str());
+    ImGui::PopTextWrapPos();
+  }
+}
+
+void WorkbenchSession::draw_leave_prompt() {
+  if (pending_.asked && !ImGui::IsPopupOpen("Unsaved edits")) ImGui::OpenPopup("Unsaved edits");
+  if (!ImGui::BeginPopupModal("Unsaved edits", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  ImGui::Text("%s has unsaved edits.", doc_->name().c_str());
+  const bool save_it = ImGui::Button("Save");
+  ImGui::SameLine();
+  const bool discard = ImGui::Button("Discard");
+  ImGui::SameLine();
+  const bool cancel = ImGui::Button("Cancel");
+  if (save_it) save();
+  if ((save_it && !doc_->dirty()) || discard) {
+    const PendingLeave p = pending_;
+    pending_ = {};
+    ImGui::CloseCurrentPopup();
+    if (p.quit) window_->request_close();
+    else open_effect(p.effect);
+  } else if (cancel || (save_it && doc_->dirty())) {
+    pending_ = {};
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::EndPopup();
 }
 
 void WorkbenchSession::draw_panel() {
@@ -182,41 +327,50 @@ void WorkbenchSession::draw_panel() {
   ImGui::SetNextWindowSize(ImVec2(kPanelWidth, io.DisplaySize.y), ImGuiCond_Always);
   ImGui::Begin("Effect workbench", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
                                                 ImGuiWindowFlags_NoCollapse);
-  std::vector<std::string> names;
-  for (const std::string& f : files_) names.push_back(fs::path(f).stem().string());
-  if (const int chosen = draw_effect_list(names, int(current_)); chosen >= 0) open_effect(size_t(chosen));
-  ImGui::TextDisabled("%s", files_[current_].c_str());
-  if (!error_.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", error_.c_str());
+  draw_file_section();
   if (ImGui::CollapsingHeader("Stage", ImGuiTreeNodeFlags_DefaultOpen)) {
     draw_backdrop_section(stage_);
-    ImGui::TextDisabled("drag: orbit  right drag: pan  wheel: zoom  double-click or F: frame");
+    ImGui::TextDisabled("drag: orbit  right drag: pan  wheel: zoom  double-click: frame");
   }
   if (ImGui::CollapsingHeader("Time", ImGuiTreeNodeFlags_DefaultOpen)) draw_time_section(stage_);
+  if (ImGui::CollapsingHeader("Effect file", ImGuiTreeNodeFlags_DefaultOpen)) panel_.draw(*doc_);
+  draw_leave_prompt();
   ImGui::End();
+}
+
+void WorkbenchSession::draw_stats(int width, int height) {
+  const EffectCounts counts = stage_.counts();
+  StageFigures figures;
+  if (const EffectDef* def = stage_.effect())
+    for (const ClusterDef& c : def->clusters) figures.cluster_names.push_back(c.name);
+  figures.live_per_cluster = counts.cluster_particles;
+  figures.live = counts.live_particles;
+  figures.budget = stage_.particle_budget();
+  figures.scene_pixels = width * height;
+  stats_.draw(figures, renderer_->last_stats(), width);
 }
 
 void WorkbenchSession::frame(double frame_seconds) {
   window_->poll(devices_);
   ui_->begin_frame();
+  poll_disk();
   handle_mouse();
   handle_keys();
   draw_panel();
+  if (doc_->revision() != shown_revision_) {  // an edit, undo, redo or reload: the next frame shows it
+    stage_.set_effect(doc_->library(), doc_->name());
+    shown_revision_ = doc_->revision();
+  }
   stats_.record_frame(frame_seconds);
   const int width = window_->framebuffer_width(), height = window_->framebuffer_height();
-  StageFigures figures;
-  if (const EffectDef* def = stage_.effect())
-    for (const ClusterDef& c : def->clusters) figures.cluster_names.push_back(c.name);
-  figures.live_per_cluster = stage_.live_per_cluster();
-  figures.live = stage_.live_particles();
-  figures.budget = stage_.particle_budget();
-  figures.scene_pixels = width * height;
-  stats_.draw(figures, renderer_->last_stats(), width);
+  draw_stats(width, height);
   const CameraView cam = camera_.view();
   ParticleCamera pc;
   pc.position = cam.position;
   pc.orientation = cam.orientation;
   pc.fov_y_radians = cam.fov_y_radians;
   pc.aspect = height > 0 ? double(width) / height : 1.0;
+  pc.near_plane = cam.near_plane;
   stage_.set_camera(pc);
   stage_.advance(frame_seconds);
   if (width > 0 && height > 0) {
