@@ -4,7 +4,8 @@
 # are scene_*.replay scripts) replayed with --update-golden, which rewrites its hash lines,
 # golden/<script>/hashes.txt and its snapshot PNGs. Scripts whose snapshots compare with
 # another script's frames (`snapshots_like`) run last, against the fresh frames. Look at the
-# changed PNGs before committing them.
+# changed PNGs before committing them. Last, the effect filmstrips of tests/preview/golden
+# (build/test_preview with ARCFIRE_UPDATE_GOLDEN=1).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 "$root/tools/build.sh"
@@ -19,4 +20,6 @@ done
 for s in tests/replays/*.replay; do
   if grep -Eq '^[[:space:]]*snapshots_like[[:space:]]' "$s"; then update "$s"; fi
 done
+# The effect filmstrips (tests/preview/golden/*.png).
+ARCFIRE_UPDATE_GOLDEN=1 ./build/test_preview || true
 git status --short -- tests

@@ -51,7 +51,7 @@ glm::dvec3 vec3(JsonObject& o, B block, const char* key) {
 }
 
 // A distribution: a number (constant) or [min, max] with min ≤ max.
-Range read_range(JsonObject& o, const char* key, double unit = 1.0) {
+Range read_range(JsonObject& o, const std::string& key, double unit = 1.0) {
   const EffectField& f = effect_field(B::Particles, key);
   const double lo = f.min, hi = f.max;
   auto v = o.get(key);

@@ -14,7 +14,10 @@ constexpr double kBig = 1e6;  // m: the largest distance or extent an effect may
 
 EffectField field(B block, const char* key, K kind, double min, double max, J fallback, const char* unit = "",
                   const char* applies = "", bool required = false) {
-  EffectField f{block, key, kind};
+  EffectField f{};
+  f.block = block;
+  f.key = key;
+  f.kind = kind;
   f.min = min;
   f.max = max;
   f.fallback = std::move(fallback);
@@ -26,7 +29,10 @@ EffectField field(B block, const char* key, K kind, double min, double max, J fa
 
 EffectField choice(B block, const char* key, std::vector<const char*> choices, const char* applies = "",
                    int fallback = 0) {
-  EffectField f{block, key, K::Enum};
+  EffectField f{};
+  f.block = block;
+  f.key = key;
+  f.kind = K::Enum;
   f.fallback = choices[size_t(fallback)];
   f.choices = std::move(choices);
   f.applies = applies;
@@ -34,7 +40,10 @@ EffectField choice(B block, const char* key, std::vector<const char*> choices, c
 }
 
 EffectField other(B block, const char* key, K kind, J fallback, bool required = false, const char* applies = "") {
-  EffectField f{block, key, kind};
+  EffectField f{};
+  f.block = block;
+  f.key = key;
+  f.kind = kind;
   f.fallback = std::move(fallback);
   f.required = required;
   f.applies = applies;

@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "audio/sound_library.h"
 #include "core/json.h"
+#include "game/app/effect_preview.h"
 #include "game/app/input_bindings.h"
 
 namespace arc {
@@ -91,6 +92,11 @@ void define_options(CLI::App& app, AppOptions& o, CommandLineText& t) {
   app.add_option("--sounds", o.sounds_path, "sound definitions, synthesised at start-up (default assets/sounds/sounds.json)");
   app.add_option("--audio-out", o.audio_out,
                  "headless or replay: render the session's sound through OpenAL's loopback device into this WAV file");
+  app.add_option("--preview", o.preview_path,
+                 "headless: a filmstrip of one effect file (assets/effects/NAME.json) and stats.json into --out");
+  app.add_option("--frames", o.preview_frames, "preview: moments of the effect's life in the filmstrip (default 8)")
+      ->check(CLI::Range(1, 64));
+  app.add_option("--backdrop", o.preview_backdrop, "preview: space (default), wall or a model of assets/models");
   app.add_flag("--fullscreen", o.fullscreen, "start in fullscreen (F11 or Alt+Enter toggles)");
   app.add_flag("--no-vsync", t.no_vsync, "do not wait for vertical sync");
   app.add_flag("--fps", o.show_fps, "show the FPS counter (F3 toggles)");
@@ -98,6 +104,19 @@ void define_options(CLI::App& app, AppOptions& o, CommandLineText& t) {
                  "open the effect workbench on an effect file (default: the first in assets/effects)")
       ->expected(0, 1);
   app.set_version_flag("--version", "arcfire 0.1.0");
+}
+
+void resolve_preview_options(const CLI::App& app, AppOptions& o) {
+  const bool frames = app.get_option("--frames")->count() > 0, backdrop = app.get_option("--backdrop")->count() > 0;
+  if (o.preview_path.empty()) {
+    if (frames || backdrop) throw InputError(std::string(frames ? "--frames" : "--backdrop") + ": only with --preview");
+    return;
+  }
+  if (!o.headless) throw InputError("--preview: only with --headless");
+  if (o.out_dir.empty()) throw InputError("--preview: needs --out DIR for the filmstrip and stats.json");
+  o.preview_path = resolve_data_path(o.preview_path, "--preview");
+  const std::string bad_backdrop = check_preview_backdrop(o.preview_backdrop, ARCFIRE_SOURCE_DIR);
+  if (!bad_backdrop.empty()) throw InputError(bad_backdrop);
 }
 
 // Files, settings and choices of the parsed command line checked and resolved into `o`;
@@ -138,6 +157,7 @@ void resolve_options(const CLI::App& app, const CommandLineText& t, AppOptions& 
   if (!o.audio_out.empty() && !o.headless && o.replay_path.empty())
     throw InputError("--audio-out: only with --headless or --replay");
   if (o.update_golden && o.replay_path.empty()) throw InputError("--update-golden: only with --replay");
+  resolve_preview_options(app, o);
   o.workbench = app.get_option("--workbench")->count() > 0;
   if (!o.workbench_effect.empty()) o.workbench_effect = resolve_data_path(o.workbench_effect, "--workbench");
 }
@@ -161,6 +181,7 @@ std::optional<int> parse_command_line(int argc, char** argv, AppOptions& o) {
     return int(kExitBadInput);
   }
   o.vsync = !text.no_vsync;
+  o.size_given = app.get_option("--size")->count() > 0;
   o.level_given = app.get_option("--level")->count() > 0;
   o.bindings_given = app.get_option("--bindings")->count() > 0;
   o.quality_given = !text.quality.empty();

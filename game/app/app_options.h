@@ -34,6 +34,10 @@ struct AppOptions {
   bool bindings_given = false;  // --bindings: that file wins over the user's settings
   bool quality_given = false;   // --quality: that preset wins over the user's settings
   std::vector<std::string> setting_overrides;  // the --set texts, applied again over the user's preset
+  std::string preview_path;           // --preview: an effect file's filmstrip into --out (headless)
+  int preview_frames = 8;             // --frames
+  std::string preview_backdrop = "space";  // --backdrop
+  bool size_given = false;            // --size was on the command line
   bool fullscreen = false;
   bool vsync = true;
   bool show_fps = false;

@@ -14,6 +14,7 @@
 #include "assets/model.h"
 #include "core/error.h"
 #include "core/json.h"
+#include "game/app/app_options.h"
 #include "game/app/scene_resources.h"
 #include "game/workbench/effect_timeline.h"
 #include "gfx/renderer.h"
@@ -52,30 +53,34 @@ struct Bounds {
   double radius = 5.0;
 };
 
-// A sphere around every particle of every sampled moment, seen from far up the +Z axis with a
-// wide view so that nothing is culled.
+// A sphere around nine in ten particles of all the sampled moments (the farthest strays would
+// shrink the effect to a dot), seen from far up the +Z axis with a wide view so none is culled.
 Bounds effect_bounds(EffectTimeline& timeline, const std::vector<uint64_t>& ticks) {
   ParticleCamera far;
   far.position = {0.0, 0.0, 5000.0};
   far.fov_y_radians = 3.0;
   far.aspect = 1.0;
-  glm::dvec3 lo(1e30), hi(-1e30);
+  std::vector<glm::dvec3> centres;
+  std::vector<double> sizes;
   std::vector<ParticleInstance> drawn;
   for (uint64_t t : ticks) {
     timeline.scrub_to(t, far);
     drawn.clear();
     timeline.world().collect(far, drawn);
     for (const ParticleInstance& p : drawn) {
-      const glm::dvec3 c = far.position + glm::dvec3(p.pos[0], p.pos[1], p.pos[2]);
-      const glm::dvec3 half(p.size + 0.5 * std::max({std::abs(p.axis[0]), std::abs(p.axis[1]), std::abs(p.axis[2])}));
-      lo = glm::min(lo, c - half);
-      hi = glm::max(hi, c + half);
+      centres.push_back(far.position + glm::dvec3(p.pos[0], p.pos[1], p.pos[2]));
+      sizes.push_back(p.size + 0.5 * glm::length(glm::dvec3(p.axis[0], p.axis[1], p.axis[2])));
     }
   }
   Bounds b;
-  if (lo.x > hi.x) return b;
-  b.centre = (lo + hi) * 0.5;
-  b.radius = std::max(0.5, glm::length(hi - lo) * 0.5);
+  if (centres.empty()) return b;
+  glm::dvec3 sum(0.0);
+  for (const glm::dvec3& c : centres) sum += c;
+  b.centre = sum / double(centres.size());
+  std::vector<double> reach;
+  for (size_t i = 0; i < centres.size(); ++i) reach.push_back(glm::length(centres[i] - b.centre) + sizes[i]);
+  std::sort(reach.begin(), reach.end());
+  b.radius = std::max(0.5, reach[reach.size() * 9 / 10]);
   return b;
 }
 
@@ -90,7 +95,7 @@ CameraView frame_camera(const Bounds& b, double aspect) {
   return c;
 }
 
-// The wall through the effect's centre, its thinnest side facing the camera, wide enough to fill the view.
+// The wall behind the effect's centre, its thinnest side facing the camera, wide enough to fill the view.
 MeshInstance wall_instance(ModelId id, const ModelData& wall, const Bounds& b, const CameraView& camera) {
   const glm::vec3 size = wall.bounds_max - wall.bounds_min;
   const int thin = size.x <= size.y && size.x <= size.z ? 0 : size.y <= size.z ? 1 : 2;
@@ -105,8 +110,16 @@ MeshInstance wall_instance(ModelId id, const ModelData& wall, const Bounds& b, c
   const float wide = std::max({size[(thin + 1) % 3], size[(thin + 2) % 3], 1e-3f});
   m.scale = 3.0 * b.radius / wide;
   const glm::vec3 mid = (wall.bounds_min + wall.bounds_max) * 0.5f;
-  m.position = b.centre - m.orientation * (glm::dvec3(mid) * m.scale);
+  // A third of the way back: most of the effect in front, its far side cut by the wall.
+  m.position = b.centre - facing * (b.radius / 3.0) - m.orientation * (glm::dvec3(mid) * m.scale);
   return m;
+}
+
+// A trail laid along the emitter's path ("spacing") shows only behind a moving owner.
+bool lays_a_trail(const EffectDef& def) {
+  for (const ClusterDef& c : def.clusters)
+    if (c.emitter.spacing > 0.0) return true;
+  return false;
 }
 
 std::string label(uint64_t tick, uint32_t particles) {
@@ -131,6 +144,17 @@ Image filmstrip(const std::vector<Image>& frames) {
 
 }  // namespace
 
+PreviewOptions preview_options(const AppOptions& app) {
+  PreviewOptions o;
+  o.effect_path = app.preview_path;
+  o.out_dir = app.out_dir;
+  if (app.size_given) o.frame_width = app.width, o.frame_height = app.height;
+  o.frames = app.preview_frames;
+  o.backdrop = app.preview_backdrop;
+  o.settings = app.settings;
+  return o;
+}
+
 std::string check_preview_backdrop(const std::string& backdrop, const std::string& root_dir) {
   if (backdrop == "space" || backdrop == "wall") return "";
   const std::vector<std::string> models = model_names(root_dir);
@@ -151,7 +175,9 @@ int run_preview(const PreviewOptions& o) {
   fs::create_directories(o.out_dir, ec);
   if (!fs::is_directory(o.out_dir)) throw InputError("--out " + o.out_dir + ": cannot create folder");
 
-  EffectTimeline timeline(fx, name);
+  StageOptions stage;
+  stage.motion = lays_a_trail(fx->get(name)) ? StageMotion::Circle : StageMotion::Still;
+  EffectTimeline timeline(fx, name, stage);
   bool ends = false;
   const double life = EffectTimeline::life_seconds(fx->get(name), &ends);
   const std::vector<uint64_t> ticks = sample_ticks(life, o.frames);
@@ -189,7 +215,9 @@ int run_preview(const PreviewOptions& o) {
     view.particles.clear();
     timeline.world().collect(cam, view.particles);
     view.time_seconds = double(t) / kTickRate;
-    view.hud.texts = {{6.0f, 4.0f, 1.0f, {1.0f, 1.0f, 1.0f, 0.95f}, label(t, counts.live_particles)}};
+    const std::string text = label(t, counts.live_particles);
+    view.hud.quads = {{2.0f, 2.0f, 8.0f + 7.0f * float(text.size()), 18.0f, {0.0f, 0.0f, 0.0f, 0.6f}}};
+    view.hud.texts = {{6.0f, 4.0f, 1.0f, {1.0f, 1.0f, 1.0f, 0.95f}, text}};
     renderer.restart_smoothing();  // each frame stands alone, as if it were the first
     renderer.render(view, o.frame_width, o.frame_height);
     frames.push_back(renderer.read_pixels());

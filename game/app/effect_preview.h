@@ -6,8 +6,10 @@
 // DIR/stats.json has per frame the tick, the live particles (per cluster too), the particles
 // drawn and the pixels the particle pass blended (the renderer's occlusion query). The camera
 // frames every particle of all N moments at once, so motion reads across the strip. Backdrops:
-// empty space, the wall cutting the effect through its centre (soft edges show where particles
-// meet it), or a model of assets/models at the origin. A bad effect file is the loader's line.
+// empty space, the wall a third of the effect's radius behind its centre (soft edges show where
+// particles meet it), or a model of assets/models at the origin. An effect that lays a trail along its
+// emitter's path ("spacing") is spawned on an owner flying the workbench's circle, so the trail
+// shows. A bad effect file is the loader's line.
 #pragma once
 #include <string>
 
@@ -25,6 +27,10 @@ struct PreviewOptions {
   Settings settings = Settings::defaults();
   std::string root_dir = ARCFIRE_SOURCE_DIR;
 };
+
+struct AppOptions;
+// The preview's part of the command line; frames are 320x240 unless --size says otherwise.
+PreviewOptions preview_options(const AppOptions& app);
 
 // "" when the backdrop names space, the wall or a model that exists; else the one-line error.
 std::string check_preview_backdrop(const std::string& backdrop, const std::string& root_dir);

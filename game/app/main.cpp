@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "game/app/app_options.h"
+#include "game/app/effect_preview.h"
 #include "game/app/headless_run.h"
 #include "game/app/menu_snapshots.h"
 #include "game/app/replay_player.h"
@@ -21,6 +22,7 @@ int main(int argc, char** argv) {
     if (!options.replay_path.empty()) return arc::run_replay(arc::ReplayRunOptions(options));
     if (options.serialization_test > 0) return arc::run_serialization_test(arc::SerializationTestOptions(options));
     if (!options.menu_script.empty()) return arc::run_menu_script(options);
+    if (!options.preview_path.empty()) return arc::run_preview(arc::preview_options(options));
     if (options.headless || options.demo) return arc::run_headless(options);
     if (options.workbench)
       return arc::run_workbench({.effect_path = options.workbench_effect, .settings = options.settings,

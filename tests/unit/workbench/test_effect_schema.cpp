@@ -1,9 +1,12 @@
 // The panel's field table is the loader's: every numeric range and enumeration the schema gives
-// is the one the loader enforces (one value past either end is refused, the ends are accepted
-// where no other rule of the key interferes), and the schema's defaults are what the loader uses.
+// is the one the loader enforces (one value past either end is refused for its range, and
+// neither end is), and the schema's defaults are what the loader uses.
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <cmath>
+#include <cstring>
+#include <sstream>
 
 #include "game/workbench/effect_document.h"
 #include "tests/unit/workbench/workbench_files.h"
@@ -32,7 +35,8 @@ std::string probe_pointer(const EffectField& f) {
   std::string cluster = "/clusters/0";
   const char* owners[] = {"", "sphere", "lightning", "cone", "box", "line"};
   for (int i = 1; i < 6; ++i)
-    if (applies.rfind(owners[i], 0) == 0) cluster = "/clusters/" + std::to_string(i);
+    if (applies.rfind(owners[i], 0) == 0 && !std::isalpha(static_cast<unsigned char>(applies[std::strlen(owners[i])])))
+      cluster = "/clusters/" + std::to_string(i);
   switch (f.block) {
     case EffectBlock::Root: return std::string("/") + f.key;
     case EffectBlock::Cluster: return cluster + "/" + f.key;
@@ -50,6 +54,14 @@ json value_of(const EffectField& f, double x) {
     case FieldKind::Integer: return json(static_cast<int64_t>(x));
     default: return json(x);
   }
+}
+
+// A range end as the loader's messages write it.
+std::string bound(const EffectField& f, double x) {
+  if (f.kind == FieldKind::Integer) return std::to_string(static_cast<int64_t>(x));
+  std::ostringstream s;
+  s << x;
+  return s.str();
 }
 
 bool numeric(const EffectField& f) {
@@ -70,11 +82,30 @@ TEST(EffectSchema, TheLoaderRefusesValuesJustOutsideEverySchemaRange) {
     for (double outside : {f.max + step, f.min - (f.kind == FieldKind::Integer ? 1.0 : std::max(1e-6, std::abs(f.min) * 1e-3))}) {
       const EditResult r = doc->set(at, value_of(f, outside));
       EXPECT_FALSE(r.ok) << at << " = " << outside << " was accepted; the schema says [" << f.min << ", " << f.max << "]";
-      EXPECT_NE(r.message.find(f.key), std::string::npos) << at << ": " << r.message;
+      EXPECT_NE(r.message.find("'" + std::string(f.key)), std::string::npos) << at << ": " << r.message;
+      EXPECT_NE(r.message.find(" in [" + bound(f, f.min) + ", " + bound(f, f.max) + "]"), std::string::npos)
+          << at << " refused, but not for the schema's range: " << r.message;
     }
     ++probed;
   }
   EXPECT_GE(probed, 40);
+}
+
+TEST(EffectSchema, TheLoaderAcceptsBothEndsOfEverySchemaRange) {
+  test::ScratchDir dir("schema_ends");
+  std::string error;
+  auto doc = EffectDocument::open(dir.write("probe.json", kProbe), error);
+  ASSERT_TRUE(doc) << error;
+  for (const EffectField& f : effect_schema()) {
+    if (!numeric(f) || std::string(f.key) == "triangles") continue;
+    const std::string at = probe_pointer(f);
+    for (double end : {f.min, f.max}) {
+      const EditResult r = doc->set(at, value_of(f, end));
+      // Another rule of the key may refuse an end ("seed_length" above zero), never its range.
+      EXPECT_EQ(r.message.find(" in ["), std::string::npos) << at << " = " << end << ": " << r.message;
+      if (r.ok) doc->undo();
+    }
+  }
 }
 
 TEST(EffectSchema, EnumerationsAreTheLoadersChoices) {
