@@ -284,8 +284,9 @@ void EffectPanel::draw_clusters(EffectDocument& doc) {
     const std::string pointer = "/clusters/" + std::to_string(i);
     const std::string name = clusters[i].value("name", "cluster " + std::to_string(i));
     ImGui::PushID(int(i));
+    if (i == 0) ImGui::SetNextItemOpen(true, ImGuiCond_Once);
     const bool open = ImGui::TreeNodeEx("##cluster", ImGuiTreeNodeFlags_AllowItemOverlap, "%zu  %s", i, name.c_str());
-    ImGui::SameLine(ImGui::GetContentRegionAvail().x - 110.0f);
+    ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - 150.0f);
     EditResult r;
     bool acted = false;
     if (ImGui::SmallButton("up") && i > 0) r = doc.move("/clusters", i, i - 1), acted = true;

@@ -244,15 +244,23 @@ void WorkbenchSession::handle_mouse() {
 }
 
 // Ctrl+S, Ctrl+Z, Ctrl+Y (or Ctrl+Shift+Z), and the stage keys; not while a text field types.
+// Presses are the window's counts (a tap shorter than a frame still counts); held keys repeat
+// at ImGui's key-repeat rate.
 void WorkbenchSession::handle_keys() {
   if (ui_->wants_keyboard()) return;
   const ImGuiIO& io = ImGui::GetIO();
-  auto pressed = [](const char* name) { return ImGui::IsKeyPressed(key_code(name), false); };
-  auto repeated = [](const char* name) { return ImGui::IsKeyPressed(key_code(name), true); };
-  if (io.KeyCtrl) {
+  auto pressed = [&](const char* name) { return devices_.key_presses[size_t(key_code(name))] > 0; };
+  auto repeated = [&](const char* name) {
+    const int code = key_code(name);
+    return pressed(name) || (io.KeysDownDuration[code] > io.KeyRepeatDelay && ImGui::IsKeyPressed(code, true));
+  };
+  auto down = [&](const char* name) { return devices_.keys[size_t(key_code(name))]; };
+  const bool ctrl = down("LEFT_CONTROL") || down("RIGHT_CONTROL");
+  const bool shift = down("LEFT_SHIFT") || down("RIGHT_SHIFT");
+  if (ctrl) {
     if (pressed("S")) save();
-    if (repeated("Z") && !io.KeyShift) doc_->undo();
-    if (repeated("Y") || (repeated("Z") && io.KeyShift)) doc_->redo();
+    if (repeated("Z") && !shift) doc_->undo();
+    if (repeated("Y") || (repeated("Z") && shift)) doc_->redo();
     return;
   }
   if (pressed("ESCAPE")) leave(true, current_);
@@ -330,7 +338,7 @@ void WorkbenchSession::draw_panel() {
   draw_file_section();
   if (ImGui::CollapsingHeader("Stage", ImGuiTreeNodeFlags_DefaultOpen)) {
     draw_backdrop_section(stage_);
-    ImGui::TextDisabled("drag: orbit  right drag: pan  wheel: zoom  double-click: frame");
+    ImGui::TextDisabled("drag orbit, right-drag pan, wheel zoom, double-click frame");
   }
   if (ImGui::CollapsingHeader("Time", ImGuiTreeNodeFlags_DefaultOpen)) draw_time_section(stage_);
   if (ImGui::CollapsingHeader("Effect file", ImGuiTreeNodeFlags_DefaultOpen)) panel_.draw(*doc_);
