@@ -2,6 +2,7 @@
 #include "game/workbench/workbench_window.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <imgui.h>
 #include <memory>
@@ -19,6 +20,7 @@
 #include "game/workbench/stats_overlay.h"
 #include "game/workbench/workbench_stage.h"
 #include "gfx/renderer.h"
+#include "gfx/screenshot.h"
 #include "gfx/ui_texture.h"
 #include "particles/sprites.h"
 #include "platform/platform.h"
@@ -40,6 +42,16 @@ std::vector<std::string> effect_files(const std::string& root) {
 }
 
 // The ship models (the "model" of each assets/ships/*.json) and the wall, into the renderer.
+// out/screenshots/workbench_NNNN.png in the working folder, the first number not taken.
+std::string screenshot_path() {
+  fs::create_directories("out/screenshots");
+  for (int i = 1;; ++i) {
+    char name[64];
+    std::snprintf(name, sizeof name, "out/screenshots/workbench_%04d.png", i);
+    if (!fs::exists(name)) return name;
+  }
+}
+
 std::string sprite_path(const std::string& root, std::string_view name) {
   return (fs::path(root) / ("assets/textures/sprite_" + std::string(name) + ".png")).string();
 }
@@ -120,6 +132,7 @@ class WorkbenchSession {
   InputState devices_;
   RenderView view_;
   bool orbiting_ = false, panning_ = false;
+  bool want_screenshot_ = false;  // F12: the next frame, panel included
 };
 
 void WorkbenchSession::setup() {
@@ -269,6 +282,7 @@ void WorkbenchSession::handle_keys() {
   if (repeated("RIGHT")) stage_.step_by(1);
   if (pressed("HOME")) stage_.scrub(0);
   if (pressed("F")) frame_effect();
+  if (pressed("F12")) want_screenshot_ = true;
 }
 
 void WorkbenchSession::draw_file_section() {
@@ -386,6 +400,13 @@ void WorkbenchSession::frame(double frame_seconds) {
     renderer_->render(view_, width, height);
   }
   ui_->end_frame();
+  if (want_screenshot_ && width > 0 && height > 0) {
+    const std::string path = screenshot_path();  // read before the swap leaves the back buffer undefined
+    save_image(path, read_window_pixels(width, height));
+    std::printf("arcfire: screenshot %s\n", path.c_str());
+    std::fflush(stdout);
+    want_screenshot_ = false;
+  }
   window_->swap();
 }
 

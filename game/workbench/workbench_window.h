@@ -4,7 +4,9 @@
 // camera (drag to orbit, wheel to zoom, double-click to frame the effect), the panel beside it
 // (effect list, backdrop, time controls, every field of the effect file) and the stats
 // overlay. Keys, when no text field has the keyboard: Space plays or pauses, Left/Right step
-// one tick, Home goes to tick 0, F frames the effect, Esc quits.
+// one tick, Home goes to tick 0, F frames the effect, F12 saves a screenshot (panel included) to
+// out/screenshots/, Ctrl+S saves, Ctrl+Z / Ctrl+Y undo and redo, Esc quits (asking first when
+// there are unsaved edits).
 #pragma once
 #include <string>
 
