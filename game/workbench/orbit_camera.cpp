@@ -18,7 +18,7 @@ void OrbitCamera::drag(double dx_pixels, double dy_pixels) {
 }
 
 void OrbitCamera::zoom(double wheel_steps) {
-  distance = std::clamp(distance * std::pow(0.85, wheel_steps), kMinDistance, kMaxDistance);
+  distance = std::clamp(distance * std::pow(0.8, wheel_steps), kMinDistance, kMaxDistance);
 }
 
 // The distance at which the sphere just fits the vertical field of view, with a margin.

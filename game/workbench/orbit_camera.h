@@ -19,7 +19,7 @@ namespace arc {
 class OrbitCamera {
  public:
   void drag(double dx_pixels, double dy_pixels);  // 0.3° per pixel
-  void zoom(double wheel_steps);                  // each step 15% closer (positive) or farther
+  void zoom(double wheel_steps);                  // each step 20% closer (positive) or farther
   void frame(const glm::dvec3& centre, double radius);
   CameraView view() const;
 

@@ -40,9 +40,12 @@ void draw_backdrop_section(WorkbenchStage& stage) {
       current = i;
   if (ImGui::BeginCombo("backdrop", labels[current].c_str())) {
     for (size_t i = 0; i < choices.size(); ++i)
-      if (ImGui::Selectable(labels[i].c_str(), i == current)) stage.set_backdrop(choices[i]);
+      if (ImGui::Selectable(labels[i].c_str(), i == current)) stage.set_backdrop({choices[i].kind, choices[i].model, b.at_stern});
     ImGui::EndCombo();
   }
+  if (b.kind != BackdropKind::Circling) return;
+  bool stern = b.at_stern;
+  if (ImGui::Checkbox("effect at the stern", &stern)) stage.set_backdrop({b.kind, b.model, stern});
 }
 
 void draw_time_section(WorkbenchStage& stage) {

@@ -111,7 +111,8 @@ void WorkbenchStage::build_view(const CameraView& camera, int width, int height,
       m.position = {0.0, 0.0, -ship.radius * 1.3};  // behind the stage, seen past the effect
     } else if (timeline_) {
       const OwnerTransform t = timeline_->owner_transform();
-      m.position = t.position;
+      const double stern = backdrop_.at_stern ? double(ship.bounds_max.z) : 0.0;  // +Z is aft
+      m.position = t.position - t.orientation * glm::dvec3(0.0, 0.0, stern);
       m.orientation = t.orientation;
     }
     out.meshes.push_back(m);
@@ -129,6 +130,11 @@ void WorkbenchStage::build_view(const CameraView& camera, int width, int height,
 EffectCounts WorkbenchStage::counts() const { return timeline_ ? timeline_->frame_stats() : EffectCounts{}; }
 
 uint32_t WorkbenchStage::particle_budget() const { return ParticleConfig{}.budget; }
+
+glm::dvec3 WorkbenchStage::focus() const {
+  if (backdrop_.kind != BackdropKind::Circling || !timeline_) return glm::dvec3(0.0);
+  return timeline_->owner_transform().position;
+}
 
 void WorkbenchStage::bounds(glm::dvec3& centre, double& radius) const {
   glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());

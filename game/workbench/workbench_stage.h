@@ -32,6 +32,9 @@ enum class BackdropKind { Space, Model, Wall, Circling };
 struct Backdrop {
   BackdropKind kind = BackdropKind::Space;
   size_t model = 0;  // Model and Circling: which of the stage's ship models
+  // Circling: the effect sits at the ship's stern (engine exhausts) rather than its centre; the
+  // ship is drawn shifted forwards so its stern is on the effect's owner.
+  bool at_stern = false;
 };
 
 struct StageModel {
@@ -79,6 +82,8 @@ class WorkbenchStage {
   void build_view(const CameraView& camera, int width, int height, RenderView& out) const;
   EffectCounts counts() const;
   uint32_t particle_budget() const;
+  // Where the orbit camera centres: the circling ship, else the stage's origin.
+  glm::dvec3 focus() const;
   // A sphere around what is on stage: the particles or, with none, the backdrop.
   void bounds(glm::dvec3& centre, double& radius) const;
 

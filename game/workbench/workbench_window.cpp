@@ -210,7 +210,7 @@ void WorkbenchSession::frame_effect() {
   glm::dvec3 centre;
   double radius = 1.0;
   stage_.bounds(centre, radius);
-  camera_.frame(centre, radius);
+  camera_.frame(centre - stage_.focus(), radius);  // the camera's target is relative to the focus
 }
 
 void WorkbenchSession::save() {
@@ -290,7 +290,8 @@ void WorkbenchSession::draw_file_section() {
   for (const std::string& f : files_) names.push_back(fs::path(f).stem().string());
   if (const int chosen = draw_effect_list(names, int(current_)); chosen >= 0 && size_t(chosen) != current_)
     leave(false, size_t(chosen));
-  ImGui::TextDisabled("%s", fs::proximate(doc_->path(), options_.root_dir).c_str());
+  const fs::path shown = fs::proximate(doc_->path(), options_.root_dir);
+  ImGui::TextDisabled("%s", (*shown.begin() == ".." ? fs::absolute(doc_->path()) : shown).c_str());
   if (ImGui::Button("Save")) save();
   ImGui::SameLine();
   ImGui::BeginDisabled(!doc_->can_undo());
@@ -386,7 +387,9 @@ void WorkbenchSession::frame(double frame_seconds) {
   stats_.record_frame(frame_seconds);
   const int width = window_->framebuffer_width(), height = window_->framebuffer_height();
   draw_stats(width, height);
-  const CameraView cam = camera_.view();
+  OrbitCamera following = camera_;  // on the circling ship, the camera flies with it
+  following.target += stage_.focus();
+  const CameraView cam = following.view();
   ParticleCamera pc;
   pc.position = cam.position;
   pc.orientation = cam.orientation;
