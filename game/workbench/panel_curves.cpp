@@ -78,7 +78,7 @@ CurveEdit CurveEditors::value_curve(const std::string& id, std::vector<GraphKey>
     drag_top_ = hi <= 1.0 ? hi : std::min(hi, std::max(1.0, std::ceil(top * 1.5)));
   }
   const double top = drag_top_ > lo ? drag_top_ : lo + 1.0;
-  const ImVec2 size(ImGui::GetContentRegionAvail().x, 80.0f);
+  const ImVec2 size(ImGui::GetContentRegionAvail().x, 56.0f);
   const ImVec2 o = ImGui::GetCursorScreenPos();
   ImGui::InvisibleButton(id.c_str(), size, ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight);
   const bool hovered = ImGui::IsItemHovered();

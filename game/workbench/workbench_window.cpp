@@ -311,6 +311,7 @@ void WorkbenchSession::draw_file_section() {
     if (ImGui::Button("Reload from disk")) {
       const EditResult r = doc_->reload();
       if (!r.ok) error_ = r.message;
+      else notice_ = "reloaded from disk (Undo brings your edits back)";
       conflict_ = false;
     }
   }
