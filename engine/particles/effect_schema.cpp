@@ -50,7 +50,7 @@ EffectField other(B block, const char* key, K kind, J fallback, bool required = 
   return f;
 }
 
-// Long: the table of the whole format, one line per key, is easier to review in one piece.
+// The table of the whole format, one entry per key, in file order.
 std::vector<EffectField> build() {
   const J zero3 = J::array({0, 0, 0});
   return {
@@ -185,6 +185,62 @@ const EffectField* effect_field_at(const std::string& pointer) {
   for (const EffectField& f : effect_schema())
     if (f.block == block && parts.back() == f.key) return &f;
   return nullptr;
+}
+
+namespace {
+
+std::string text_or(const nlohmann::json& object, const char* key, const char* fallback) {
+  if (!object.is_object()) return fallback;
+  auto it = object.find(key);
+  return it != object.end() && it->is_string() ? it->get<std::string>() : std::string(fallback);
+}
+
+bool animation_key_applies(const std::string& key, const nlohmann::json& animation) {
+  const std::string type = text_or(animation, "type", "linear");
+  if (key == "type") return true;
+  if (key == "drag" || key == "acceleration") return type == "linear";
+  if (type == "lightning")
+    return key == "seed_length" || key == "max_length" || key == "max_angle_deg" || key == "length_jitter" ||
+           key == "guide_distance" || key == "sizzle_ticks" || key == "width" || key == "free_lifetime";
+  if (type != "sphere") return false;
+  const std::string radius_animation = text_or(animation, "radius_animation", "constant");
+  if (key == "rotation_deg") return text_or(animation, "motion", "static") == "rotational";
+  if (key == "amplitude" || key == "frequency_hz") return radius_animation == "pulsating";
+  if (key == "ramp") return radius_animation == "contracting";
+  if (key == "growth") return radius_animation == "exploding";
+  return key == "motion" || key == "radius" || key == "radius_animation";
+}
+
+bool emitter_key_applies(const std::string& key, const nlohmann::json& cluster, const std::string& type) {
+  const std::string shape = text_or(cluster.value("emitter", nlohmann::json::object()), "shape", "point");
+  if (key == "shape") return type != "sphere";
+  if (key == "angle_deg") return shape == "cone";
+  if (key == "half_extents") return shape == "box";
+  if (key == "length") return shape == "line";
+  if (key == "triangles") return shape == "mesh";
+  if (key == "radius") return shape == "sphere" || shape == "sphere_surface" || shape == "cone";
+  if (key == "spacing") return type == "linear" && text_or(cluster, "space", "world") == "world";
+  return true;
+}
+
+}  // namespace
+
+bool effect_field_applies(const EffectField& f, const nlohmann::json& cluster) {
+  const nlohmann::json animation = cluster.is_object() ? cluster.value("animation", nlohmann::json::object()) : nlohmann::json::object();
+  const std::string type = text_or(animation, "type", "linear");
+  const std::string key = f.key;
+  switch (f.block) {
+    case B::Root: return true;
+    case B::Cluster:
+      if (key == "stretch") return text_or(cluster, "billboard", "camera") == "velocity";
+      if (key == "emitter") return type != "lightning";
+      return true;
+    case B::Animation: return animation_key_applies(key, animation);
+    case B::Emitter: return type != "lightning" && emitter_key_applies(key, cluster, type);
+    case B::Particles:
+    case B::Curves: return true;
+  }
+  return false;
 }
 
 const char* effect_block_name(EffectBlock block) {

@@ -58,6 +58,11 @@ const EffectField& effect_field(EffectBlock block, std::string_view key);
 const EffectField* effect_field_at(const std::string& pointer);
 // The block an object at a pointer is ("" → Root, "/clusters/2" → Cluster, ".../emitter" → Emitter).
 bool effect_block_at(const std::string& pointer, EffectBlock& block);
+// Whether a key has an effect in a cluster as it stands (its JSON object): "growth" only for an
+// exploding sphere, "angle_deg" only for a cone emitter, "stretch" only for velocity billboards,
+// and so on; root keys always apply. The panel hides the keys that do not. `applies` says the
+// same in words.
+bool effect_field_applies(const EffectField& field, const nlohmann::json& cluster);
 // The keys of one block, in table order.
 std::vector<const EffectField*> effect_fields(EffectBlock block);
 const char* effect_block_name(EffectBlock block);  // "root", "cluster", "animation", ...

@@ -164,7 +164,6 @@ std::string check_preview_backdrop(const std::string& backdrop, const std::strin
   return "--backdrop: must be " + join_allowed(allowed) + ", got '" + backdrop + "'";
 }
 
-// Long: one pass over the frames, read top to bottom: scrub, collect, render, count, label.
 int run_preview(const PreviewOptions& o) {
   auto fx = std::make_shared<EffectLibrary>();
   fx->load_file(o.effect_path);

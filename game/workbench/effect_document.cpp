@@ -68,12 +68,13 @@ void EffectDocument::adopt(State s) {
   ++revision_;
 }
 
-EditResult EffectDocument::apply(std::string text) {
+EditResult EffectDocument::apply(std::string text, bool merge) {
+  if (!merge) dragging_.clear();
   if (text == text_) return {};
   State s;
   std::string error;
   if (!validate(text, s, error)) return {false, error};
-  undo_.push_back(current());
+  if (!merge || undo_.empty()) undo_.push_back(current());
   redo_.clear();
   adopt(std::move(s));
   return {};
@@ -83,6 +84,16 @@ EditResult EffectDocument::set(const std::string& pointer, const nlohmann::json&
   std::string text, error;
   if (!spliced([&] { return splice_set(text_, path_, pointer, value); }, text, error)) return {false, error};
   return apply(std::move(text));
+}
+
+EditResult EffectDocument::drag(const std::string& pointer, const nlohmann::json& value) {
+  std::string text, error;
+  if (!spliced([&] { return splice_set(text_, path_, pointer, value); }, text, error)) return {false, error};
+  if (text == text_) return {};  // a drag begins with its first change (its undo step holds the text before it)
+  const bool merge = dragging_ == pointer;
+  EditResult r = apply(std::move(text), merge);
+  if (r.ok) dragging_ = pointer;
+  return r;
 }
 
 EditResult EffectDocument::remove(const std::string& pointer) {
@@ -111,6 +122,7 @@ EditResult EffectDocument::move(const std::string& array_pointer, size_t from, s
 }
 
 bool EffectDocument::undo() {
+  dragging_.clear();
   if (undo_.empty()) return false;
   redo_.push_back(current());
   State s = std::move(undo_.back());
@@ -120,6 +132,7 @@ bool EffectDocument::undo() {
 }
 
 bool EffectDocument::redo() {
+  dragging_.clear();
   if (redo_.empty()) return false;
   undo_.push_back(current());
   State s = std::move(redo_.back());
@@ -176,6 +189,7 @@ EditResult EffectDocument::reload() {
   }
   disk_error_.clear();
   disk_text_ = seen_disk_text_;
+  dragging_.clear();
   if (s.text != text_) {
     undo_.push_back(current());
     redo_.clear();

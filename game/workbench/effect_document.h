@@ -66,6 +66,9 @@ class EffectDocument {
   // (objects missing on the way are added too, e.g. "/clusters/0/particles/speed" without a
   // "particles" block). Refused: the loader's message; nothing changes.
   EditResult set(const std::string& pointer, const nlohmann::json& value);
+  // set() for a value being dragged: consecutive drags of the same pointer make one undo step
+  // (any other edit, undo or redo ends the drag).
+  EditResult drag(const std::string& pointer, const nlohmann::json& value);
   // Removes an object member or an array element (with its line when it has one to itself).
   EditResult remove(const std::string& pointer);
   // Inserts into the array at `array_pointer` before `index` (index == size appends).
@@ -99,7 +102,7 @@ class EffectDocument {
   };
   EffectDocument() = default;
   // Validates new text with the loader; on success it becomes the state (old one on the undo stack).
-  EditResult apply(std::string text);
+  EditResult apply(std::string text, bool merge = false);
   bool validate(const std::string& text, State& out, std::string& error) const;
   void adopt(State s);
   State current() const;
@@ -111,6 +114,7 @@ class EffectDocument {
   std::shared_ptr<const EffectLibrary> library_;
   uint64_t revision_ = 0;
   std::vector<State> undo_, redo_;
+  std::string dragging_;                  // the pointer of the drag in progress ("" = none)
   std::string disk_text_;                 // the file as loaded or saved last
   std::string seen_disk_text_;            // the disk text poll() last reported
   std::filesystem::file_time_type disk_time_{};

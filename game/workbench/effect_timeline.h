@@ -14,6 +14,8 @@
 //   t.scrub_to(90, camera);         // tick 90 by the catch-up path
 //   t.play_step(camera);            // tick 91 by normal stepping
 //   world = &t.world();             // for collect(); counts in t.frame_stats()
+//   // after an edit (doc->revision() changed): a timeline on the new library, at the same tick
+//   t = EffectTimeline(doc->library(), doc->name(), stage);  t.scrub_to(tick, camera);
 #pragma once
 #include <cstdint>
 #include <memory>

@@ -135,8 +135,8 @@ std::string insert_item(std::string t, const Container& c, size_t index, const s
   return t.insert(last, ",");
 }
 
-// Long: the three cases (only item, item with a successor, last item) each have an own-line
-// and an inline form; they read best side by side.
+// Three cases (only item, item with a successor, last item), each in an own-line form (the item
+// goes with its lines, comments on them included) and an inline form (with one separator).
 std::string remove_item(std::string t, const Container& c, size_t index) {
   const size_t b = c.items[index].begin, e = c.items[index].end;
   const size_t n = c.items.size();

@@ -82,3 +82,26 @@ TEST(JsonFiles, AtomicWriteReplacesWholeFile) {
   arc::write_file_atomic(p, "{\"a\": 2}");
   EXPECT_EQ(arc::read_text_file(p), "{\"a\": 2}");
 }
+
+// Byte spans of keys and values, for edits that splice text in place (the effect workbench).
+TEST(JsonDoc, RecordsTheByteSpanOfEveryKeyAndValue) {
+  const std::string text = "// c\n{ \"a\": [1.5,-2e3], \"b\": {\"s\": \"x\\\"y\", \"t\": true} /* d */, \"n\": null}";
+  auto d = JsonDoc::parse(text, "s.json");
+  auto value = [&](const std::string& p) {
+    arc::TextSpan s;
+    EXPECT_TRUE(d->value_span(p, s)) << p;
+    return text.substr(s.begin, s.end - s.begin);
+  };
+  EXPECT_EQ(value("/a/0"), "1.5");
+  EXPECT_EQ(value("/a/1"), "-2e3");  // a number straight before ']'
+  EXPECT_EQ(value("/a"), "[1.5,-2e3]");
+  EXPECT_EQ(value("/b/s"), "\"x\\\"y\"");
+  EXPECT_EQ(value("/b/t"), "true");
+  EXPECT_EQ(value("/b"), "{\"s\": \"x\\\"y\", \"t\": true}");
+  EXPECT_EQ(value("/n"), "null");
+  EXPECT_EQ(value(""), text.substr(5));
+  arc::TextSpan k;
+  ASSERT_TRUE(d->key_span("/b/t", k));
+  EXPECT_EQ(text.substr(k.begin, k.end - k.begin), "\"t\"");
+  EXPECT_FALSE(d->value_span("/zz", k));
+}

@@ -109,6 +109,29 @@ TEST(EffectDocument, UndoAndRedoCoverEveryKindOfEdit) {
   EXPECT_FALSE(doc->can_redo());
 }
 
+TEST(EffectDocument, ADragIsOneUndoStep) {
+  ScratchDir dir("drag");
+  auto doc = open_ok(dir.write("puff.json", test::kCommentedEffect));
+  const std::string original = doc->text();
+  ASSERT_TRUE(doc->set("/description", "before the drag").ok);
+  const std::string before = doc->text();
+  ASSERT_TRUE(doc->drag("/clusters/0/emitter/burst", 10).ok);  // no change yet: no step
+  for (int burst : {11, 14, 20, 26}) ASSERT_TRUE(doc->drag("/clusters/0/emitter/burst", burst).ok);
+  EXPECT_FALSE(doc->drag("/clusters/0/emitter/burst", -1).ok);  // refused mid-drag: the drag goes on
+  ASSERT_TRUE(doc->drag("/clusters/0/emitter/burst", 30).ok);
+  ASSERT_TRUE(doc->drag("/clusters/0/particles/lifetime", 0.7).ok);  // another field: a new step
+  ASSERT_TRUE(doc->drag("/clusters/0/particles/lifetime", 0.8).ok);
+  EXPECT_EQ(doc->def().clusters[0].emitter.burst, 30u);
+  ASSERT_TRUE(doc->undo());
+  EXPECT_EQ(doc->def().clusters[0].particles.lifetime.max, 0.5);
+  EXPECT_EQ(doc->def().clusters[0].emitter.burst, 30u);
+  ASSERT_TRUE(doc->undo());
+  EXPECT_EQ(doc->text(), before);
+  ASSERT_TRUE(doc->undo());
+  EXPECT_EQ(doc->text(), original);
+  EXPECT_FALSE(doc->can_undo());
+}
+
 TEST(EffectDocument, SavingAnUntouchedFileWritesTheSameBytesForEveryEffect) {
   ScratchDir dir("untouched");
   for (const auto& e : std::filesystem::directory_iterator(std::string(ARCFIRE_SOURCE_DIR) + "/assets/effects")) {
@@ -172,6 +195,19 @@ TEST(EffectDocument, NewKeysTakeTheFilesOwnIndentation) {
                    "      \"particles\": { \"size\": [0.2, 0.4] }\n    }"),
             std::string::npos)
       << t;
+}
+
+TEST(EffectDocument, ANewClusterIsWrittenInTheFilesLayout) {
+  ScratchDir dir("new_cluster");
+  auto doc = open_ok(dir.write("puff.json", test::kCommentedEffect));
+  const json cluster = {{"name", "glow"}, {"sprite", "glow"}, {"animation", {{"type", "linear"}}}, {"emitter", {{"burst", 3}}}};
+  const EditResult r = doc->insert("/clusters", 2, cluster);
+  ASSERT_TRUE(r.ok) << r.message;
+  EXPECT_EQ(doc->def().clusters.size(), 3u);
+  EXPECT_NE(doc->text().find("\"duration\": 0.2 }\n    },\n    {\n      \"animation\": { \"type\": \"linear\" },\n"
+                             "      \"emitter\": { \"burst\": 3 },\n      \"name\": \"glow\",\n      \"sprite\": \"glow\"\n    }\n  ]"),
+            std::string::npos)
+      << doc->text();
 }
 
 TEST(EffectDocument, RemovedKeysAndElementsGoWithTheirLines) {

@@ -165,7 +165,23 @@ TEST(EffectSchema, PointersFindTheirFields) {
   EXPECT_THROW(effect_field(EffectBlock::Emitter, "nope"), std::out_of_range);
 }
 
-// Every key the game's effect files use is in the schema.
+TEST(EffectSchema, KeysApplyOnlyWhereTheyHaveAnEffect) {
+  auto applies = [](EffectBlock b, const char* key, const char* cluster) {
+    return effect_field_applies(effect_field(b, key), json::parse(cluster));
+  };
+  EXPECT_TRUE(applies(EffectBlock::Animation, "growth", R"({"animation": {"type": "sphere", "radius_animation": "exploding"}})"));
+  EXPECT_FALSE(applies(EffectBlock::Animation, "growth", R"({"animation": {"type": "sphere"}})"));
+  EXPECT_FALSE(applies(EffectBlock::Animation, "drag", R"({"animation": {"type": "sphere"}})"));
+  EXPECT_TRUE(applies(EffectBlock::Animation, "drag", R"({"animation": {}})"));
+  EXPECT_TRUE(applies(EffectBlock::Emitter, "angle_deg", R"({"animation": {}, "emitter": {"shape": "cone"}})"));
+  EXPECT_FALSE(applies(EffectBlock::Emitter, "angle_deg", R"({"animation": {}, "emitter": {}})"));
+  EXPECT_FALSE(applies(EffectBlock::Emitter, "rate", R"({"animation": {"type": "lightning"}})"));
+  EXPECT_FALSE(applies(EffectBlock::Emitter, "spacing", R"({"space": "owner", "animation": {}})"));
+  EXPECT_TRUE(applies(EffectBlock::Cluster, "stretch", R"({"billboard": "velocity"})"));
+  EXPECT_FALSE(applies(EffectBlock::Cluster, "stretch", R"({})"));
+}
+
+// Every key the game's effect files use is in the schema, and applies where it is used.
 TEST(EffectSchema, CoversEveryKeyOfTheGamesEffects) {
   for (const auto& e : std::filesystem::directory_iterator(std::string(ARCFIRE_SOURCE_DIR) + "/assets/effects")) {
     if (e.path().extension() != ".json") continue;
@@ -173,10 +189,17 @@ TEST(EffectSchema, CoversEveryKeyOfTheGamesEffects) {
     for (const auto& [k, v] : j.items()) EXPECT_TRUE(effect_field_at("/" + k)) << e.path() << " " << k;
     for (size_t i = 0; i < j["clusters"].size(); ++i) {
       const std::string c = "/clusters/" + std::to_string(i);
-      for (const auto& [k, v] : j["clusters"][i].items()) {
-        EXPECT_TRUE(effect_field_at(c + "/" + k)) << e.path() << " " << c << "/" << k;
+      const json& cluster = j["clusters"][i];
+      for (const auto& [k, v] : cluster.items()) {
+        const EffectField* f = effect_field_at(c + "/" + k);
+        ASSERT_TRUE(f) << e.path() << " " << c << "/" << k;
+        EXPECT_TRUE(effect_field_applies(*f, cluster)) << e.path() << " " << c << "/" << k;
         if (!v.is_object()) continue;
-        for (const auto& [k2, v2] : v.items()) EXPECT_TRUE(effect_field_at(c + "/" + k + "/" + k2)) << e.path() << " " << k << "/" << k2;
+        for (const auto& [k2, v2] : v.items()) {
+          const EffectField* f2 = effect_field_at(c + "/" + k + "/" + k2);
+          ASSERT_TRUE(f2) << e.path() << " " << k << "/" << k2;
+          EXPECT_TRUE(effect_field_applies(*f2, cluster)) << e.path() << " " << c << "/" << k << "/" << k2;
+        }
       }
     }
   }
