@@ -20,8 +20,6 @@ json at_or(const json& j, const std::string& pointer, const json& fallback) {
   return j.contains(p) ? j.at(p) : fallback;
 }
 
-bool starts_with(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
-
 // A short range is a slider; a long one (metres up to 1e6) a drag that moves with the value.
 bool number_widget(const char* label, double& v, const EffectField& f, bool integer) {
   const bool slider = f.max - f.min <= 100.0;
@@ -98,30 +96,6 @@ void EffectPanel::finish_drag(EffectDocument& doc) {
   show_result(pointer, doc.set(pointer, final_value));
 }
 
-bool EffectPanel::applies_here(const json& block, const json& cluster, const EffectField& f) const {
-  const std::string a = f.applies;
-  const std::string type = cluster.value("animation", json::object()).value("type", "linear");
-  if (f.block == EffectBlock::Animation) {
-    for (const char* t : {"linear", "sphere", "lightning"})
-      if (starts_with(a, t) && type != t) return false;
-    for (const char* m : {"rotational"})
-      if (a.find(m) != std::string::npos && block.value("motion", "static") != m) return false;
-    for (const char* r : {"pulsating", "contracting", "exploding"})
-      if (a.find(r) != std::string::npos && block.value("radius_animation", "constant") != r) return false;
-  }
-  if (f.block == EffectBlock::Emitter) {
-    const std::string shape = block.value("shape", "point");
-    for (const char* s : {"cone", "box", "line", "mesh"})
-      if (a == s && shape != s) return false;
-    if (starts_with(a, "required for sphere") && shape != "sphere" && shape != "sphere_surface") return false;
-  }
-  if (f.block == EffectBlock::Cluster) {
-    if (std::string(f.key) == "stretch" && cluster.value("billboard", "camera") != "velocity") return false;
-    if (std::string(f.key) == "emitter" && type == "lightning") return false;
-  }
-  return true;
-}
-
 void EffectPanel::draw_block(EffectDocument& doc, const std::string& pointer, EffectBlock block) {
   const json& root = doc.json();
   const json block_json = at_or(root, pointer, json::object());
@@ -133,7 +107,7 @@ void EffectPanel::draw_block(EffectDocument& doc, const std::string& pointer, Ef
   for (const EffectField* f : effect_fields(block)) {
     if (f->kind == FieldKind::ObjectList) continue;  // the clusters: draw_clusters
     const bool present = block_json.is_object() && block_json.contains(f->key);
-    if (!present && !applies_here(block_json, cluster_json, *f)) continue;
+    if (!present && !effect_field_applies(*f, cluster_json)) continue;
     const std::string child = pointer + "/" + f->key;
     if (f->kind == FieldKind::Object) {
       if (ImGui::TreeNodeEx(child.c_str(), ImGuiTreeNodeFlags_DefaultOpen, "%s", f->key)) {

@@ -9,9 +9,11 @@
 // Every change goes through EffectDocument::set/insert/remove/move, i.e. through the loader: a
 // refused value leaves the document as it was and its one-line message is shown under the
 // field until an edit of that field is accepted. The edits of one drag (a slider, a key of a
-// curve) are folded into one undo step when the drag ends. Keys that only apply to another
-// animation type or emitter shape are hidden unless the file has them; absent keys show their
-// default, greyed.
+// curve) are folded into one undo step when the drag ends: undone, then set once to the final
+// value (EffectDocument::drag() would also merge a second drag of the same field into the
+// first, so the panel ends each drag itself). Keys that do nothing in the cluster as it stands
+// (effect_field_applies: another animation type or emitter shape) are hidden unless the file
+// has them; absent keys show their default, greyed.
 #pragma once
 #include <cstdint>
 #include <map>
@@ -36,7 +38,6 @@ class EffectPanel {
   void draw_clusters(EffectDocument& doc);
   void draw_field(EffectDocument& doc, const std::string& pointer, const EffectField& f);
   bool draw_value(EffectDocument& doc, const std::string& pointer, const EffectField& f, nlohmann::json& v);
-  bool applies_here(const nlohmann::json& block_json, const nlohmann::json& cluster_json, const EffectField& f) const;
   // Applies one edit; `active`: a drag is still held (see the header).
   void commit(EffectDocument& doc, const std::string& pointer, const nlohmann::json& value, bool active);
   void finish_drag(EffectDocument& doc);
