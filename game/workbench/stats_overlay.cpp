@@ -30,7 +30,8 @@ void StatsOverlay::draw(const StageFigures& stage, const FrameStats& frame, int 
     const double layers = stage.scene_pixels > 0 ? double(frame.particle_fragments) / stage.scene_pixels : 0.0;
     ImGui::Text("blended pixels %lld (%.2f screens)", frame.particle_fragments, layers);
   } else {
-    ImGui::TextDisabled("blended pixels: no occlusion query");
+    ImGui::TextDisabled(frame.particles_drawn == 0 ? "blended pixels 0 (nothing drawn)"
+                                                   : "blended pixels: no occlusion query on this driver");
   }
   if (frame.particle_pass_gpu_ms >= 0)
     ImGui::Text("particle pass %.2f ms CPU, %.2f ms GPU", frame.particle_cpu_ms, frame.particle_pass_gpu_ms);

@@ -129,6 +129,8 @@ void WorkbenchStage::build_view(const CameraView& camera, int width, int height,
 
 EffectCounts WorkbenchStage::counts() const { return timeline_ ? timeline_->frame_stats() : EffectCounts{}; }
 
+uint64_t WorkbenchStage::state_hash() const { return timeline_ ? timeline_->state_hash(camera_) : 0; }
+
 uint32_t WorkbenchStage::particle_budget() const { return ParticleConfig{}.budget; }
 
 glm::dvec3 WorkbenchStage::focus() const {

@@ -81,6 +81,7 @@ class WorkbenchStage {
   // ---- drawing and figures ------------------------------------------------------------------
   void build_view(const CameraView& camera, int width, int height, RenderView& out) const;
   EffectCounts counts() const;
+  uint64_t state_hash() const;  // EffectTimeline::state_hash for the stepping camera
   uint32_t particle_budget() const;
   // Where the orbit camera centres: the circling ship, else the stage's origin.
   glm::dvec3 focus() const;
