@@ -159,6 +159,7 @@ void resolve_options(const CLI::App& app, const CommandLineText& t, AppOptions& 
   if (o.update_golden && o.replay_path.empty()) throw InputError("--update-golden: only with --replay");
   resolve_preview_options(app, o);
   o.workbench = app.get_option("--workbench")->count() > 0;
+  if (o.workbench && (o.headless || !o.replay_path.empty())) throw InputError("--workbench: a window of its own, not with --headless or --replay");
   if (!o.workbench_effect.empty()) o.workbench_effect = resolve_data_path(o.workbench_effect, "--workbench");
 }
 

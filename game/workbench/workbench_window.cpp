@@ -147,6 +147,8 @@ void WorkbenchSession::setup() {
   std::string error;
   doc_ = EffectDocument::open(files_[current_], error);
   if (!doc_) throw InputError(error);  // a bad file: the loader's line, exit 2
+  if (!display_available())
+    throw PlatformError("no display available for the workbench (DISPLAY is not set or cannot be opened)");
   WindowDesc wd;
   wd.width = options_.width;
   wd.height = options_.height;
@@ -417,8 +419,6 @@ void WorkbenchSession::frame(double frame_seconds) {
 }  // namespace
 
 int run_workbench(const WorkbenchOptions& options) {
-  if (!display_available())
-    throw PlatformError("no display available for the workbench (DISPLAY is not set or cannot be opened)");
   WorkbenchSession session(options);
   session.setup();
   double last = session.time();
