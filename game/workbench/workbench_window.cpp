@@ -392,7 +392,12 @@ void WorkbenchSession::frame(double frame_seconds) {
   draw_stats(width, height);
   OrbitCamera following = camera_;  // on the circling ship, the camera flies with it
   following.target += stage_.focus();
-  const CameraView cam = following.view();
+  CameraView cam = following.view();
+  if (width > 0 && height > 0) {
+    // Slid sideways, not turned: the target shows in the middle of the view beside the panel.
+    const double half_width = std::tan(cam.fov_y_radians * 0.5) * following.distance * double(width) / height;
+    cam.position -= cam.orientation * glm::dvec3(half_width * kPanelWidth / width, 0.0, 0.0);
+  }
   ParticleCamera pc;
   pc.position = cam.position;
   pc.orientation = cam.orientation;
