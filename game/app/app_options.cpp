@@ -101,6 +101,9 @@ void define_options(CLI::App& app, AppOptions& o, CommandLineText& t) {
   app.add_flag("--fullscreen", o.fullscreen, "start in fullscreen (F11 or Alt+Enter toggles)");
   app.add_flag("--no-vsync", t.no_vsync, "do not wait for vertical sync");
   app.add_flag("--fps", o.show_fps, "show the FPS counter (F3 toggles)");
+  app.add_option("--workbench", o.workbench_effect,
+                 "open the effect workbench on an effect file (default: the first in assets/effects)")
+      ->expected(0, 1);
   app.set_version_flag("--version", "arcfire 0.1.0");
 }
 
@@ -160,6 +163,9 @@ void resolve_options(const CLI::App& app, const CommandLineText& t, AppOptions& 
   if (!o.audio_out.empty()) check_output_file(o.audio_out, "--audio-out");
   if (!o.record_path.empty()) check_output_file(o.record_path, "--record");
   resolve_preview_options(app, o);
+  o.workbench = app.get_option("--workbench")->count() > 0;
+  if (o.workbench && (o.headless || !o.replay_path.empty())) throw InputError("--workbench: a window of its own, not with --headless or --replay");
+  if (!o.workbench_effect.empty()) o.workbench_effect = resolve_data_path(o.workbench_effect, "--workbench");
 }
 
 }  // namespace

@@ -24,6 +24,8 @@ struct AppOptions {
   std::string record_path;
   std::string replay_path;
   std::string menu_script;  // --menu-script: the menu headless, driven by scripted UI inputs
+  bool workbench = false;   // --workbench: the effect workbench window
+  std::string workbench_effect;  // its effect file ("" = the first of assets/effects)
   bool update_golden = false;
   int64_t serialization_test = 0;  // N > 0: save/load every N ticks
   std::string bindings_path = "assets/settings/bindings.json";

@@ -14,6 +14,7 @@
 #include "game/app/replay_player.h"
 #include "game/app/serialization_test.h"
 #include "game/app/window_loop.h"
+#include "game/workbench/workbench_window.h"
 #include "platform/platform.h"
 
 int main(int argc, char** argv) {
@@ -25,6 +26,9 @@ int main(int argc, char** argv) {
     if (!options.menu_script.empty()) return arc::run_menu_script(options);
     if (!options.preview_path.empty()) return arc::run_preview(arc::preview_options(options));
     if (options.headless || options.demo) return arc::run_headless(options);
+    if (options.workbench)
+      return arc::run_workbench({.effect_path = options.workbench_effect, .settings = options.settings,
+                                 .width = options.width, .height = options.height, .vsync = options.vsync});
     return arc::run_window(options);
   } catch (const arc::WriteError& e) {
     std::fprintf(stderr, "arcfire: %s\n", e.what());

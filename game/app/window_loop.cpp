@@ -21,6 +21,7 @@
 #include "game/render/render_view_builder.h"
 #include "game/sim/game.h"
 #include "game/sim/world.h"
+#include "game/workbench/game_panel.h"
 #include "gfx/renderer.h"
 #include "gfx/screenshot.h"
 #include "platform/platform.h"
@@ -127,6 +128,7 @@ class WindowSession {
   bool recording_started_ = false;  // --record from the menu: only the first launched mission
   std::unique_ptr<Window> window_;
   std::unique_ptr<Renderer> renderer_;
+  std::unique_ptr<GamePanel> panel_;  // F1: every setting live, and the effects (game/workbench/game_panel.h)
   std::vector<ModelId> models_;  // the renderer's id of each of the level's model slots
   std::unique_ptr<Game> game_;
   std::unique_ptr<SessionRecorder> recorder_;
@@ -179,6 +181,7 @@ void WindowSession::setup() {
   wd.title = "Arcfire" + (options_.level_given ? " — " + std::filesystem::path(level_).stem().string() : "");
   window_ = open_window(wd);
   renderer_ = make_renderer();
+  panel_ = std::make_unique<GamePanel>(game_options_.root_dir);
   models_ = load_scene_resources(*renderer_, game_->world(), game_options_.root_dir);
   clock_.emplace(int(std::lround(1.0 / game_->tick_seconds())));
   hud_.show_fps = options_.show_fps;
@@ -266,6 +269,7 @@ void WindowSession::end_recording(const char* why) {
 
 void WindowSession::update(double frame_seconds) {
   window_->poll(devices_);
+  if (panel_->wants_mouse()) devices_.mouse_buttons = {}, devices_.mouse_presses = {};  // clicks on the panel
   input_->set_screen_height(window_->framebuffer_height());
   input_->sample(devices_);
   std::vector<Command> menu_commands;
@@ -273,13 +277,15 @@ void WindowSession::update(double frame_seconds) {
   handle_actions(menu_commands, in_menu);
   if (in_menu) update_menu();
   handle_sound_keys(in_menu);
+  if (presses_between(previous_devices_, devices_, key_code("F1")) > 0) panel_->toggle();
   const bool paused = game_->paused();
-  const bool capture = !paused && !(menu_ && menu_->open());
+  const bool capture = !paused && !(menu_ && menu_->open()) && !panel_->open();
   if (capture != mouse_captured_) {
     window_->set_mouse_captured(capture);
     mouse_captured_ = capture;
     input_->discard_mouse_motion();
   }
+  if (panel_->open()) input_->discard_mouse_motion();  // the cursor is the panel's
   if (paused && !in_menu) navigate_pause_menu(menu_commands);
   previous_devices_ = devices_;
   if (window_->time_seconds() >= next_watch_) {
@@ -543,6 +549,8 @@ void WindowSession::draw() {
       want_screenshot_ = false;
     }
   }
+  if (panel_->frame(settings_, renderer_->last_stats()))
+    renderer_->apply_settings(settings_), audio_->apply_settings(settings_), apply_simulation_settings(settings_, game_options_);
   window_->swap();
 }
 
