@@ -2,6 +2,7 @@
 #include "game/app/session_recorder.h"
 
 #include <cmath>
+#include <sstream>
 
 #include "core/error.h"
 #include "core/json.h"
@@ -26,6 +27,12 @@ SessionRecorder::SessionRecorder(const std::string& path, const std::string& lev
   h.particle_budget = w.options.particle_budget;
   h.lightning_interval = w.options.lightning_interval;
   h.substeps = w.options.substeps;
+  // The cull distance decides which clusters skip ticks, and that is in the hash.
+  if (w.options.cull_distance != GameOptions{}.cull_distance) {
+    std::ostringstream d;
+    d << w.options.cull_distance;
+    h.settings.push_back({"particles.cull_distance", d.str()});
+  }
   // The header lands complete or not at all; lines are then appended to the renamed file.
   write_file_atomic(path, replay::header_text(h) + "# recorded live session\n");
   file_ = std::fopen(path.c_str(), "ab");
