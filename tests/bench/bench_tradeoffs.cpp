@@ -4,8 +4,9 @@
 //
 // Rendering: the reference preset with ONE render key changed per row (soft-edge method,
 // sorting, depth mode, texture filter, render scale, sky baked at each resolution, HDR, bloom,
-// anti-aliasing, particle resolution, overdraw budget), plus the four presets of
-// assets/settings/quality.json as they stand. Three scenes at 1280×720: the gallery (tick 240),
+// anti-aliasing, particle resolution, overdraw budget), the four presets of
+// assets/settings/quality.json as they stand, and the whole configurations (kCandidates) the
+// presets were chosen from. Three scenes at 1280×720: the gallery (tick 240),
 // the arena battle (tick 600, chase camera) and tests/bench/closeup.json (tick 40: an explosion's
 // fire and smoke and an engine plume cut by a Warden's hull, from 30 m). Each row's cost is the
 // median over rounds of its frame ÷ the reference's frame of the same round (every row once
@@ -22,7 +23,9 @@
 // ÷ the reference's. Error against sub-steps 16: the farthest any ship is from where it is
 // with sub-steps 16 (m), the particles present in one world and not the other (share), and
 // the RMS distance between the birth points of particles present in both (m; particles move
-// in closed form from their birth, so this is where they differ). The budget's rows add the
+// in closed form from their birth, so this is where they differ), and when a ship first
+// strayed 1 m from its sub-steps-16 self (the AI's choices make the battle chaotic: once
+// apart, ships end up hundreds of metres apart whatever the setting). The budget's rows add the
 // share of spawned particles refused; the cull distance's the share of particle updates skipped.
 //
 // Metrics: preset_psnr_db_<name> (the worst of the three scenes), preset_frame_ratio_<name>
@@ -35,6 +38,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -89,8 +93,36 @@ struct Row {
   std::vector<std::vector<double>> round_ms;  // [scene][round]
   // simulation
   double sim_ms = 0, ship_m = 0, unmatched = 0, birth_rms_m = 0, refused = 0, skipped = 0;
+  double diverged_s = -1;  // game time when a ship first strayed 1 m from sub-steps 16; −1: never
+  double diverged_ref_s = -1;  // the same from the reference preset's simulation
   std::vector<double> tick_ms;
   double cost = 0;  // frame or tick ratio against the reference
+};
+
+// Whole configurations the presets were chosen from (applied to Settings::defaults(), as a
+// preset is): cheap and accurate combinations of the settings above. Two more were chosen and
+// are measured as the presets now: "accurate_s1.25_msaa2" (scale 1.25, msaa2, sky 512, bloom
+// high, full-resolution particles) became high, "s1_aa_off" (scale 1, no AA, bloom high,
+// full-resolution particles) medium; the old high and medium are kept here for comparison.
+const std::pair<const char*, const char*> kCandidates[] = {
+    {"accurate_s1.5_aa_off", "render.scale=1.5 render.antialias=off render.sky_resolution=512 render.bloom=high render.hdr=true"
+                             " render.particle_resolution=full"},
+    {"accurate_s1.5_msaa2", "render.scale=1.5 render.antialias=msaa2 render.sky_resolution=512 render.bloom=high render.hdr=true"
+                            " render.particle_resolution=full"},
+    {"accurate_s1.25_aa_off", "render.scale=1.25 render.antialias=off render.sky_resolution=512 render.bloom=high"
+                              " render.hdr=true render.particle_resolution=full"},
+    {"s1_aa_off_auto", "render.scale=1 render.antialias=off render.bloom=high render.hdr=true"},
+    {"s0.75_aa_off", "render.scale=0.75 render.antialias=off render.bloom=low render.hdr=true"},
+    {"s0.75_linear_cluster", "render.scale=0.75 render.antialias=off render.bloom=low render.hdr=true render.soft_edges=linear"
+                             " render.sorting=cluster"},
+    {"old_high", "render.soft_edges=effect render.sorting=full render.texture_filter=mipmap_nearest render.scale=1"
+                 " render.particle_resolution=full render.hdr=true render.bloom=high render.antialias=fxaa"},
+    {"old_medium", "render.soft_edges=linear render.sorting=cluster render.texture_filter=mipmap_nearest render.scale=0.75"
+                   " render.particle_resolution=auto render.hdr=true render.bloom=low render.antialias=fxaa"},
+    {"s0.5_hdr", "render.scale=0.5 render.antialias=off render.bloom=low render.hdr=true render.soft_edges=off"
+                 " render.sorting=off render.particle_resolution=half render.sky_resolution=128"},
+    {"s0.5_hdr_soft", "render.scale=0.5 render.antialias=off render.bloom=low render.hdr=true render.soft_edges=linear"
+                      " render.sorting=cluster render.sky_resolution=128"},
 };
 
 std::vector<Row> render_rows() {
@@ -127,6 +159,16 @@ std::vector<Row> render_rows() {
     p.setting = name;
     p.settings = preset(name);
     rows.push_back(p);
+  }
+  for (const auto& [name, keys_text] : kCandidates) {
+    Row c;
+    c.kind = "candidate";
+    c.setting = name;
+    c.value = keys_text;
+    c.settings = Settings::defaults();
+    std::istringstream words(keys_text);
+    for (std::string kv; words >> kv;) c.settings.set_from_text(kv, "tradeoffs candidate " + c.setting);
+    rows.push_back(c);
   }
   return rows;
 }
@@ -259,10 +301,16 @@ std::map<std::pair<uint64_t, uint32_t>, glm::dvec3> birth_points(const ParticleW
   return out;
 }
 
+double ship_distance(const World& a, const World& b) {
+  double d = 0;
+  for (size_t i = 0; i < a.ships.size() && i < b.ships.size(); ++i)
+    d = std::max(d, glm::length(a.ships[i].position - b.ships[i].position));
+  return d;
+}
+
 // Ship and particle divergence of `got` from `want` (the same level and inputs).
 void divergence(const World& want, const World& got, Row& row) {
-  for (size_t i = 0; i < want.ships.size() && i < got.ships.size(); ++i)
-    row.ship_m = std::max(row.ship_m, glm::length(want.ships[i].position - got.ships[i].position));
+  row.ship_m = ship_distance(want, got);
   const auto a = birth_points(*want.particles), b = birth_points(*got.particles);
   double sum = 0;
   size_t matched = 0;
@@ -302,7 +350,10 @@ void measure_simulation(std::vector<Row>& rows) {
   }
   std::vector<uint64_t> skipped(rows.size(), 0), updates(rows.size(), 0), spawned(rows.size(), 0);
   std::vector<std::map<uint64_t, uint32_t>> uids(rows.size());
-  for (int t = 0; t < 600; ++t)
+  size_t sixteen = 0;
+  for (size_t i = 0; i < rows.size(); ++i)
+    if (rows[i].setting == "sim.substeps" && rows[i].value == "16") sixteen = i;
+  for (int t = 0; t < 600; ++t) {
     for (size_t k = 0; k < rows.size(); ++k) {
       const size_t i = t % 2 ? rows.size() - 1 - k : k;
       const double t0 = bench::now_seconds();
@@ -313,9 +364,13 @@ void measure_simulation(std::vector<Row>& rows) {
       updates[i] += st.skipped_particles + st.animated_particles;
       spawned[i] += admitted_since(*games[i].world().particles, uids[i]);
     }
-  size_t sixteen = 0;
-  for (size_t i = 0; i < rows.size(); ++i)
-    if (rows[i].setting == "sim.substeps" && rows[i].value == "16") sixteen = i;
+    for (size_t i = 0; i < rows.size(); ++i) {
+      if (rows[i].diverged_s < 0 && ship_distance(games[sixteen].world(), games[i].world()) > 1.0)
+        rows[i].diverged_s = double(t + 1) / 60.0;
+      if (rows[i].diverged_ref_s < 0 && ship_distance(games[0].world(), games[i].world()) > 1.0)
+        rows[i].diverged_ref_s = double(t + 1) / 60.0;
+    }
+  }
   for (size_t i = 0; i < rows.size(); ++i) {
     Row& row = rows[i];
     std::vector<double> q;
@@ -339,7 +394,14 @@ double geometric_mean(const std::vector<double>& v) {
 
 std::string label(const Row& r) {
   if (r.kind == "preset" || r.kind == "preset_sim") return "preset " + r.setting;
+  if (r.kind == "candidate") return "candidate " + r.setting;
   return r.setting.empty() ? "reference" : r.setting + "=" + r.value;
+}
+
+std::string seconds_or_never(double s) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.3f", s);
+  return s < 0 ? std::string("never") : std::string(b);
 }
 
 void write_csv(const std::vector<Row>& render, const std::vector<Row>& sim) {
@@ -351,14 +413,15 @@ void write_csv(const std::vector<Row>& render, const std::vector<Row>& sim) {
   }
   std::fprintf(f, "kind,setting,value,cost_ratio,psnr_min_db,psnr_gallery_db,psnr_battle_db,psnr_closeup_db,"
                   "pixels_off_gallery,pixels_off_battle,pixels_off_closeup,sim_ms_per_tick,ship_divergence_m,"
-                  "particles_unmatched_share,particle_birth_rms_m,refused_share,skipped_update_share\n");
+                  "particles_unmatched_share,particle_birth_rms_m,refused_share,skipped_update_share,ship_diverged_after_s,ship_diverged_from_reference_after_s\n");
   for (const Row& r : render)
-    std::fprintf(f, "%s,%s,%s,%.4f,%.3f,%.3f,%.3f,%.3f,%.5f,%.5f,%.5f,,,,,,\n", r.kind.c_str(), r.setting.c_str(),
+    std::fprintf(f, "%s,%s,%s,%.4f,%.3f,%.3f,%.3f,%.3f,%.5f,%.5f,%.5f,,,,,,,,\n", r.kind.c_str(), r.setting.c_str(),
                  r.value.c_str(), r.cost, *std::min_element(r.psnr.begin(), r.psnr.end()), r.psnr[0], r.psnr[1], r.psnr[2],
                  r.off[0], r.off[1], r.off[2]);
   for (const Row& r : sim)
-    std::fprintf(f, "%s,%s,%s,%.4f,,,,,,,,%.4f,%.6g,%.5f,%.6g,%.5f,%.5f\n", r.kind.c_str(), r.setting.c_str(), r.value.c_str(),
-                 r.cost, r.sim_ms, r.ship_m, r.unmatched, r.birth_rms_m, r.refused, r.skipped);
+    std::fprintf(f, "%s,%s,%s,%.4f,,,,,,,,%.4f,%.6g,%.5f,%.6g,%.5f,%.5f,%s,%s\n", r.kind.c_str(), r.setting.c_str(),
+                 r.value.c_str(), r.cost, r.sim_ms, r.ship_m, r.unmatched, r.birth_rms_m, r.refused, r.skipped,
+                 seconds_or_never(r.diverged_s).c_str(), seconds_or_never(r.diverged_ref_s).c_str());
   std::fclose(f);
   std::printf("  wrote out/tradeoffs.csv (%zu rows)\n", render.size() + sim.size());
 }
@@ -369,11 +432,12 @@ void print_tables(const std::vector<Row>& render, const std::vector<Row>& sim) {
   for (const Row& r : render)
     std::printf("  %-38s x%6.3f %8.2f %8.2f %8.2f %8.2f  %.4f %.4f %.4f\n", label(r).c_str(), r.cost,
                 *std::min_element(r.psnr.begin(), r.psnr.end()), r.psnr[0], r.psnr[1], r.psnr[2], r.off[0], r.off[1], r.off[2]);
-  std::printf("  %-38s %7s %9s %10s %10s %10s %8s %8s\n", "simulation row", "cost", "ms/tick", "ship m", "unmatched",
-              "birth rms", "refused", "skipped");
+  std::printf("  %-38s %7s %9s %10s %10s %10s %8s %8s %9s %9s\n", "simulation row", "cost", "ms/tick", "ship m", "unmatched",
+              "birth rms", "refused", "skipped", "1 m at s", "from ref");
   for (const Row& r : sim)
-    std::printf("  %-38s x%6.3f %9.3f %10.4g %10.4f %10.4g %8.4f %8.4f\n", label(r).c_str(), r.cost, r.sim_ms, r.ship_m,
-                r.unmatched, r.birth_rms_m, r.refused, r.skipped);
+    std::printf("  %-38s x%6.3f %9.3f %10.4g %10.4f %10.4g %8.4f %8.4f %9s %9s\n", label(r).c_str(), r.cost, r.sim_ms,
+                r.ship_m, r.unmatched, r.birth_rms_m, r.refused, r.skipped, seconds_or_never(r.diverged_s).c_str(),
+                seconds_or_never(r.diverged_ref_s).c_str());
 }
 
 }  // namespace
