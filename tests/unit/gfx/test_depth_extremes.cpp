@@ -3,12 +3,14 @@
 // one in front of a wall only 0.1 % farther without z-fighting; and the soft-edge fade of a
 // particle just in front of a surface, right to 1 % of the particle's size both at 5 cm and at
 // 1e7 m. Reversed-Z float depth (DESIGN.md) is what makes both hold; the tests need clip
-// control (llvmpipe has it) and skip without it.
+// control (llvmpipe has it) and skip without it. And a particle at the camera in the overdraw
+// budget's estimate (no GL).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
+#include "gfx/overdraw_budget.h"
 #include "gfx_test_util.h"
 
 namespace arc {
@@ -97,6 +99,27 @@ TEST(DepthExtremes, SoftFadeIsRightTo1PercentOfTheSizeNearAndFar) {
       EXPECT_NEAR(got, share, 0.01) << "particle " << c.size << " m at " << c.distance << " m, surface "
                                     << share << " of its size behind";
     }
+}
+
+// A particle exactly at the camera: the overdraw budget's estimate (which sizes every
+// particle's quad on screen, as particle.vert does) stays finite and clamped, and the others
+// are left alone; the renderer draws it with finite pixels (Renderer.DegenerateBillboards...).
+TEST(DepthExtremes, AParticleAtTheCameraKeepsTheOverdrawEstimateFinite) {
+  std::vector<ParticleInstance> ps = {scenes::particle({0, 0, 0}, 1.0f, glm::vec3(1), 1.0f, 1.0f),
+                                      scenes::particle({0, 0, -20}, 1.0f, glm::vec3(1), 1.0f, 1.0f)};
+  OverdrawFrame f;
+  f.tan_half_y = std::tan(0.45f);
+  f.near = 0.1f;
+  f.size_clamp = 0.5f;
+  f.width = 1280;
+  f.height = 720;
+  std::vector<float> areas;
+  OverdrawBudget b;
+  const OverdrawStats st = b.apply(ps, areas, f, {.budget_layers = 3.0f});
+  ASSERT_EQ(areas.size(), 2u);
+  EXPECT_TRUE(std::isfinite(areas[0]) && std::isfinite(st.estimated_layers));
+  EXPECT_LE(areas[0], 360.0f * 360.0f + 1.0f) << "at most the size clamp: half the screen height across";
+  EXPECT_EQ(st.reduced, 0);
 }
 
 }  // namespace
