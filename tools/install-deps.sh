@@ -10,6 +10,7 @@ packages=(
   libegl-mesa0 libgl1-mesa-dri libgbm1
   libopenal-dev
   xvfb xauth xdotool
+  python3-matplotlib
 )
 
 missing=()

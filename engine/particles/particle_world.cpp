@@ -40,6 +40,7 @@ float curve_max(const Curve& c) {
 
 struct ParticleWorld::Impl : ParticleWorldState {
   mutable ParticlePool scratch;  // a culled cluster drawn anyway is evaluated here, not in place
+  uint32_t skipped_particles = 0, animated_particles = 0, caught_up = 0;  // the last step's, for stats()
 
   Cluster* find(ClusterHandle hnd) {
     if (!hnd || hnd.index > slots.size()) return nullptr;
@@ -451,15 +452,19 @@ void ParticleWorld::step(uint64_t tick, const ParticleCamera& camera) {
     for (Cluster& c : w.slots)
       if (c.alive) w.advance(c, t);
   w.tick = std::max(w.tick, tick);
-  w.skipped = 0;
+  w.skipped = w.skipped_particles = w.animated_particles = w.caught_up = 0;
   for (Cluster& c : w.slots) {
     if (!c.alive || w.tick < c.spawn_tick) continue;
     w.update_bound(c, w.tick);
+    const bool was_culled = c.culled;
     c.culled = c.intensity <= 0.0 || !w.visible(c, camera);
     if (c.culled) {
       ++w.skipped;
+      w.skipped_particles += uint32_t(c.pool.count());
       continue;
     }
+    w.caught_up += was_culled ? 1u : 0u;
+    w.animated_particles += uint32_t(c.pool.count());
     w.animate(c, w.tick, c.pool);
     c.animated_tick = w.tick;
   }
@@ -488,6 +493,9 @@ ParticleStats ParticleWorld::stats() const {
   for (const Cluster& c : impl_->slots) s.live_clusters += c.alive ? 1u : 0u;
   s.refused_particles = impl_->refused;
   s.skipped_clusters = impl_->skipped;
+  s.skipped_particles = impl_->skipped_particles;
+  s.animated_particles = impl_->animated_particles;
+  s.caught_up_clusters = impl_->caught_up;
   return s;
 }
 

@@ -83,6 +83,11 @@ struct ParticleStats {
   uint32_t live_clusters = 0;
   uint64_t refused_particles = 0;  // spawns refused because the budget was full
   uint32_t skipped_clusters = 0;   // clusters not animated in the last step (culled)
+  // What the last step did and left out ("model only what a scene requires"); diagnostics, not
+  // state: not saved, not hashed.
+  uint32_t skipped_particles = 0;  // particles of the culled clusters: none of them evaluated
+  uint32_t animated_particles = 0; // particles the last step evaluated (position, size, colour)
+  uint32_t caught_up_clusters = 0; // clusters animated after skipping one tick or more
 };
 
 // Where an owner is drawn this frame: the renderer interpolates meshes between the last two

@@ -41,6 +41,7 @@ void apply_simulation_settings(const Settings& s, GameOptions& game) {
   game.particle_budget = uint32_t(s.integer("particles.budget"));
   game.lightning_interval = int(s.integer("particles.lightning_interval"));
   game.substeps = int(s.integer("sim.substeps"));
+  game.cull_distance = s.number("particles.cull_distance");
 }
 
 std::string resolve_data_path(const std::string& path, const std::string& option) {

@@ -46,7 +46,7 @@ struct AppOptions {
 };
 
 // The simulation keys of the settings (particles.budget, particles.lightning_interval,
-// sim.substeps) copied into the options a Game is loaded with.
+// particles.cull_distance, sim.substeps) copied into the options a Game is loaded with.
 void apply_simulation_settings(const Settings& s, GameOptions& game);
 
 // A data file named on the command line: as given, or else relative to the source tree, so

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <sstream>
 
 #include "core/error.h"
 #include "core/file_writer.h"
@@ -105,6 +106,13 @@ SessionRecorder::SessionRecorder(const std::string& path, const std::string& lev
   h.particle_budget = w.options.particle_budget;
   h.lightning_interval = w.options.lightning_interval;
   h.substeps = w.options.substeps;
+  // The cull distance decides which clusters skip ticks, and that is in the hash.
+  if (w.options.cull_distance != GameOptions{}.cull_distance) {
+    std::ostringstream d;
+    d.precision(17);  // read back to the same double
+    d << w.options.cull_distance;
+    h.settings.push_back({"particles.cull_distance", d.str()});
+  }
   const std::string header = replay::header_text(h) + "# recorded live session\n";
   lock();
   try {

@@ -34,6 +34,7 @@ struct GameOptions {
   uint32_t particle_budget = 200000;
   int lightning_interval = 0;  // 0 = effects' own
   int substeps = 1;
+  double cull_distance = 20000.0;  // particle clusters farther from the camera are not animated or drawn
   std::string root_dir = ".";  // where assets/ lives (files named in levels are relative to it)
 };
 

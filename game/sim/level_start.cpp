@@ -97,6 +97,7 @@ void init_world(World& w, LevelDef level, std::shared_ptr<const EffectLibrary> e
   pc.seed = w.seed;
   pc.budget = o.particle_budget;
   pc.lightning_interval = o.lightning_interval;
+  pc.cull_distance = o.cull_distance;
   pc.tick_seconds = w.dt;
   w.particles.emplace(pc, w.effects.get());
   add_ships(w);

@@ -26,6 +26,21 @@ TEST(FixedStepClock, LongFrameIsClampedSoItCannotSpiral) {
   EXPECT_EQ(c.clamped_frames(), 1u);
 }
 
+// The window loop's frame clock at the extremes: a 0.25 s hitch is exactly the most one frame
+// may owe, a 5 s stall (a breakpoint, a dragged window) owes no more than that, and the frame
+// after either owes only its own time: no backlog carries over, so nothing spirals.
+TEST(FixedStepClock, HitchOfAQuarterSecondAndStallOfFiveSecondsAtEveryTickRate) {
+  for (int rate : {20, 60, 480}) {  // rates where a quarter second is whole ticks
+    FixedStepClock c{rate, 0.25};
+    EXPECT_EQ(c.advance(0.25), rate / 4) << rate << " Hz";
+    EXPECT_EQ(c.clamped_frames(), 0u) << rate << " Hz";
+    EXPECT_EQ(c.advance(5.0), rate / 4) << rate << " Hz";
+    EXPECT_EQ(c.clamped_frames(), 1u) << rate << " Hz";
+    EXPECT_EQ(c.advance(1.0 / rate), 1) << rate << " Hz: the stall left a backlog";
+    EXPECT_LT(c.alpha(), 1.0);
+  }
+}
+
 TEST(FixedStepClock, PauseRunsNoTicksAndResumesCleanly) {
   FixedStepClock c{60};
   c.advance(0.01);

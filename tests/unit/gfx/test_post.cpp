@@ -256,7 +256,8 @@ TEST(Hdr, QualityPresetsSetTheLook) {
   s.apply_preset_file(quality, "high");
   r->apply_settings(s);
   EXPECT_TRUE(r->render_settings().hdr);
-  EXPECT_EQ(r->render_settings().antialias, RenderSettings::Antialias::Fxaa);
+  EXPECT_EQ(r->render_settings().antialias, RenderSettings::Antialias::Msaa2)
+      << "high multisamples (chosen by the tradeoffs bench)";
   EXPECT_FLOAT_EQ(r->render_settings().bloom, RenderSettings::kBloomHigh);
   s.apply_preset_file(quality, "low");
   r->apply_settings(s);

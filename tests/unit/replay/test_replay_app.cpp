@@ -66,6 +66,7 @@ TEST(ReplayApp, RecordedSessionReplaysToTheSameHashes) {
   GameOptions live;
   live.particle_budget = 3000;
   live.substeps = 2;
+  live.cull_distance = 100;  // which clusters skip ticks is in the hash: it travels as a set line
   Game game = Game::load_level(kRange, live);
   {
     SessionRecorder rec(file.string(), kRange, game);
@@ -75,6 +76,8 @@ TEST(ReplayApp, RecordedSessionReplaysToTheSameHashes) {
   replay::Script s = replay::load_script(file.string());
   EXPECT_EQ(s.header.particle_budget, 3000u);
   EXPECT_EQ(s.header.substeps, 2);
+  ASSERT_EQ(s.header.settings.size(), 1u);
+  EXPECT_EQ(s.header.settings[0].key + "=" + s.header.settings[0].value, "particles.cull_distance=100");
   EXPECT_EQ(s.end_tick, 330u);
   EXPECT_GE(s.hashes.size(), 5u);  // one per second, and the final one
   EXPECT_EQ(s.commands.size(), 4u);
