@@ -56,6 +56,8 @@ void EffectTimeline::restart() {
   ParticleConfig config;
   config.seed = stage_.seed;
   config.tick_seconds = stage_.tick_seconds;
+  config.budget = stage_.particle_budget;
+  config.lightning_interval = stage_.lightning_interval;
   world_ = std::make_unique<ParticleWorld>(config, library_.get());
   SpawnParams params;
   if (stage_.motion == StageMotion::Circle) {

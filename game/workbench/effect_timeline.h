@@ -38,6 +38,8 @@ struct StageOptions {
   double circle_speed = 30.0;    // m/s along the circle
   uint64_t seed = 1;
   double tick_seconds = 1.0 / 60.0;
+  uint32_t particle_budget = ParticleConfig{}.budget;        // particles.budget
+  int lightning_interval = ParticleConfig{}.lightning_interval;  // particles.lightning_interval
 };
 
 struct EffectCounts {

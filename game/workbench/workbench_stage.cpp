@@ -131,7 +131,13 @@ EffectCounts WorkbenchStage::counts() const { return timeline_ ? timeline_->fram
 
 uint64_t WorkbenchStage::state_hash() const { return timeline_ ? timeline_->state_hash(camera_) : 0; }
 
-uint32_t WorkbenchStage::particle_budget() const { return ParticleConfig{}.budget; }
+uint32_t WorkbenchStage::particle_budget() const { return options_.particle_budget; }
+
+void WorkbenchStage::set_particle_limits(uint32_t budget, int lightning_interval) {
+  options_.particle_budget = budget;
+  options_.lightning_interval = lightning_interval;
+  if (library_) rebuild();
+}
 
 glm::dvec3 WorkbenchStage::focus() const {
   if (backdrop_.kind != BackdropKind::Circling || !timeline_) return glm::dvec3(0.0);

@@ -47,6 +47,8 @@ struct StageModel {
 class WorkbenchStage {
  public:
   WorkbenchStage();
+  // The user's particles.budget and particles.lightning_interval, as the game would use them.
+  void set_particle_limits(uint32_t budget, int lightning_interval);
   ~WorkbenchStage();
 
   // The models the backdrops use: the ships, and the wall (ids from the renderer).

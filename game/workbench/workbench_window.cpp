@@ -170,6 +170,8 @@ void WorkbenchSession::setup() {
     names.push_back(thumbnails_.back()->gl_name());
   }
   panel_.set_sprite_thumbnails(std::move(names));
+  stage_.set_particle_limits(uint32_t(options_.settings.integer("particles.budget")),
+                             int(options_.settings.integer("particles.lightning_interval")));
   stage_.set_effect(doc_->library(), doc_->name());
   shown_revision_ = doc_->revision();
   stage_.set_loop_seconds(stage_.effect_seconds(nullptr) + 0.25);

@@ -83,6 +83,21 @@ TEST(EffectTimeline, CountsParticlesPerCluster) {
   EXPECT_EQ(t.frame_stats().live_particles, 0u);
 }
 
+// The stage runs under the user's particle budget, as the game would: a tweaker sees what a
+// small budget refuses.
+TEST(EffectTimeline, RunsUnderTheGivenParticleBudget) {
+  auto fx = game_effects();
+  EffectTimeline full(fx, "ship_explosion");
+  full.scrub_to(6, stage_camera());
+  ASSERT_GT(full.frame_stats().live_particles, 100u);
+  StageOptions small;
+  small.particle_budget = 100;
+  EffectTimeline limited(fx, "ship_explosion", small);
+  limited.scrub_to(6, stage_camera());
+  EXPECT_LE(limited.frame_stats().live_particles, 100u);
+  EXPECT_GT(limited.world().stats().refused_particles, 0u);
+}
+
 TEST(EffectTimeline, LifeEndsForBurstsAndLoopsForSteadyEmitters) {
   auto fx = game_effects();
   bool ends = false;
