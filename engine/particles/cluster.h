@@ -50,6 +50,8 @@ struct Cluster {
   bool culled = false;
   glm::dvec3 bound_center{0.0};         // cluster frame
   double bound_radius = 0.0;
+  uint64_t bound_changes = UINT64_MAX;  // pool.changes() and margin the linear bound was made for
+  double bound_margin = -1.0;
   ParticlePool pool;
 };
 

@@ -1,5 +1,6 @@
 #include "particles/particle_pool.h"
 
+#include <algorithm>
 #include <type_traits>
 
 #include "core/hash.h"
@@ -21,13 +22,25 @@ void ParticlePool::reserve(size_t n) {
 }
 
 void ParticlePool::resize(size_t n) {
+  if (n == count()) return;
+  if (n < deaths_known_) touch();
   for_each_array(*this, [n](auto& v) { v.resize(n); });
+  ++changes_;
+}
+
+void ParticlePool::touch() {
+  deaths_known_ = 0;
+  first_death_ = UINT32_MAX;
+  ++changes_;
 }
 
 void ParticlePool::clear() { resize(0); }
 
 size_t ParticlePool::retire(uint32_t now) {
   const size_t n = count();
+  for (size_t i = deaths_known_; i < n; ++i) first_death_ = std::min(first_death_, death[i]);
+  deaths_known_ = n;
+  if (first_death_ > now) return 0;
   size_t first = 0;
   while (first < n && death[first] > now) ++first;
   if (first == n) return 0;

@@ -43,9 +43,23 @@ struct ParticlePool {
   void reserve(size_t n);
   void resize(size_t n);  // new particles are zeroed
   void clear();
-  // Removes particles whose death tick has come, keeping order; returns how many died.
+  // Removes particles whose death tick has come, keeping order; returns how many died. Reads
+  // only the particles born since the last call while none is due (a cluster beyond the cull
+  // distance costs no pass over its particles per tick).
   size_t retire(uint32_t now);
   void hash(StateHasher& h) const;
+  // Counts every change of which particles exist (births, deaths, resizes), so a value computed
+  // from the birth state (the cluster's bound) can be kept until the next change.
+  uint64_t changes() const { return changes_; }
+  // The arrays were written directly (a snapshot read): forget what retire() and changes() knew.
+  void touch();
+
+ private:
+  // Particles [0, deaths_known_) die no earlier than first_death_. Deaths are written only
+  // for particles appended by resize(), or raised to kNeverDies, so the bound stays safe.
+  size_t deaths_known_ = 0;
+  uint32_t first_death_ = UINT32_MAX;
+  uint64_t changes_ = 0;
 };
 
 }  // namespace arc

@@ -96,9 +96,11 @@ struct ClusterReading {
   void read_leaf(snapshot::Reader& in, const char*, ParticlePool& pool) {
     const size_t n = in.count(95, "particle count");
     for_each_array(pool, [&in, n](auto& v) { in.array(v, n); });
+    pool.touch();
   }
   void after_read(snapshot::Reader& in, Cluster& c) {
     if (!c.alive) return;
+    c.bound_changes = UINT64_MAX;  // the bound was read with the particles; made anew on the next step
     if (c.serial == 0 || c.serial >= w.next_serial)
       in.fail(where() + "serial " + std::to_string(c.serial) + " is outside 1.." + std::to_string(w.next_serial - 1));
     if (c.def->animation == AnimationType::Linear) c.motion = w.motion_table(*c.def);

@@ -222,6 +222,9 @@ struct ParticleWorld::Impl : ParticleWorldState {
       c.bound_center = glm::dvec3(0.0), c.bound_radius = 0.0;
       return;
     }
+    // Birth positions and reaches only change with the set of particles: no pass over a
+    // cluster's particles on a tick that neither bore nor retired one.
+    if (p.changes() == c.bound_changes && margin == c.bound_margin) return;
     float lo[3] = {p.p0x[0], p.p0y[0], p.p0z[0]}, hi[3] = {lo[0], lo[1], lo[2]};
     for (size_t i = 0; i < p.count(); ++i) {
       const float r = p.reach[i];
@@ -232,6 +235,8 @@ struct ParticleWorld::Impl : ParticleWorldState {
     const glm::dvec3 a(lo[0], lo[1], lo[2]), b(hi[0], hi[1], hi[2]);
     c.bound_center = (a + b) * 0.5;
     c.bound_radius = length(b - a) * 0.5 + margin;
+    c.bound_changes = p.changes();
+    c.bound_margin = margin;
   }
 
   bool visible(const Cluster& c, const ParticleCamera& cam) const {

@@ -138,6 +138,8 @@ void visit_fields(C& c, V&& v) {
   v("culled", c.culled, fields::saved, cluster_hash<20, fields::HashAs::low_bit>);
   v("bound_center", c.bound_center, fields::saved, full_only_hash<1>);
   v("bound_radius", c.bound_radius, fields::saved, full_only_hash<2>);
+  v("bound_changes", c.bound_changes, fields::not_saved, fields::unhashed);  // when the bound was made
+  v("bound_margin", c.bound_margin, fields::not_saved, fields::unhashed);
   v("pool", c.pool, fields::saved, summary_only_hash<0, fields::HashAs::count>, full_only_hash<3>);
 }
 
