@@ -48,12 +48,13 @@ glm::dvec3 orientation(JsonObject& o) { return o.vec3("orientation", glm::dvec3(
 
 }  // namespace
 
-ShipClassDef load_ship_class(const std::string& path, const std::string& name) {
-  auto doc = JsonDoc::load_file(path);
+namespace {
+
+ShipClassDef parse_ship_class_doc(const std::shared_ptr<const JsonDoc>& doc, const std::string& name) {
   JsonObject r = root_of(doc);
   ShipClassDef c;
   c.name = name;
-  c.path = path;
+  c.path = doc->path();
   c.model = r.require_string("model");
   c.mass = r.require_number("mass", 1.0, 1.0e9);
   c.thrust = r.require_number("thrust", 0.0, 1.0e12);
@@ -96,6 +97,16 @@ ShipClassDef load_ship_class(const std::string& path, const std::string& name) {
   c.exhausts = points(r, "exhausts", 100.0);
   r.finish();
   return c;
+}
+
+}  // namespace
+
+ShipClassDef load_ship_class(const std::string& path, const std::string& name) {
+  return parse_ship_class_doc(JsonDoc::load_file(path), name);
+}
+
+ShipClassDef parse_ship_class(const std::string& text, const std::string& path, const std::string& name) {
+  return parse_ship_class_doc(JsonDoc::parse(text, path), name);
 }
 
 namespace {
