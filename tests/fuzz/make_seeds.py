@@ -100,7 +100,7 @@ def main():
             replay_words.update(w for w in line.split()[:3] if re.fullmatch(r"[A-Za-z_][A-Za-z0-9_.=-]{0,40}", w))
     with open(os.path.join(FUZZ, "dict", "replay.dict"), "w") as out:
         out.write("# replay: keywords of the script format (tests/fuzz/make_seeds.py)\n")
-        for t in ['"\\n"', '" "', '"#"', '"arcfire-replay 1\\n"', '"18446744073709551616"', '"-1"', '"nan"', '"1e999"']:
+        for t in ['"\\x0a"', '" "', '"#"', '"arcfire-replay 1\\x0a"', '"18446744073709551616"', '"-1"', '"nan"', '"1e999"']:
             out.write(t + "\n")
         for w in sorted(replay_words):
             out.write('"%s"\n' % w)
