@@ -39,6 +39,15 @@ constexpr size_t kMaxScriptLineBytes = 4096;
 // Binary world snapshots.
 constexpr size_t kMaxSnapshotBytes = size_t(256) << 20;
 
+// Lists in data files, each checked before its elements are read.
+constexpr size_t kMaxLevelShips = 256;
+constexpr size_t kMaxLevelProps = 1024;
+constexpr size_t kMaxLevelEffects = 1024;
+constexpr size_t kMaxEffectClusters = 64;
+constexpr size_t kMaxCurveKeys = 256;
+constexpr size_t kMaxEmitterTriangles = 4096;
+constexpr size_t kMaxShipPoints = 64;  // beam mounts, exhausts
+
 struct JsonLimits {
   size_t max_bytes;         // the whole text
   int max_depth;            // nested arrays and objects
@@ -68,5 +77,12 @@ void check_json_text(const char* text, size_t size, const std::string& path, con
 inline void check_json_text(const std::string& text, const std::string& path, const JsonLimits& limits) {
   check_json_text(text.data(), text.size(), path, limits);
 }
+
+class JsonObject;
+class JsonValue;
+// Throws at the key's position when o[key] is an array of more than `max` elements.
+void check_list_length(const JsonObject& o, const std::string& key, size_t max);
+// Throws at the value's position when it is an array of more than `max` elements.
+void check_list_length(const JsonValue& v, size_t max);
 
 }  // namespace arc

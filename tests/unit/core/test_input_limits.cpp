@@ -166,3 +166,11 @@ TEST(InputLimits, ScriptParsingCostIsLinearInTheInput) {
   EXPECT_LE(double(b.bytes) / double(a.bytes), input_ratio * 1.15) << a.bytes << " -> " << b.bytes;
   EXPECT_LE(double(b.blocks) / double(a.blocks), input_ratio * 1.15) << a.blocks << " -> " << b.blocks;
 }
+
+TEST(InputLimits, LongListIsRefusedAtItsKey) {
+  const auto doc = arc::JsonDoc::parse("{\n  \"ships\": [" + repeat("1,", 300) + "1]\n}", "l.json");
+  arc::JsonObject root(doc, "", &doc->root());
+  const std::string e = error_of([&] { arc::check_list_length(root, "ships", 256); });
+  EXPECT_EQ(e, "l.json:2:3: 'ships' lists 301 entries; at most 256 are allowed");
+  EXPECT_EQ(error_of([&] { arc::check_list_length(root, "props", 1); }), "(no error)");
+}
