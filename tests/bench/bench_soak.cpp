@@ -6,6 +6,8 @@
 // simulation state (Game::state_dump) and every particle of the view are checked for NaN and
 // infinity; one is a failure (exit 1).
 //   soak_rss_growth_fraction         headless hour: resident memory at the end ÷ after the first minute, − 1
+//   soak_rss_growth_second_half_fraction  headless hour: at the end ÷ at half time, − 1 (a leak
+//                                    grows on; pools and buffers reaching their high-water mark stop)
 //   soak_render_rss_growth_fraction  the same over the rendered ten minutes
 //   soak_max_particles               live particles, the most at any tick
 //   soak_restarts                    battles decided and restarted
@@ -111,6 +113,12 @@ struct SoakRun {
 // Resident memory at the end of a phase ÷ after its first game minute, − 1.
 double growth(const std::vector<double>& mib) { return mib.size() < 2 ? 0.0 : mib.back() / mib[1] - 1.0; }
 
+void print_samples(const char* phase, const std::vector<double>& mib) {
+  std::printf("  %s resident MiB by game minute:", phase);
+  for (size_t i = 0; i < mib.size(); ++i) std::printf("%s%.1f", i % 10 ? " " : (i ? "\n    " : " "), mib[i]);
+  std::printf("\n");
+}
+
 ARCFIRE_SCENE_ON_REQUEST(soak) {
   const char* env = std::getenv("ARCFIRE_SOAK_MINUTES");
   const int headless_minutes = env ? std::max(2, std::atoi(env)) : 60;
@@ -158,7 +166,10 @@ ARCFIRE_SCENE_ON_REQUEST(soak) {
                 render_minutes, kWidth, kHeight, bench::now_seconds() - t1, render_mib.front(), render_mib.back(),
                 render_mib.size() > 1 ? render_mib[1] : 0.0);
   }
+  print_samples("headless", headless_mib);
+  if (!render_mib.empty()) print_samples("rendered", render_mib);
   bench::report_metric("soak_rss_growth_fraction", growth(headless_mib));
+  bench::report_metric("soak_rss_growth_second_half_fraction", headless_mib.back() / headless_mib[headless_mib.size() / 2] - 1.0);
   if (!render_mib.empty()) bench::report_metric("soak_render_rss_growth_fraction", growth(render_mib));
   bench::report_metric("soak_max_particles", double(run.max_particles));
   bench::report_metric("soak_restarts", run.restarts);
