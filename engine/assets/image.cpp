@@ -1,6 +1,8 @@
 // assets/image.cpp — images through OpenImageIO, always handed out as RGBA8.
 #include <algorithm>
 #include <cstdio>
+#include <fcntl.h>
+#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -61,6 +63,32 @@ Image read_rgba8(OIIO::ImageInput& in, const std::string& path) {
   return img;
 }
 
+// libpng and OpenImageIO's PNG reader print their own "libpng error: ..." lines to stderr
+// before OIIO hands back the same text; a bad file must answer with one line (ours, which
+// carries that text), so stderr goes to /dev/null while a library decodes. Images are decoded
+// on the main thread at load and hot reload, when nothing else is printing.
+class QuietStderr {
+ public:
+  QuietStderr() {
+    std::fflush(stderr);
+    saved_ = ::dup(2);
+    const int null = ::open("/dev/null", O_WRONLY);
+    if (saved_ >= 0 && null >= 0) ::dup2(null, 2);
+    if (null >= 0) ::close(null);
+  }
+  ~QuietStderr() {
+    std::fflush(stderr);
+    if (saved_ < 0) return;
+    ::dup2(saved_, 2);
+    ::close(saved_);
+  }
+  QuietStderr(const QuietStderr&) = delete;
+  QuietStderr& operator=(const QuietStderr&) = delete;
+
+ private:
+  int saved_ = -1;
+};
+
 }  // namespace
 
 Image load_image(const std::string& path) {
@@ -75,15 +103,29 @@ Image load_image(const std::string& path) {
 
 Image decode_image_memory(const uint8_t* data, size_t size, const std::string& name) {
   check_text_size(size, name, kMaxImageFileBytes, "an image");
+  const QuietStderr quiet;
   OIIO::Filesystem::IOMemReader reader(const_cast<uint8_t*>(data), size);
-  // The reader is chosen by the name's extension; the bytes come from the proxy, never a file.
-  auto in = OIIO::ImageInput::create(name, false, &raw_alpha_config(), &reader);
+  // The reader is the one for the name's extension, made from the bare extension: given a name,
+  // OIIO tries every other format it has (JPEG 2000, OpenVDB, GDAL, video...) on bytes that are
+  // not what the extension says, and one of those hung on a fuzzed PNG. The bytes come from the
+  // proxy, never a file.
+  const std::string ext = std::filesystem::path(name).extension().string();
+  if (ext.size() < 2) throw InputError(name + ": an image name needs an extension saying its format (.png, .jpg...)");
+  auto in = OIIO::ImageInput::create(ext.substr(1), false, &raw_alpha_config());
   OIIO::ImageSpec spec;
   if (!in || !in->set_ioproxy(&reader) || !in->open(name, spec, raw_alpha_config()))
     throw InputError(name + ": not a readable image: " + (in ? in->geterror() : OIIO::geterror()));
-  Image img = read_rgba8(*in, name);
-  in->close();
-  return img;
+  try {
+    Image img = read_rgba8(*in, name);
+    in->close();
+    return img;
+  } catch (const InputError&) {
+    // A failed read can leave a second message pending ("PNG library error"), which OIIO
+    // prints to stderr when the reader is destroyed; it is in our message already.
+    in->geterror();
+    OIIO::geterror();
+    throw;
+  }
 }
 
 void flip_rows(Image& image) {

@@ -11,7 +11,8 @@
 //   soak_render_rss_growth_fraction  the same over the rendered ten minutes
 //   soak_max_particles               live particles, the most at any tick
 //   soak_restarts                    battles decided and restarted
-//   soak_game_minutes                game minutes run in all (ARCFIRE_SOAK_MINUTES=N shortens the hour)
+//   soak_game_minutes                game minutes run in all (ARCFIRE_SOAK_MINUTES=N shortens the hour,
+//                                    ARCFIRE_SOAK_RENDER_MINUTES=N sets the rendered part, 0 skips it)
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -122,7 +123,8 @@ void print_samples(const char* phase, const std::vector<double>& mib) {
 ARCFIRE_SCENE_ON_REQUEST(soak) {
   const char* env = std::getenv("ARCFIRE_SOAK_MINUTES");
   const int headless_minutes = env ? std::max(2, std::atoi(env)) : 60;
-  const int render_minutes = std::max(2, headless_minutes / 6);
+  const char* render_env = std::getenv("ARCFIRE_SOAK_RENDER_MINUTES");
+  const int render_minutes = render_env ? std::max(0, std::atoi(render_env)) : std::max(2, headless_minutes / 6);
   const int64_t per_minute = 3600;  // ticks at the arena's 60 Hz
   SoakRun run;
   const std::vector<ModelId> no_models(run.game.world().model_paths.size());
@@ -142,7 +144,7 @@ ARCFIRE_SCENE_ON_REQUEST(soak) {
   std::printf("  headless: %d game minutes in %.0f s, resident %.1f -> %.1f MiB (after minute 1: %.1f)\n", headless_minutes,
               headless_s, headless_mib.front(), headless_mib.back(), headless_mib.size() > 1 ? headless_mib[1] : 0.0);
   std::fflush(stdout);
-  const std::unique_ptr<HeadlessContext> ctx = bench::context_or_skip();
+  const std::unique_ptr<HeadlessContext> ctx = render_minutes > 0 ? bench::context_or_skip() : nullptr;
   if (ctx && !run.failed) {
     RendererDesc desc;
     desc.offscreen = true;

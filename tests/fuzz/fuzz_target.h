@@ -20,7 +20,8 @@ inline std::string text_of(const uint8_t* data, size_t size) {
   return std::string(reinterpret_cast<const char*>(data), size);
 }
 
-// Runs `load`; InputError is a correct answer, any other exception escapes to libFuzzer.
+// Runs `load`; InputError with a one-line message is a correct answer, any other exception
+// escapes to libFuzzer.
 // ARCFIRE_FUZZ_VERBOSE=1 prints each answer (to see what a corpus file is refused for).
 template <typename F>
 void expect_clean(F&& load) {
@@ -30,6 +31,11 @@ void expect_clean(F&& load) {
     if (verbose) std::fprintf(stderr, "accepted\n");
   } catch (const InputError& e) {
     if (verbose) std::fprintf(stderr, "refused: %s\n", e.what());
+    // The command line prints the message as the one line of a bad-input exit.
+    if (std::string(e.what()).find_first_of("\n\r") != std::string::npos) {
+      std::fprintf(stderr, "the error message spans several lines: %s\n", e.what());
+      std::abort();
+    }
   }
 }
 

@@ -174,3 +174,12 @@ TEST(InputLimits, LongListIsRefusedAtItsKey) {
   EXPECT_EQ(e, "l.json:2:3: 'ships' lists 301 entries; at most 256 are allowed");
   EXPECT_EQ(error_of([&] { arc::check_list_length(root, "props", 1); }), "(no error)");
 }
+
+TEST(InputLimits, MessagesStayOneLineWhateverTheFileHolds) {
+  // Found by tests/fuzz (level, effect): a value with an escaped newline was echoed back in
+  // "got ...", splitting the one line of a bad-input exit in two.
+  const auto doc = arc::JsonDoc::parse("{\"type\": \"last\\nteam\\u0001\"}", "m.json");
+  arc::JsonObject root(doc, "", &doc->root());
+  const std::string e = error_of([&] { root.choice("type", "a", {"a", "b"}); });
+  EXPECT_EQ(e, "m.json:1:10: 'type' must be one of \"a\" or \"b\", got \"last\\nteam\\x01\"");
+}
