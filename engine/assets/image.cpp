@@ -1,7 +1,11 @@
 // assets/image.cpp — images through OpenImageIO, always handed out as RGBA8.
 #include <algorithm>
 #include <cstdio>
+#include <fcntl.h>
+#include <unistd.h>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <memory>
 #include <string>
 #include <OpenImageIO/filesystem.h>
@@ -10,12 +14,10 @@
 #include "assets/image.h"
 #include "core/error.h"
 #include "core/file_writer.h"
+#include "core/input_limits.h"
 
 namespace arc {
 namespace {
-
-// Larger images are certainly a mistake for a game asset and would only exhaust memory.
-constexpr int kMaxImageSide = 16384;
 
 // OIIO premultiplies PNG colour on read and divides it out on write unless told that alpha is
 // unassociated; Arcfire keeps the stored bytes as they are and premultiplies explicitly.
@@ -33,6 +35,10 @@ Image read_rgba8(OIIO::ImageInput& in, const std::string& path) {
   if (spec.width <= 0 || spec.height <= 0 || spec.width > kMaxImageSide || spec.height > kMaxImageSide)
     throw InputError(path + ": image size " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
                      " is not allowed (1 to " + std::to_string(kMaxImageSide) + " pixels per side)");
+  // Larger images are certainly a mistake for a game asset and would only exhaust memory.
+  if (size_t(spec.width) * size_t(spec.height) * 4 > kMaxImageDecodedBytes)
+    throw InputError(path + ": image size " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+                     " decodes to more than " + std::to_string(kMaxImageDecodedBytes >> 20) + " MiB of RGBA8, the limit");
   const int channels = spec.nchannels;
   if (channels < 1 || channels > 4)
     throw InputError(path + ": image has " + std::to_string(channels) + " channels; 1 to 4 are supported");
@@ -58,27 +64,69 @@ Image read_rgba8(OIIO::ImageInput& in, const std::string& path) {
   return img;
 }
 
+// libpng and OpenImageIO's PNG reader print their own "libpng error: ..." lines to stderr
+// before OIIO hands back the same text; a bad file must answer with one line (ours, which
+// carries that text), so stderr goes to /dev/null while a library decodes. Images are decoded
+// on the main thread at load and hot reload, when nothing else is printing.
+class QuietStderr {
+ public:
+  QuietStderr() {
+    std::fflush(stderr);
+    saved_ = ::dup(2);
+    const int null = ::open("/dev/null", O_WRONLY);
+    if (saved_ >= 0 && null >= 0) ::dup2(null, 2);
+    if (null >= 0) ::close(null);
+  }
+  ~QuietStderr() {
+    std::fflush(stderr);
+    if (saved_ < 0) return;
+    ::dup2(saved_, 2);
+    ::close(saved_);
+  }
+  QuietStderr(const QuietStderr&) = delete;
+  QuietStderr& operator=(const QuietStderr&) = delete;
+
+ private:
+  int saved_ = -1;
+};
+
 }  // namespace
 
 Image load_image(const std::string& path) {
   if (!std::filesystem::is_regular_file(path)) throw InputError(path + ": cannot read file (missing or not a file)");
-  auto in = OIIO::ImageInput::open(path, &raw_alpha_config());
-  if (!in) throw InputError(path + ": not a readable image: " + OIIO::geterror());
-  Image img = read_rgba8(*in, path);
-  in->close();
-  return img;
+  check_file_size(path, kMaxImageFileBytes, "an image");
+  // Decoded from memory, exactly as the fuzz target feeds it (tests/fuzz/fuzz_sprite.cpp).
+  std::ifstream in(path, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (!in && !in.eof()) throw InputError(path + ": cannot read file");
+  return decode_image_memory(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size(), path);
 }
 
 Image decode_image_memory(const uint8_t* data, size_t size, const std::string& name) {
+  check_text_size(size, name, kMaxImageFileBytes, "an image");
+  const QuietStderr quiet;
   OIIO::Filesystem::IOMemReader reader(const_cast<uint8_t*>(data), size);
-  // The reader is chosen by the name's extension; the bytes come from the proxy, never a file.
-  auto in = OIIO::ImageInput::create(name, false, &raw_alpha_config(), &reader);
+  // The reader is the one for the name's extension, made from the bare extension: given a name,
+  // OIIO tries every other format it has (JPEG 2000, OpenVDB, GDAL, video...) on bytes that are
+  // not what the extension says, and one of those hung on a fuzzed PNG. The bytes come from the
+  // proxy, never a file.
+  const std::string ext = std::filesystem::path(name).extension().string();
+  if (ext.size() < 2) throw InputError(name + ": an image name needs an extension saying its format (.png, .jpg...)");
+  auto in = OIIO::ImageInput::create(ext.substr(1), false, &raw_alpha_config());
   OIIO::ImageSpec spec;
   if (!in || !in->set_ioproxy(&reader) || !in->open(name, spec, raw_alpha_config()))
-    throw InputError(name + ": not a readable embedded image: " + (in ? in->geterror() : OIIO::geterror()));
-  Image img = read_rgba8(*in, name);
-  in->close();
-  return img;
+    throw InputError(name + ": not a readable image: " + (in ? in->geterror() : OIIO::geterror()));
+  try {
+    Image img = read_rgba8(*in, name);
+    in->close();
+    return img;
+  } catch (const InputError&) {
+    // A failed read can leave a second message pending ("PNG library error"), which OIIO
+    // prints to stderr when the reader is destroyed; it is in our message already.
+    in->geterror();
+    OIIO::geterror();
+    throw;
+  }
 }
 
 void flip_rows(Image& image) {

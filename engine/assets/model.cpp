@@ -6,6 +6,7 @@
 #include <fstream>
 #include <iterator>
 #include <set>
+#include <sys/stat.h>
 #include <string>
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -16,6 +17,7 @@
 #include "assets/image_decode.h"
 #include "assets/model.h"
 #include "core/error.h"
+#include "core/input_limits.h"
 
 namespace arc {
 namespace {
@@ -25,6 +27,7 @@ constexpr int kMaxNodeDepth = 256;
 
 std::string read_bytes(const std::string& path) {
   if (!std::filesystem::is_regular_file(path)) throw InputError(path + ": cannot read file (missing or not a file)");
+  check_file_size(path, kMaxModelFileBytes, "a glTF model");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot read file");
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
@@ -60,15 +63,26 @@ void validate_glb_container(const std::string& path, const std::string& bytes) {
   if (at + 8 + bin_len > length) throw InputError(path + ": truncated .glb: the BIN chunk runs past the end of the file");
 }
 
+// What the image loader callback needs: the model's name and the decoded bytes so far.
+struct ImageBudget {
+  std::string model_path;
+  size_t decoded_bytes = 0;
+};
+
 // Embedded and external images are decoded through OpenImageIO, like every other image.
 bool decode_gltf_image(tinygltf::Image* image, const int index, std::string* err, std::string*, int, int,
                        const unsigned char* bytes, int size, void* user) {
-  const std::string& model_path = *static_cast<const std::string*>(user);
+  ImageBudget& budget = *static_cast<ImageBudget*>(user);
+  const std::string& model_path = budget.model_path;
   std::string ext = ".png";
   if (size >= 2 && bytes[0] == 0xFF && bytes[1] == 0xD8) ext = ".jpg";
   try {
     Image decoded = decode_image_memory(bytes, size_t(size > 0 ? size : 0),
                                         model_path + "#image" + std::to_string(index) + ext);
+    budget.decoded_bytes += decoded.rgba.size();
+    if (budget.decoded_bytes > kMaxModelImageBytes)
+      throw InputError(model_path + ": the model's images decode to more than " + std::to_string(kMaxModelImageBytes >> 20) +
+                       " MiB of RGBA8 together, the limit");
     image->width = decoded.width;
     image->height = decoded.height;
     image->component = 4;
@@ -80,6 +94,23 @@ bool decode_gltf_image(tinygltf::Image* image, const int index, std::string* err
     if (err) *err += e.what();
     return false;
   }
+}
+
+// External buffers and images: regular files only, each no larger than a model may be. The
+// default reader would follow a URI to a device or a huge file and read it whole.
+bool read_external_file(std::vector<unsigned char>* out, std::string* err, const std::string& file, void*) {
+  struct stat st {};
+  if (::stat(file.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) {
+    if (err) *err += "external file '" + file + "' is missing or not a regular file";
+    return false;
+  }
+  if (uint64_t(st.st_size) > kMaxModelFileBytes) {
+    if (err) *err += "external file '" + file + "' is larger than " + std::to_string(kMaxModelFileBytes >> 20) + " MiB";
+    return false;
+  }
+  std::ifstream in(file, std::ios::binary);
+  out->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  return true;
 }
 
 size_t component_size(int type) {
@@ -213,17 +244,31 @@ class GltfReader {
     check_index(index, gltf_.nodes, "node");
     if (depth > kMaxNodeDepth) fail("node hierarchy deeper than " + std::to_string(kMaxNodeDepth) + " levels (a cycle?)");
     if (on_path_.count(index)) fail("node " + std::to_string(index) + " is its own ancestor (cycle in 'children')");
+    // glTF gives a node one parent; a node shared by several would multiply the work with each level.
+    if (!visited_.insert(index).second)
+      fail("node " + std::to_string(index) + " is reached twice (a node may have only one parent and appear once in a scene)");
     on_path_.insert(index);
     const tinygltf::Node& node = gltf_.nodes[size_t(index)];
     const glm::dmat4 world = parent * local_transform(node, index);
     if (node.mesh >= 0) {
       check_index(node.mesh, gltf_.meshes, "mesh");
       const auto& mesh = gltf_.meshes[size_t(node.mesh)];
-      for (size_t p = 0; p < mesh.primitives.size(); ++p)
+      for (size_t p = 0; p < mesh.primitives.size(); ++p) {
         out.primitives.push_back(read_primitive(mesh.primitives[p], node.mesh, int(p), world, out));
+        count_output(out.primitives.back());
+      }
     }
     for (int child : node.children) visit_node(out, child, world, depth + 1);
     on_path_.erase(index);
+  }
+
+  // Meshes placed by several nodes are copied once per node: bound the model as it is built.
+  void count_output(const MeshPrimitive& prim) {
+    vertices_ += prim.positions.size();
+    indices_ += prim.indices.size();
+    if (vertices_ > kMaxModelVertices || indices_ > kMaxModelIndices)
+      fail("the model has more than " + std::to_string(kMaxModelVertices) + " vertices or " + std::to_string(kMaxModelIndices) +
+           " indices after placing every node's mesh, the limit");
   }
 
   AccessorView view_accessor(int index, const std::string& what) const {
@@ -450,20 +495,30 @@ class GltfReader {
   std::string path_;
   const tinygltf::Model& gltf_;
   std::set<int> on_path_;
+  std::set<int> visited_;
+  size_t vertices_ = 0, indices_ = 0;
 };
 
 }  // namespace
 
-ModelData load_model(const std::string& path) {
-  const std::string bytes = read_bytes(path);
+ModelData load_model(const std::string& path) { return parse_model(read_bytes(path), path); }
+
+ModelData parse_model(const std::string& bytes, const std::string& path) {
+  check_text_size(bytes.size(), path, kMaxModelFileBytes, "a glTF model");
   const std::string ext = std::filesystem::path(path).extension().string();
   const bool binary = bytes.compare(0, 4, "glTF") == 0 || ext == ".glb" || ext == ".GLB";
-  if (binary) validate_glb_container(path, bytes);
-  if (bytes.size() > UINT32_MAX) throw InputError(path + ": file is larger than 4 GiB");
+  if (binary) {
+    validate_glb_container(path, bytes);
+    check_json_text(bytes.data() + 20, read_u32(bytes, 12), path + " (JSON chunk)", kModelJsonLimits);
+  } else {
+    check_json_text(bytes, path, kModelJsonLimits);
+  }
 
   tinygltf::TinyGLTF loader;
-  std::string path_copy = path;
-  loader.SetImageLoader(&decode_gltf_image, &path_copy);
+  ImageBudget budget{path};
+  loader.SetImageLoader(&decode_gltf_image, &budget);
+  tinygltf::FsCallbacks fs{&tinygltf::FileExists, &tinygltf::ExpandFilePath, &read_external_file, &tinygltf::WriteWholeFile, nullptr};
+  loader.SetFsCallbacks(fs);
   tinygltf::Model gltf;
   std::string err, warn;
   const std::string base_dir = std::filesystem::path(path).parent_path().string();

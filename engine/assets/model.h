@@ -57,5 +57,7 @@ struct ModelData {
 };
 
 ModelData load_model(const std::string& path);
+// The same from the file's bytes; `path` names it in messages and picks .glb or .gltf (fuzz targets).
+ModelData parse_model(const std::string& bytes, const std::string& path);
 
 }  // namespace arc

@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "core/file_writer.h"
+#include "core/input_limits.h"
 
 namespace arc {
 namespace {
@@ -170,10 +171,13 @@ std::string read_text_file(const std::string& path) {
 }
 
 std::shared_ptr<const JsonDoc> JsonDoc::load_file(const std::string& path) {
+  check_file_size(path, kDataJsonLimits.max_bytes, kDataJsonLimits.kind);
   return parse(read_text_file(path), path);
 }
 
 std::shared_ptr<const JsonDoc> JsonDoc::parse(const std::string& text, const std::string& path) {
+  // Depth, string and pointer lengths bounded first: the recorder's cost is linear after that.
+  check_json_text(text, path, kDataJsonLimits);
   auto doc = std::make_shared<JsonDoc>();
   doc->path_ = path;
   LineIndex lines(text);

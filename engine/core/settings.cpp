@@ -167,7 +167,15 @@ void Settings::set_from_text(const std::string& assignment, const std::string& w
 }
 
 void Settings::apply_preset_file(const std::string& path, const std::string& preset) {
-  auto doc = JsonDoc::load_file(path);
+  apply_preset_doc(JsonDoc::load_file(path), preset);
+}
+
+void Settings::apply_preset_text(const std::string& text, const std::string& path, const std::string& preset) {
+  apply_preset_doc(JsonDoc::parse(text, path), preset);
+}
+
+void Settings::apply_preset_doc(const std::shared_ptr<const JsonDoc>& doc, const std::string& preset) {
+  const std::string& path = doc->path();
   JsonObject root = doc->root().is_object() ? JsonObject(doc, "", &doc->root())
                                             : (JsonValue(doc, "", &doc->root()).object());
   JsonObject presets = root.require_object("presets");
@@ -195,12 +203,18 @@ void Settings::apply_preset_file(const std::string& path, const std::string& pre
   }
 }
 
-std::vector<std::string> Settings::preset_names(const std::string& path) {
-  auto doc = JsonDoc::load_file(path);
+static std::vector<std::string> preset_names_of(const std::shared_ptr<const JsonDoc>& doc) {
+  JsonObject root = JsonValue(doc, "", &doc->root()).object();
+  JsonObject presets = root.require_object("presets");
   std::vector<std::string> names;
-  const auto& p = doc->root().at("presets");
-  for (auto it = p.begin(); it != p.end(); ++it) names.push_back(it.key());
+  for (auto it = presets.raw().begin(); it != presets.raw().end(); ++it) names.push_back(it.key());
   return names;
+}
+
+std::vector<std::string> Settings::preset_names(const std::string& path) { return preset_names_of(JsonDoc::load_file(path)); }
+
+std::vector<std::string> Settings::preset_names_text(const std::string& text, const std::string& path) {
+  return preset_names_of(JsonDoc::parse(text, path));
 }
 
 double Settings::number(const std::string& key) const { return std::strtod(find(key).value.c_str(), nullptr); }

@@ -12,10 +12,13 @@
 #pragma once
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace arc {
+
+class JsonDoc;
 
 struct SettingDef {
   enum class Kind { Number, Integer, Choice, Flag };
@@ -44,7 +47,10 @@ class Settings {
   void set_from_text(const std::string& assignment, const std::string& where);
   // Applies a named preset from a quality file; unknown preset or bad values → InputError.
   void apply_preset_file(const std::string& path, const std::string& preset);
+  // The same from text, named `path` in messages (fuzz targets, tests).
+  void apply_preset_text(const std::string& text, const std::string& path, const std::string& preset);
   static std::vector<std::string> preset_names(const std::string& path);
+  static std::vector<std::string> preset_names_text(const std::string& text, const std::string& path);
 
   double number(const std::string& key) const;
   int64_t integer(const std::string& key) const;
@@ -57,6 +63,7 @@ class Settings {
  private:
   const SettingDef& find(const std::string& key) const;
   SettingDef* find_mut(const std::string& key);
+  void apply_preset_doc(const std::shared_ptr<const JsonDoc>& doc, const std::string& preset);
   std::vector<SettingDef> defs_;
 };
 

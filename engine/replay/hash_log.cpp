@@ -5,11 +5,13 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/input_limits.h"
 #include "replay/script.h"
 
 namespace arc::replay {
 
 HashLog parse_hash_log(const std::string& text, const std::string& path) {
+  check_text_size(text.size(), path, kMaxScriptFileBytes, "a hash log");
   HashLog log;
   std::istringstream in(text);
   std::string l;

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "core/error.h"
+#include "core/input_limits.h"
 #include "core/json.h"
 #include "core/settings.h"
 #include "replay/script.h"
@@ -420,7 +421,19 @@ uint64_t stamped_tick(LineParser& lp, const Token& first, uint64_t last_tick) {
 
 }  // namespace
 
+// Bounded lines keep the tokenizer and the messages that quote a line cheap.
+static void check_line_limits(const std::string& raw, const std::string& path, int line) {
+  const std::string at = path + ":" + std::to_string(line) + ":1: ";
+  if (size_t(line) > kMaxScriptLines)
+    throw InputError(at + "more than " + std::to_string(kMaxScriptLines) + " lines; a replay script may have at most " +
+                     std::to_string(kMaxScriptLines));
+  if (raw.size() > kMaxScriptLineBytes)
+    throw InputError(at + "line of " + std::to_string(raw.size()) + " bytes; lines may be at most " +
+                     std::to_string(kMaxScriptLineBytes) + " bytes long");
+}
+
 Script parse_script(const std::string& text, const std::string& path) {
+  check_text_size(text.size(), path, kMaxScriptFileBytes, "a replay script");
   Script s;
   s.path = path;
   std::istringstream in(text);
@@ -432,6 +445,7 @@ Script parse_script(const std::string& text, const std::string& path) {
   std::vector<std::string> seen_keys;
   while (std::getline(in, raw)) {
     ++line;
+    check_line_limits(raw, path, line);
     LineParser lp{path, line, {}, 0, 1};
     lp.tokens = tokenize(raw, path, line, lp.end_col);
     if (lp.tokens.empty()) continue;
@@ -472,6 +486,9 @@ Script parse_script(const std::string& text, const std::string& path) {
   return s;
 }
 
-Script load_script(const std::string& path) { return parse_script(read_text_file(path), path); }
+Script load_script(const std::string& path) {
+  check_file_size(path, kMaxScriptFileBytes, "a replay script");
+  return parse_script(read_text_file(path), path);
+}
 
 }  // namespace arc::replay

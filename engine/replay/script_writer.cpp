@@ -155,7 +155,7 @@ bool Script::same_content(const Script& o) const {
     for (auto& e : s.commands) e.src = {};
     for (auto& e : s.expectations) {
       e.src = {};
-      e.ship_col = e.other_col = 0;
+      e.ship_col = e.other_col = e.sound_col = 0;
     }
     for (auto& e : s.hashes) e.src = {};
     for (auto& e : s.snapshots) e.src = {};

@@ -63,8 +63,8 @@ int8_t quantise_carrying(double base, double mouse, double& carry) {
 
 }  // namespace
 
-Bindings load_bindings(const std::string& path) {
-  auto doc = JsonDoc::load_file(path);
+// Long: one line per bound action, in the file's order; splitting would only scatter the list.
+static Bindings bindings_from(const std::shared_ptr<const JsonDoc>& doc) {
   JsonObject root = JsonValue(doc, "", &doc->root()).object();
   Bindings b;
   if (auto kv = root.get("keyboard")) {
@@ -126,6 +126,12 @@ Bindings load_bindings(const std::string& path) {
   }
   root.finish();
   return b;
+}
+
+Bindings load_bindings(const std::string& path) { return bindings_from(JsonDoc::load_file(path)); }
+
+Bindings parse_bindings(const std::string& text, const std::string& path) {
+  return bindings_from(JsonDoc::parse(text, path));
 }
 
 int presses_between(const InputState& before, const InputState& now, int code) {

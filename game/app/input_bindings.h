@@ -50,6 +50,8 @@ struct Bindings {
 
 // Validates every key (positioned errors, exit 2 from the command line).
 Bindings load_bindings(const std::string& path);
+// The same from text, named `path` in messages (fuzz targets, tests).
+Bindings parse_bindings(const std::string& text, const std::string& path);
 
 // Presses of a key or mouse button (key_code()) between two samples: the press events the
 // platform counted, or 1 when the code is down now and was not before (a caller that fills

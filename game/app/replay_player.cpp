@@ -14,6 +14,7 @@
 
 #include "core/error.h"
 #include "core/file_writer.h"
+#include "core/input_limits.h"
 #include "core/json.h"
 #include "game/app/audio_session.h"
 #include "game/app/frame_renderer.h"
@@ -378,6 +379,7 @@ void ReplayPlayer::update_golden(const std::string& original_text) {
 ReplayOutcome play_replay(const ReplayRunOptions& opt) {
   using clock = std::chrono::steady_clock;
   const clock::time_point start = clock::now();
+  check_file_size(opt.script_path, kMaxScriptFileBytes, "a replay script");
   const std::string text = read_text_file(opt.script_path);
   ReplayPlayer p(opt, replay::parse_script(text, opt.script_path));
   const clock::time_point ready = clock::now();

@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/error.h"
+#include "core/input_limits.h"
 #include "core/json.h"
 #include "particles/effect_def.h"
 #include "particles/effect_library.h"
@@ -17,6 +18,7 @@ constexpr double kSpace = 1.0e12;  // positions: world space is big but bounded 
 
 std::vector<glm::dvec3> points(JsonObject& o, const std::string& key, double limit) {
   std::vector<glm::dvec3> out;
+  check_list_length(o, key, kMaxShipPoints);
   auto v = o.get(key);
   if (!v) return out;
   for (const JsonValue& p : v->array()) out.push_back(p.vec3(-limit, limit));
@@ -48,12 +50,13 @@ glm::dvec3 orientation(JsonObject& o) { return o.vec3("orientation", glm::dvec3(
 
 }  // namespace
 
-ShipClassDef load_ship_class(const std::string& path, const std::string& name) {
-  auto doc = JsonDoc::load_file(path);
+namespace {
+
+ShipClassDef parse_ship_class_doc(const std::shared_ptr<const JsonDoc>& doc, const std::string& name) {
   JsonObject r = root_of(doc);
   ShipClassDef c;
   c.name = name;
-  c.path = path;
+  c.path = doc->path();
   c.model = r.require_string("model");
   c.mass = r.require_number("mass", 1.0, 1.0e9);
   c.thrust = r.require_number("thrust", 0.0, 1.0e12);
@@ -96,6 +99,16 @@ ShipClassDef load_ship_class(const std::string& path, const std::string& name) {
   c.exhausts = points(r, "exhausts", 100.0);
   r.finish();
   return c;
+}
+
+}  // namespace
+
+ShipClassDef load_ship_class(const std::string& path, const std::string& name) {
+  return parse_ship_class_doc(JsonDoc::load_file(path), name);
+}
+
+ShipClassDef parse_ship_class(const std::string& text, const std::string& path, const std::string& name) {
+  return parse_ship_class_doc(JsonDoc::parse(text, path), name);
 }
 
 namespace {
@@ -147,6 +160,7 @@ void load_class_of(LevelDef& L, const ShipSpawnDef& d, const JsonValue& cls, con
 
 void parse_ships(JsonObject& r, LevelDef& L, const std::string& root_dir) {
   bool have_player = false;
+  check_list_length(r, "ships", kMaxLevelShips);
   for (JsonObject s : r.objects("ships")) {
     ShipSpawnDef d;
     d.name = s.require_string("name");
@@ -173,6 +187,7 @@ void parse_ships(JsonObject& r, LevelDef& L, const std::string& root_dir) {
 }
 
 void parse_props(JsonObject& r, LevelDef& L) {
+  check_list_length(r, "props", kMaxLevelProps);
   for (JsonObject p : r.objects("props")) {
     PropDef d;
     d.model = p.require_string("model");
@@ -211,6 +226,7 @@ void parse_effect_motion(JsonObject& e, EffectSpawnDef& d, const EffectLibrary* 
 }
 
 void parse_effects(JsonObject& r, LevelDef& L, const EffectLibrary* fx) {
+  check_list_length(r, "effects", kMaxLevelEffects);
   for (JsonObject e : r.objects("effects")) {
     EffectSpawnDef d;
     JsonValue name = e.require("effect");

@@ -175,6 +175,8 @@ class EffectLibrary;
 AiDifficultyTable load_ai_difficulties(const std::string& root_dir);
 
 ShipClassDef load_ship_class(const std::string& path, const std::string& name);
+// Parses ship class text as if it were the file `path` (fuzz targets, tests).
+ShipClassDef parse_ship_class(const std::string& text, const std::string& path, const std::string& name);
 // With `effects`, every effect a level names must be in it (checked at its position).
 LevelDef load_level_def(const std::string& path, const std::string& root_dir, const EffectLibrary* effects = nullptr);
 // Parses level text (tests write levels in memory); `path` names it in messages.

@@ -12,9 +12,18 @@
 
 namespace arc::bench {
 namespace {
-std::vector<std::pair<std::string, std::function<void()>>>& scenes() {
-  static std::vector<std::pair<std::string, std::function<void()>>> s;
+struct Scene {
+  std::string name;
+  std::function<void()> fn;
+  bool on_request;
+};
+std::vector<Scene>& scenes() {
+  static std::vector<Scene> s;
   return s;
+}
+bool& failed() {
+  static bool f = false;
+  return f;
 }
 std::vector<std::pair<std::string, double>>& metrics() {
   static std::vector<std::pair<std::string, double>> m;
@@ -23,6 +32,10 @@ std::vector<std::pair<std::string, double>>& metrics() {
 }  // namespace
 
 void report_metric(const std::string& name, double value) { metrics().emplace_back(name, value); }
+void report_failure(const std::string& why) {
+  std::printf("FAILED: %s\n", why.c_str());
+  failed() = true;
+}
 double now_seconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
@@ -31,14 +44,16 @@ double median(std::vector<double> v) {
   const size_t n = v.size();
   return n == 0 ? 0.0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
-SceneRegistrar::SceneRegistrar(const char* name, std::function<void()> fn) {
-  scenes().emplace_back(name, std::move(fn));
+SceneRegistrar::SceneRegistrar(const char* name, std::function<void()> fn, bool on_request) {
+  scenes().push_back({name, std::move(fn), on_request});
 }
 
 }  // namespace arc::bench
 
 // arcfire-bench [--scenes-only] [--scene NAME] [google benchmark flags]
 // No arguments: every micro-benchmark, then every headline scene, then the metric lines.
+// Scenes registered on request (the soak) run only when --scene names them. Exit 1 when a
+// scene reported a failure.
 int main(int argc, char** argv) {
   bool scenes_only = false;
   bool filtered = false;  // --benchmark_filter: only those micro-benchmarks, no scenes
@@ -56,14 +71,14 @@ int main(int argc, char** argv) {
   benchmark::Initialize(&n, rest.data());
   if (benchmark::ReportUnrecognizedArguments(n, rest.data())) return 2;
   if (!scenes_only && only_scene.empty()) benchmark::RunSpecifiedBenchmarks();
-  for (auto& [name, fn] : arc::bench::scenes()) {
+  for (auto& [name, fn, on_request] : arc::bench::scenes()) {
     if (filtered && only_scene.empty()) break;
-    if (!only_scene.empty() && name != only_scene) continue;
+    if (only_scene.empty() ? on_request : name != only_scene) continue;
     std::printf("scene %s\n", name.c_str());
     std::fflush(stdout);
     fn();
   }
   for (auto& [name, value] : arc::bench::metrics()) std::printf("metric %s %.6g\n", name.c_str(), value);
   benchmark::Shutdown();
-  return 0;
+  return arc::bench::failed() ? 1 : 0;
 }

@@ -12,13 +12,16 @@
 namespace arc::bench {
 
 void report_metric(const std::string& name, double value);
+// Marks the run failed (arcfire-bench exits 1 after printing the metrics), with one line why.
+void report_failure(const std::string& why);
 // Wall-clock seconds (steady clock) for scenes.
 double now_seconds();
 // The median of a set of timings or ratios (0 when empty).
 double median(std::vector<double> v);
 
 struct SceneRegistrar {
-  SceneRegistrar(const char* name, std::function<void()> fn);
+  // on_request: run only when named by --scene (long runs such as the soak).
+  SceneRegistrar(const char* name, std::function<void()> fn, bool on_request = false);
 };
 
 }  // namespace arc::bench
@@ -28,4 +31,8 @@ struct SceneRegistrar {
 #define ARCFIRE_SCENE(name)                                                              \
   static void name();                                                                    \
   static ::arc::bench::SceneRegistrar ARCFIRE_SCENE_CAT(scene_reg_, __LINE__){#name, name}; \
+  static void name()
+#define ARCFIRE_SCENE_ON_REQUEST(name)                                                         \
+  static void name();                                                                          \
+  static ::arc::bench::SceneRegistrar ARCFIRE_SCENE_CAT(scene_reg_, __LINE__){#name, name, true}; \
   static void name()

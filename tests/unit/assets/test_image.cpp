@@ -80,6 +80,19 @@ TEST(LoadImage, FloatIsClampedAndScaled) {
   EXPECT_EQ(pixel(img, 0, 0), (Px{0, 255, 51, 255}));
 }
 
+TEST(LoadImage, CorruptPngAnswersWithOneLineAndPrintsNothing) {
+  // Found by tests/fuzz (sprite): libpng printed its own lines to stderr beside the error.
+  const std::string path = std::string(ARCFIRE_SOURCE_DIR) + "/tests/fuzz/regression/sprite/idat_bad_code_lengths.png";
+  testing::internal::CaptureStderr();
+  try {
+    load_image(path);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(path + ": cannot decode image: PNG read error: IDAT", 0), 0u) << e.what();
+  }
+  EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
+}
+
 TEST(LoadImage, BadInputThrowsNamingTheFile) {
   const auto dir = test::scratch_dir();
   const std::string missing = (dir / "missing.png").string();

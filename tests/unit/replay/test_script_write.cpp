@@ -83,6 +83,9 @@ TEST(ReplayWrite, ChangedContentIsNotTheSame) {
   EXPECT_FALSE(parse_script(head + "quality low\n1 end\n", "g").same_content(parse_script(head + "1 end\n", "h")));
   EXPECT_TRUE(parse_script(head + "quality low\n1 end\n", "i")
                   .same_content(parse_script("# moved\n" + head + "\nquality low\n1 end\n", "j")));
+  // Found by tests/fuzz (replay): a sound expectation's column is a source position too.
+  EXPECT_TRUE(parse_script(head + "1 expect sound explosion\n2 end\n", "k")
+                  .same_content(parse_script(head + "1 expect sound   explosion\n2 end\n", "l")));
 }
 
 TEST(ReplayWrite, RecordedDiffsReplayToTheSameHeldState) {

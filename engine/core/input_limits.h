@@ -1,0 +1,88 @@
+// core/input_limits.h — the largest input each loader accepts, checked before the expensive work.
+//
+// A tweaker who pastes a broken file or a tester fed a corrupted replay must get one line and
+// exit code 2 at once, whatever the file holds. Every loader therefore checks the size of its
+// input first (a stat, before a byte is read), and JSON text is scanned once, linearly, for
+// nesting depth, string length and the length of each value's JSON pointer before nlohmann and
+// the position recorder (core/json.cpp) see it: the recorder keeps one pointer string per value,
+// so bounded pointers keep its cost linear in the file size.
+//
+//   check_file_size("levels/duel.json", kMaxDataFileBytes, "a data file");  // throws InputError
+//   check_json_text(text, path, kDataJsonLimits);                           // path:line:col: ...
+//
+// The figures are stated for users in levels/README.md, assets/effects/README.md,
+// tests/replays/README.md and tests/README.md; change them there too.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+namespace arc {
+
+// Data files: levels, ship classes, effects, quality presets, key bindings, HUD, AI, sounds.
+constexpr size_t kMaxDataFileBytes = size_t(256) << 10;
+// glTF models (.glb or .gltf with embedded buffers) and images.
+constexpr size_t kMaxModelFileBytes = size_t(64) << 20;
+constexpr size_t kMaxImageFileBytes = size_t(32) << 20;
+// Decoded images: pixels per side and RGBA8 bytes in all.
+constexpr int kMaxImageSide = 8192;
+constexpr size_t kMaxImageDecodedBytes = size_t(64) << 20;
+// glTF models: vertices and indices after node instancing and flat shading; the
+// images of one model decoded together.
+constexpr size_t kMaxModelVertices = size_t(4) << 20;
+constexpr size_t kMaxModelIndices = size_t(12) << 20;
+constexpr size_t kMaxModelImageBytes = size_t(128) << 20;
+// Replay scripts and hash logs: bytes, lines and bytes per line.
+constexpr size_t kMaxScriptFileBytes = size_t(16) << 20;
+constexpr size_t kMaxScriptLines = 1000000;
+constexpr size_t kMaxScriptLineBytes = 4096;
+// Binary world snapshots.
+constexpr size_t kMaxSnapshotBytes = size_t(256) << 20;
+
+// Lists in data files, each checked before its elements are read.
+constexpr size_t kMaxLevelShips = 256;
+constexpr size_t kMaxLevelProps = 1024;
+constexpr size_t kMaxLevelEffects = 1024;
+constexpr size_t kMaxEffectClusters = 64;
+constexpr size_t kMaxCurveKeys = 256;
+constexpr size_t kMaxEmitterTriangles = 4096;
+constexpr size_t kMaxShipPoints = 64;  // beam mounts, exhausts
+
+struct JsonLimits {
+  size_t max_bytes;         // the whole text
+  int max_depth;            // nested arrays and objects
+  size_t max_string_bytes;  // one string or key, as written (escapes counted as written)
+  size_t max_pointer_bytes; // one value's JSON pointer: /key/3/key..., keys as written
+  size_t max_objects;       // objects in the whole text (each costs a loader a struct)
+  const char* kind;         // for messages: "a data file (...) may be at most ..."
+};
+
+// Hand-written data files: 16 levels of nesting is twice what any of them uses.
+constexpr JsonLimits kDataJsonLimits{kMaxDataFileBytes, 16, 4096, 256, 65536,
+                                     "a data file (level, ship class, effect, settings, bindings)"};
+// The JSON of a glTF model: base64 buffers and images may fill the file; tinygltf records no
+// pointers, so deeper extras are fine; but it makes a struct of up to a few KB per object (node,
+// accessor, material...), so their number is what bounds its memory.
+constexpr JsonLimits kModelJsonLimits{kMaxModelFileBytes, 64, kMaxModelFileBytes, SIZE_MAX, 65536, "a glTF model"};
+
+// Throws InputError "path: file is N bytes; WHAT may be at most M bytes" when the file is larger
+// than `max_bytes`; a missing file passes (the reader reports it).
+void check_file_size(const std::string& path, size_t max_bytes, const std::string& what);
+// Throws InputError "path: N bytes; WHAT may be at most M bytes" for text already in memory.
+void check_text_size(size_t size, const std::string& path, size_t max_bytes, const std::string& what);
+// One linear pass over JSON text (comments allowed): throws InputError for text over the size
+// limit, then a positioned one at the first value nested too deep, string too long or pointer
+// too long. Syntax errors are left to the parser.
+void check_json_text(const char* text, size_t size, const std::string& path, const JsonLimits& limits);
+inline void check_json_text(const std::string& text, const std::string& path, const JsonLimits& limits) {
+  check_json_text(text.data(), text.size(), path, limits);
+}
+
+class JsonObject;
+class JsonValue;
+// Throws at the key's position when o[key] is an array of more than `max` elements.
+void check_list_length(const JsonObject& o, const std::string& key, size_t max);
+// Throws at the value's position when it is an array of more than `max` elements.
+void check_list_length(const JsonValue& v, size_t max);
+
+}  // namespace arc
