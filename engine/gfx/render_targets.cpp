@@ -151,6 +151,14 @@ void RenderTargets::resolve_opaque(const Program& hdr_resolve) const {
 
 void RenderTargets::copy_depth() const {
   // This frame's depth, never last frame's (Ribeiro: a stale copy flickers as the camera moves).
+  // Same format and size on both sides, so where GL 4.3's image copy exists it is a plain copy
+  // of texels (a memcpy on llvmpipe); a depth blit runs a draw through the blitter.
+  if (epoxy_gl_version() >= 43) {
+    glCopyImageSubData(scene_depth_, GL_RENDERBUFFER, 0, 0, 0, 0, copy_depth_, GL_TEXTURE_2D, 0, 0, 0, 0, scene_w_,
+                       scene_h_, 1);
+    glBindFramebuffer(GL_FRAMEBUFFER, scene_fbo_);
+    return;
+  }
   glBindFramebuffer(GL_READ_FRAMEBUFFER, scene_fbo_);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, copy_fbo_);
   glBlitFramebuffer(0, 0, scene_w_, scene_h_, 0, 0, scene_w_, scene_h_, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
