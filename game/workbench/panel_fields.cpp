@@ -58,7 +58,7 @@ double tidy(double v) { return std::round(v * 1000.0) / 1000.0; }
 
 void EffectPanel::draw(EffectDocument& doc) {
   drag_seen_ = false;
-  ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
+  ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);
   draw_block(doc, "", EffectBlock::Root);
   draw_clusters(doc);
   ImGui::PopItemWidth();

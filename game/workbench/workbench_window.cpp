@@ -31,7 +31,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr float kPanelWidth = 420.0f;
+constexpr float kPanelWidth = 460.0f;  // px: the longest field label with its unit fits beside its widget
 
 std::vector<std::string> effect_files(const std::string& root) {
   std::vector<std::string> files;
