@@ -7,10 +7,10 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <sstream>
 
 #include "core/error.h"
 #include "core/file_writer.h"
@@ -108,10 +108,9 @@ SessionRecorder::SessionRecorder(const std::string& path, const std::string& lev
   h.substeps = w.options.substeps;
   // The cull distance decides which clusters skip ticks, and that is in the hash.
   if (w.options.cull_distance != GameOptions{}.cull_distance) {
-    std::ostringstream d;
-    d.precision(17);  // read back to the same double
-    d << w.options.cull_distance;
-    h.settings.push_back({"particles.cull_distance", d.str()});
+    char text[32];  // the shortest text that reads back as the same double
+    char* end = std::to_chars(text, text + sizeof text, w.options.cull_distance).ptr;
+    h.settings.push_back({"particles.cull_distance", std::string(text, size_t(end - text))});
   }
   const std::string header = replay::header_text(h) + "# recorded live session\n";
   lock();

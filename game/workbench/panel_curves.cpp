@@ -68,6 +68,23 @@ int key_under(const std::vector<Key>& keys, Pos pos, ImVec2 mouse) {
 
 }  // namespace
 
+template <class Key>
+void CurveEditors::click_keys(const std::string& id, std::vector<Key>& keys, int under, bool hovered, const Key& fresh,
+                              CurveEdit& edit) {
+  if (under >= 0 && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+    drag_id_ = id, drag_key_ = under, selected_id_ = id, selected_key_ = under;
+  } else if (under >= 0 && ImGui::IsMouseClicked(ImGuiMouseButton_Right) && keys.size() > 1) {
+    keys.erase(keys.begin() + under);
+    edit.changed = true;
+    selected_key_ = -1;
+  } else if (under < 0 && hovered && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
+    const size_t at = insert_at(keys, fresh.t);
+    keys.insert(keys.begin() + long(at), fresh);
+    edit.changed = true;
+    selected_id_ = id, selected_key_ = int(at);
+  }
+}
+
 // Long: drawing, hit-testing and the three gestures of one editor read best in one place.
 CurveEdit CurveEditors::value_curve(const std::string& id, std::vector<GraphKey>& keys, double lo, double hi) {
   CurveEdit edit;
@@ -89,18 +106,7 @@ CurveEdit CurveEditors::value_curve(const std::string& id, std::vector<GraphKey>
   const double mt = std::clamp(double((mouse.x - o.x) / size.x), 0.0, 1.0);
   const double mv = std::clamp(lo + double((o.y + size.y - mouse.y) / size.y) * (top - lo), lo, hi);
   const int under = hovered ? key_under(keys, pos, mouse) : -1;
-  if (under >= 0 && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
-    drag_id_ = id, drag_key_ = under, selected_id_ = id, selected_key_ = under;
-  } else if (under >= 0 && ImGui::IsMouseClicked(ImGuiMouseButton_Right) && keys.size() > 1) {
-    keys.erase(keys.begin() + under);
-    edit.changed = true;
-    selected_key_ = -1;
-  } else if (under < 0 && hovered && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
-    const size_t at = insert_at(keys, mt);
-    keys.insert(keys.begin() + long(at), GraphKey{mt, mv});
-    edit.changed = true;
-    selected_id_ = id, selected_key_ = int(at);
-  }
+  click_keys(id, keys, under, hovered, GraphKey{mt, mv}, edit);
   if (drag_id_ == id && drag_key_ >= 0) {
     if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
       drag_key_ = -1;
@@ -159,18 +165,7 @@ CurveEdit CurveEditors::colour_curve(const std::string& id, std::vector<ColourKe
   int under = -1;
   for (int i = 0; hovered && i < int(keys.size()); ++i)
     if (std::abs(pos(keys[size_t(i)]).x - mouse.x) <= kGrab && mouse.y >= marker_y - kGrab) under = i;
-  if (under >= 0 && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
-    drag_id_ = id, drag_key_ = under, selected_id_ = id, selected_key_ = under;
-  } else if (under >= 0 && ImGui::IsMouseClicked(ImGuiMouseButton_Right) && keys.size() > 1) {
-    keys.erase(keys.begin() + under);
-    edit.changed = true;
-    selected_key_ = -1;
-  } else if (under < 0 && hovered && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
-    const size_t at = insert_at(keys, mt);
-    keys.insert(keys.begin() + long(at), ColourKey{mt, colour_at(keys, mt)});
-    edit.changed = true;
-    selected_id_ = id, selected_key_ = int(at);
-  }
+  click_keys(id, keys, under, hovered, ColourKey{mt, colour_at(keys, mt)}, edit);
   if (drag_id_ == id && drag_key_ >= 0) {
     if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
       drag_key_ = -1;

@@ -34,6 +34,12 @@ class CurveEditors {
   CurveEdit colour_curve(const std::string& id, std::vector<ColourKey>& keys, double hi);
 
  private:
+  // The clicks both editors share: left on a key takes it, right on a key removes it (one stays),
+  // a double click off the keys inserts `fresh` at its time.
+  template <class Key>
+  void click_keys(const std::string& id, std::vector<Key>& keys, int under, bool hovered, const Key& fresh,
+                  CurveEdit& edit);
+
   std::string drag_id_;   // the editor whose key is held
   int drag_key_ = -1;
   double drag_top_ = 1.0; // the graph's top value, fixed while a key is held

@@ -35,18 +35,6 @@ namespace {
 
 constexpr int kWidth = 1280, kHeight = 720;
 
-int rounds_from_env() {
-  const char* v = std::getenv("ARCFIRE_BENCH_ROUNDS");
-  if (!v) return 32;
-  char* end = nullptr;
-  const long n = std::strtol(v, &end, 10);
-  if (end == v || *end != '\0' || n < 1 || n > 10000) {
-    std::fprintf(stderr, "arcfire-bench: ARCFIRE_BENCH_ROUNDS='%s' is not allowed; use a whole number from 1 to 10000\n", v);
-    std::exit(2);
-  }
-  return int(n);
-}
-
 struct Config {
   std::string name;
   Renderer* renderer;
@@ -185,7 +173,7 @@ void measure_clipping(Renderer& r) {
 }  // namespace
 
 ARCFIRE_SCENE(render_look) {
-  const int rounds = rounds_from_env();
+  const int rounds = bench::rounds_from_env(32);
   const std::unique_ptr<HeadlessContext> ctx = bench::context_or_skip();
   if (!ctx) return;
   RendererDesc desc{.offscreen = true};

@@ -88,12 +88,7 @@ struct BenchEnv {
 
 BenchEnv read_env() {
   BenchEnv e;
-  if (const char* v = std::getenv("ARCFIRE_BENCH_ROUNDS")) {
-    char* end = nullptr;
-    const long n = std::strtol(v, &end, 10);
-    if (end == v || *end != '\0' || n < 1 || n > 10000) bad_env("ARCFIRE_BENCH_ROUNDS", v, "a whole number from 1 to 10000");
-    e.rounds = int(n);
-  }
+  e.rounds = bench::rounds_from_env(e.rounds);
   if (const char* v = std::getenv("ARCFIRE_BENCH_FILTER")) {
     const std::string f = v;
     if (f == "nearest") e.filter = RenderSettings::Filter::Nearest;

@@ -1,6 +1,7 @@
 #include "bench_scenes.h"
 
 #include <cstdio>
+#include <cstdlib>
 
 #include "game/app/scene_resources.h"
 #include "game/render/render_view_builder.h"
@@ -30,6 +31,18 @@ std::unique_ptr<HeadlessContext> context_or_skip() {
     std::printf("skipped: no EGL context (%s)\n", e.what());
     return nullptr;
   }
+}
+
+int rounds_from_env(int fallback) {
+  const char* v = std::getenv("ARCFIRE_BENCH_ROUNDS");
+  if (!v) return fallback;
+  char* end = nullptr;
+  const long n = std::strtol(v, &end, 10);
+  if (end == v || *end != '\0' || n < 1 || n > 10000) {
+    std::fprintf(stderr, "arcfire-bench: ARCFIRE_BENCH_ROUNDS='%s' is not allowed; use a whole number from 1 to 10000\n", v);
+    std::exit(2);
+  }
+  return int(n);
 }
 
 }  // namespace arc::bench

@@ -63,18 +63,6 @@ constexpr int kWidth = 1280, kHeight = 720;
 const char* const kQuality = ARCFIRE_SOURCE_DIR "/assets/settings/quality.json";
 const char* const kPresets[] = {"low", "medium", "high", "reference"};
 
-int rounds_from_env() {
-  const char* v = std::getenv("ARCFIRE_BENCH_ROUNDS");
-  if (!v) return 3;
-  char* end = nullptr;
-  const long n = std::strtol(v, &end, 10);
-  if (end == v || *end != '\0' || n < 1 || n > 10000) {
-    std::fprintf(stderr, "arcfire-bench: ARCFIRE_BENCH_ROUNDS='%s' is not allowed; use a whole number from 1 to 10000\n", v);
-    std::exit(2);
-  }
-  return int(n);
-}
-
 Settings preset(const std::string& name) {
   Settings s = Settings::defaults();
   s.apply_preset_file(kQuality, name);
@@ -443,7 +431,7 @@ void print_tables(const std::vector<Row>& render, const std::vector<Row>& sim) {
 }  // namespace
 
 ARCFIRE_SCENE(tradeoffs) {
-  const int rounds = rounds_from_env();
+  const int rounds = bench::rounds_from_env(3);
   std::vector<Row> sim = sim_rows();
   std::printf(" simulation: levels/arena.json, 600 ticks, %zu configurations interleaved\n", sim.size());
   measure_simulation(sim);
