@@ -61,6 +61,44 @@ double OverdrawBudget::log_cap_of(uint32_t cluster) const {
   return it != caps_.end() && it->first == cluster ? it->second : std::nan("");
 }
 
+// A camera-facing quad lies in the view plane at its centre's depth (particle.vert turns it
+// there), so its screen box is exact: the centre projected, half-widths grown by the rotation's
+// |cos| + |sin|.
+void OverdrawBudget::set_facing_box(Footprint& f, const glm::vec3& c, float rotation, float ppu, const OverdrawFrame& frame) {
+  const float turn = std::abs(std::cos(rotation)) + std::abs(std::sin(rotation));
+  f.x = 0.5f * float(frame.width) + c.x * ppu;
+  f.y = 0.5f * float(frame.height) + c.y * ppu;
+  f.hx = f.hy = f.w_px * turn;
+  f.past_near = false;
+}
+
+// An axis-locked quad tilts in depth along its segment, so its four corners (as particle.vert
+// places them) are projected one by one; a corner at or behind the near plane leaves the box
+// unbounded.
+void OverdrawBudget::set_segment_box(Footprint& f, const glm::vec3& c, const glm::vec3& across, const glm::vec3& to_p,
+                                     const OverdrawFrame& frame) {
+  const float a_len = glm::length(across);
+  const glm::vec3 up = across / a_len;
+  const glm::vec3 right = glm::normalize(glm::cross(up, to_p));
+  const float half_long = 0.5f * a_len + f.size;
+  const float focal = 0.5f * float(frame.height) / std::max(frame.tan_half_y, 1e-6f);
+  float x0 = 1e30f, x1 = -1e30f, y0 = 1e30f, y1 = -1e30f;
+  f.past_near = false;
+  for (int k = 0; k < 4; ++k) {
+    const glm::vec3 q = c + right * ((k & 1) ? f.size : -f.size) + up * ((k & 2) ? half_long : -half_long);
+    if (!(-q.z > frame.near)) f.past_near = true;
+    const float s = focal / std::max(-q.z, 1e-6f);
+    x0 = std::min(x0, q.x * s);
+    x1 = std::max(x1, q.x * s);
+    y0 = std::min(y0, q.y * s);
+    y1 = std::max(y1, q.y * s);
+  }
+  f.x = 0.5f * float(frame.width) + 0.5f * (x0 + x1);
+  f.y = 0.5f * float(frame.height) + 0.5f * (y0 + y1);
+  f.hx = 0.5f * (x1 - x0);
+  f.hy = 0.5f * (y1 - y0);
+}
+
 // The footprint of every particle (fp_), the candidates whose cap can bind, and the area of
 // the rest; returns the estimated blended pixels.
 double OverdrawBudget::estimate(const std::vector<ParticleInstance>& particles, const OverdrawFrame& frame,
@@ -82,12 +120,13 @@ double OverdrawBudget::estimate(const std::vector<ParticleInstance>& particles, 
     f.w_px = f.size * ppu;
     f.half_axis_px = 0;
     glm::vec2 dir(0.0f, 1.0f);
+    glm::vec3 across(0.0f), to_p(0.0f, 0.0f, -1.0f);
     if (p.billboard == uint8_t(Billboard::AxisLocked)) {
       // particle.vert: the part of the segment seen across the view sets the quad's length.
       const glm::vec3 a = frame.to_view * glm::vec3(p.axis[0], p.axis[1], p.axis[2]);
       const float len_c = glm::length(c);
-      const glm::vec3 to_p = len_c > 1e-6f ? c / len_c : glm::vec3(0, 0, -1);
-      const glm::vec3 across = a - glm::dot(a, to_p) * to_p;
+      if (len_c > 1e-6f) to_p = c / len_c;
+      across = a - glm::dot(a, to_p) * to_p;
       const float a_len = glm::length(across);
       if (a_len > 1e-6f * std::max(1.0f, glm::length(a))) {
         f.half_axis_px = 0.5f * a_len * ppu;
@@ -98,6 +137,8 @@ double OverdrawBudget::estimate(const std::vector<ParticleInstance>& particles, 
     const float len = f.half_axis_px + f.w_px;
     const float hx = std::abs(dir.x) * len + std::abs(dir.y) * f.w_px;
     const float hy = std::abs(dir.y) * len + std::abs(dir.x) * f.w_px;
+    if (f.half_axis_px > 0.0f) set_segment_box(f, c, across, to_p, frame);
+    else set_facing_box(f, c, p.rotation, ppu, frame);
     const float sx = 0.5f * W + c.x * ppu, sy = 0.5f * H - c.y * ppu;
     const float box = std::max(4.0f * hx * hy, 1e-12f);
     f.frac = std::min(1.0f, overlap(sx, hx, W) * overlap(sy, hy, H) / box);
@@ -181,6 +222,13 @@ OverdrawStats OverdrawBudget::apply(std::vector<ParticleInstance>& particles, st
   areas.resize(kept);
   s.budgeted_layers /= screen;
   return s;
+}
+
+void OverdrawBudget::mark_coverage(ParticleCoverage& coverage) const {
+  for (const Footprint& f : fp_) {
+    if (f.past_near) coverage.add_whole_screen();
+    else coverage.add_box(f.x, f.y, f.hx, f.hy);
+  }
 }
 
 }  // namespace arc

@@ -40,6 +40,7 @@
 
 #include <glm/mat3x3.hpp>
 
+#include "gfx/particle_coverage.h"
 #include "particles/render_output.h"
 
 namespace arc {
@@ -76,6 +77,9 @@ class OverdrawBudget {
   // estimated blended pixels, in the order of `particles` (dropped ones are erased from both).
   OverdrawStats apply(std::vector<ParticleInstance>& particles, std::vector<float>& areas, const OverdrawFrame& frame,
                       const OverdrawOptions& options);
+  // Marks the screen box of every particle the last apply() was given (before any reduction,
+  // which only shrinks them): the tiles the frame's particles can touch.
+  void mark_coverage(ParticleCoverage& coverage) const;
   // Forgets the smoothing (the next frame starts from its own solution).
   void reset() { has_state_ = false; }
 
@@ -87,7 +91,12 @@ class OverdrawBudget {
     float frac;          // share of the quad's bounding box on screen
     float threshold;     // the k below which its cap binds
     float area;          // blended pixels unreduced
+    float x, y, hx, hy;  // screen box: centre (GL window pixels, y up) and half-extents, unreduced
+    bool past_near;      // axis-locked and may reach past the near plane: its projection is unbounded
   };
+  static void set_facing_box(Footprint& f, const glm::vec3& c, float rotation, float ppu, const OverdrawFrame& frame);
+  static void set_segment_box(Footprint& f, const glm::vec3& c, const glm::vec3& across, const glm::vec3& to_p,
+                              const OverdrawFrame& frame);
   double area_at(uint32_t i, double k) const;
   double total_area(const std::vector<uint32_t>& set, double k) const;
   double solve(const std::vector<uint32_t>& set, double budget_px, double k_lo, double k_hi) const;

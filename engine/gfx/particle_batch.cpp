@@ -75,6 +75,8 @@ void ParticleBatch::prepare(const RenderView& v, const ViewProjection& vp, const
   const OverdrawFrame frame{glm::mat3(vp.view), 1.0f / vp.proj[1][1], float(v.camera.near_plane), options.size_clamp,
                             options.width, options.height, v.time_seconds};
   overdraw = budget_.apply(particles, areas, frame, options.overdraw);
+  coverage.reset(options.width, options.height);
+  budget_.mark_coverage(coverage);
   visible = int(particles.size());
   if (particles.empty()) return;
   keys_.clear();

@@ -21,6 +21,7 @@
 
 #include "gfx/cover_boxes.h"
 #include "gfx/overdraw_budget.h"
+#include "gfx/particle_coverage.h"
 #include "gfx/particle_runs.h"
 #include "gfx/particle_occluders.h"
 #include "gfx/render_settings.h"
@@ -45,6 +46,7 @@ struct ParticleBatch {
   std::vector<ParticleInstance> particles;
   std::vector<float> areas;
   std::vector<ParticleRun> runs;  // spans of `particles`, one draw each
+  ParticleCoverage coverage;      // the scene tiles the particles can touch (particle_coverage.h)
   OverdrawStats overdraw;
   int visible = 0;           // kept before the draw limit (FrameStats::particles_drawn)
   int culled_offscreen = 0;  // quad wholly outside a side of the frustum

@@ -12,6 +12,7 @@ ParticleTarget::~ParticleTarget() {
   glDeleteRenderbuffers(1, &depth_);
   glDeleteFramebuffers(1, &fbo_);
   glDeleteVertexArrays(1, &vao_);
+  glDeleteBuffers(1, &vbo_);
 }
 
 void ParticleTarget::allocate(int w, int h, GLenum color_format) {
@@ -20,6 +21,12 @@ void ParticleTarget::allocate(int w, int h, GLenum color_format) {
     glGenTextures(1, &color_);
     glGenRenderbuffers(1, &depth_);
     glGenVertexArrays(1, &vao_);
+    glGenBuffers(1, &vbo_);
+    glBindVertexArray(vao_);
+    glBindBuffer(GL_ARRAY_BUFFER, vbo_);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
+    glBindVertexArray(0);
   }
   w_ = w;
   h_ = h;
@@ -51,9 +58,19 @@ void ParticleTarget::begin(GLuint scene_fbo, int scene_w, int scene_h, GLenum co
   glClear(GL_COLOR_BUFFER_BIT);
 }
 
-void ParticleTarget::composite(const Program& program, GLuint scene_fbo, int scene_w, int scene_h) const {
+void ParticleTarget::composite(const Program& program, GLuint scene_fbo, int scene_w, int scene_h,
+                               const std::vector<PixelRect>& rects) {
+  // Two triangles a rectangle; edges on whole pixels, so neighbours neither overlap nor gap.
+  vertices_.clear();
+  const float sx = 2.0f / float(scene_w), sy = 2.0f / float(scene_h);
+  for (const PixelRect& r : rects) {
+    const float x0 = float(r.x0) * sx - 1.0f, x1 = float(r.x1) * sx - 1.0f;
+    const float y0 = float(r.y0) * sy - 1.0f, y1 = float(r.y1) * sy - 1.0f;
+    vertices_.insert(vertices_.end(), {x0, y0, x1, y0, x0, y1, x0, y1, x1, y0, x1, y1});
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, scene_fbo);
   glViewport(0, 0, scene_w, scene_h);
+  if (vertices_.empty()) return;
   glDisable(GL_DEPTH_TEST);
   glDepthMask(GL_FALSE);
   glEnable(GL_BLEND);
@@ -64,7 +81,9 @@ void ParticleTarget::composite(const Program& program, GLuint scene_fbo, int sce
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, color_);
   glBindVertexArray(vao_);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindBuffer(GL_ARRAY_BUFFER, vbo_);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices_.size() * sizeof(float)), vertices_.data(), GL_STREAM_DRAW);
+  glDrawArrays(GL_TRIANGLES, 0, GLsizei(vertices_.size() / 2));
   glDisable(GL_BLEND);
   glDepthMask(GL_TRUE);
 }

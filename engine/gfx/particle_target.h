@@ -9,15 +9,20 @@
 // with GL_ONE, GL_SRC_ALPHA gives S + T·scene: exactly the chained blend of every particle over
 // the scene, evaluated at half resolution and filtered up bilinearly. The depth test uses the
 // scene's depth taken down to half size (one sample per 2×2), soft edges read the full depth
-// copy, so particles can bleed by a pixel over a mesh's outline.
+// copy, so particles can bleed by a pixel over a mesh's outline. The composite covers only the
+// rectangles it is given (ParticleCoverage: the tiles a particle can touch); elsewhere the
+// target holds its clear value and would change nothing.
 //
 //   ParticleTarget half;
 //   half.begin(targets.scene_fbo(), scene_w, scene_h, targets.scene_internal_format());
 //   ... particle draws with ParticleFrame::transmittance_alpha = true ...
-//   half.composite(programs.particle_composite, targets.scene_fbo(), scene_w, scene_h);
+//   half.composite(programs.particle_composite, targets.scene_fbo(), scene_w, scene_h, rects);
 #pragma once
 #include <epoxy/gl.h>
 
+#include <vector>
+
+#include "gfx/particle_coverage.h"
 #include "gfx/shader_programs.h"
 
 namespace arc {
@@ -34,12 +39,14 @@ class ParticleTarget {
   void begin(GLuint scene_fbo, int scene_w, int scene_h, GLenum color_format);
   int width() const { return w_; }
   int height() const { return h_; }
-  // Puts the target over the scene (S + T·scene) and leaves the scene bound.
-  void composite(const Program& program, GLuint scene_fbo, int scene_w, int scene_h) const;
+  // Puts the target over the scene (S + T·scene) inside `rects` (scene pixels) and leaves the
+  // scene bound.
+  void composite(const Program& program, GLuint scene_fbo, int scene_w, int scene_h, const std::vector<PixelRect>& rects);
 
  private:
   void allocate(int w, int h, GLenum color_format);
-  GLuint fbo_ = 0, color_ = 0, depth_ = 0, vao_ = 0;
+  GLuint fbo_ = 0, color_ = 0, depth_ = 0, vao_ = 0, vbo_ = 0;
+  std::vector<float> vertices_;  // the rectangles' triangles, NDC, rebuilt each frame
   int w_ = 0, h_ = 0;
   GLenum format_ = 0;
 };

@@ -81,6 +81,7 @@ struct Renderer::Impl {
   ParticleBatch batch;  // CPU only, kept for its buffers
   ParticlePass particles;
   ParticleTarget half_particles;
+  std::vector<PixelRect> composite_rects;  // where the half-resolution target is put over the scene
   bool half_res = false;  // this frame's particles at half resolution (kept between frames for Auto's hysteresis)
   BloomPass bloom;
   PostPass post;
@@ -271,8 +272,10 @@ void Renderer::Impl::draw_particles(const RenderView& v, const ViewProjection& v
   stats.particle_target_pixels = double(frame.scene_width) * double(frame.scene_height);
   int draws = particles.draw(batch, programs, rs, frame, &stats.particle_fragments);
   if (half_res) {
+    batch.coverage.rects(composite_rects);
     half_particles.composite(programs.particle_composite, targets.scene_fbo(), targets.scene_width(),
-                             targets.scene_height());
+                             targets.scene_height(), composite_rects);
+    stats.composite_share = batch.coverage.share();
     ++draws;
   }
   stats.draw_calls += draws;

@@ -63,6 +63,7 @@ struct FrameStats {
   int particles_dropped = 0;
   double overdraw_cap = 0;
   bool particles_half_res = false;    // drawn at half resolution (render.particle_resolution)
+  double composite_share = 0;         // share of the screen the half-resolution composite covered
   double particle_target_pixels = 0;  // pixels of the target the particles blended into (a quarter with half resolution)
   int msaa_samples = 0;        // samples of the opaque pass (0: no MSAA; drivers may give more than asked)
   double particle_prep_ms = 0; // culling, soft-edge flags and sorting, before any GL call

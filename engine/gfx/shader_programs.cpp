@@ -130,7 +130,7 @@ void ShaderPrograms::build_all() {
                         {&tonemap_bloom, "post.vert", "tonemap.frag", "#define BLOOM 1\n"},
                         {&fxaa, "post.vert", "fxaa.frag", ""},
                         {&msaa_resolve, "post.vert", "msaa_resolve.frag", ""},
-                        {&particle_composite, "post.vert", "particle_composite.frag", ""}};
+                        {&particle_composite, "particle_composite.vert", "particle_composite.frag", ""}};
   std::vector<GLuint> built;
   for (auto& s : specs) built.push_back(build_program(dir_, s.vs, s.fs, s.defines, err));
   bool all = std::all_of(built.begin(), built.end(), [](GLuint id) { return id != 0; });
