@@ -102,6 +102,7 @@ void define_options(CLI::App& app, AppOptions& o, CommandLineText& t) {
   app.add_flag("--fullscreen", o.fullscreen, "start in fullscreen (F11 or Alt+Enter toggles)");
   app.add_flag("--no-vsync", t.no_vsync, "do not wait for vertical sync");
   app.add_flag("--fps", o.show_fps, "show the FPS counter (F3 toggles)");
+  app.add_option("--frame-times", o.frame_times_path, "window: write each frame's time to this CSV file and print the percentiles at exit");
   app.add_option("--workbench", o.workbench_effect,
                  "open the effect workbench on an effect file (default: the first in assets/effects)")
       ->expected(0, 1);
@@ -163,6 +164,9 @@ void resolve_options(const CLI::App& app, const CommandLineText& t, AppOptions& 
   // are checked by the modes that write them.
   if (!o.audio_out.empty()) check_output_file(o.audio_out, "--audio-out");
   if (!o.record_path.empty()) check_output_file(o.record_path, "--record");
+  if (!o.frame_times_path.empty() && (o.headless || !o.replay_path.empty()))
+    throw InputError("--frame-times: only in a window, not with --headless or --replay");
+  if (!o.frame_times_path.empty()) check_output_file(o.frame_times_path, "--frame-times");
   resolve_preview_options(app, o);
   o.workbench = app.get_option("--workbench")->count() > 0;
   if (o.workbench && (o.headless || !o.replay_path.empty())) throw InputError("--workbench: a window of its own, not with --headless or --replay");

@@ -22,6 +22,7 @@ struct AppOptions {
   std::string out_dir;
   std::string summary_path;
   std::string record_path;
+  std::string frame_times_path;  // --frame-times: one CSV line per window frame (app/frame_time_log.h)
   std::string replay_path;
   std::string menu_script;  // --menu-script: the menu headless, driven by scripted UI inputs
   bool workbench = false;   // --workbench: the effect workbench window

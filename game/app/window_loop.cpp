@@ -11,6 +11,7 @@
 #include "core/error.h"
 #include "game/app/audio_session.h"
 #include "game/app/file_watcher.h"
+#include "game/app/frame_time_log.h"
 #include "game/app/input_bindings.h"
 #include "game/app/menu.h"
 #include "game/app/menu_input.h"
@@ -87,6 +88,8 @@ class WindowSession {
   void setup();
   bool open() const { return !window_->should_close(); }
   double time() const { return window_->time_seconds(); }
+  int64_t tick() const { return int64_t(game_->world().tick); }
+  FrameStats frame_stats() const { return renderer_->last_stats(); }
   bool write_failed() const { return write_failed_ || (recorder_ && recorder_->failed()); }
   // One frame's work before drawing: devices to input and actions, the pause menu, reloads of
   // changed files, and the fixed-step ticks that `frame_seconds` of wall clock owe.
@@ -564,13 +567,16 @@ int run_window(const AppOptions& o) {
   }
   WindowSession session(o);
   session.setup();
+  FrameTimeLog frame_times(o.frame_times_path);
   double last = session.time();
   while (session.open()) {
     const double now = session.time();
     session.update(now - last);
-    last = now;
     session.draw();
+    frame_times.frame(now - last, now, session.tick(), session.frame_stats());
+    last = now;
   }
+  frame_times.finish();
   return session.write_failed() ? kExitCheckFailed : kExitOk;
 }
 
