@@ -12,10 +12,9 @@ namespace arc {
 RenderTargets::RenderTargets(bool offscreen, bool float_scene) : offscreen_(offscreen), float_scene_(float_scene) {}
 
 RenderTargets::~RenderTargets() {
-  GLuint tex[] = {scene_color_, copy_depth_, target_color_, ms_color_};
-  glDeleteTextures(4, tex);
-  GLuint rbs[] = {scene_depth_, ms_depth_};
-  glDeleteRenderbuffers(2, rbs);
+  GLuint tex[] = {scene_color_, scene_depth_, copy_depth_, target_color_, ms_color_};
+  glDeleteTextures(5, tex);
+  glDeleteRenderbuffers(1, &ms_depth_);
   glDeleteVertexArrays(1, &resolve_vao_);
   GLuint fbos[] = {scene_fbo_, copy_fbo_, target_fbo_, ms_fbo_};
   glDeleteFramebuffers(4, fbos);
@@ -39,7 +38,7 @@ void RenderTargets::allocate_scene(int sw, int sh) {
     glGenFramebuffers(1, &scene_fbo_);
     glGenFramebuffers(1, &copy_fbo_);
     glGenTextures(1, &scene_color_);
-    glGenRenderbuffers(1, &scene_depth_);
+    glGenTextures(1, &scene_depth_);
     glGenTextures(1, &copy_depth_);
   }
   // Float scenes of tests keep RGBA16F (NaN and infinity survive, alpha is kept); HDR takes the
@@ -53,12 +52,14 @@ void RenderTargets::allocate_scene(int sw, int sh) {
   glTexImage2D(GL_TEXTURE_2D, 0, GLint(scene_internal_), sw, sh, 0, is_float ? GL_RGB : GL_RGBA,
                is_float ? GL_FLOAT : GL_UNSIGNED_BYTE, nullptr);
   set_target_sampling(GL_TEXTURE_2D, GL_LINEAR);
-  // Float depth in both modes: reversed-Z needs it, and the copy must match the format.
-  glBindRenderbuffer(GL_RENDERBUFFER, scene_depth_);
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, sw, sh);
+  // Float depth in both modes: reversed-Z needs it, and the copy must match the format. A
+  // texture, so that particles drawn into another target (half resolution) sample it as it is.
+  glBindTexture(GL_TEXTURE_2D, scene_depth_);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT32F, sw, sh, 0, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
+  set_target_sampling(GL_TEXTURE_2D, GL_NEAREST);
   glBindFramebuffer(GL_FRAMEBUFFER, scene_fbo_);
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, scene_color_, 0);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, scene_depth_);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, scene_depth_, 0);
   if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
     throw std::runtime_error("scene framebuffer incomplete");
   glBindTexture(GL_TEXTURE_2D, copy_depth_);
@@ -154,7 +155,7 @@ void RenderTargets::copy_depth() const {
   // Same format and size on both sides, so where GL 4.3's image copy exists it is a plain copy
   // of texels (a memcpy on llvmpipe); a depth blit runs a draw through the blitter.
   if (epoxy_gl_version() >= 43) {
-    glCopyImageSubData(scene_depth_, GL_RENDERBUFFER, 0, 0, 0, 0, copy_depth_, GL_TEXTURE_2D, 0, 0, 0, 0, scene_w_,
+    glCopyImageSubData(scene_depth_, GL_TEXTURE_2D, 0, 0, 0, 0, copy_depth_, GL_TEXTURE_2D, 0, 0, 0, 0, scene_w_,
                        scene_h_, 1);
     glBindFramebuffer(GL_FRAMEBUFFER, scene_fbo_);
     return;

@@ -70,6 +70,9 @@ class RenderTargets {
   // Blits the scene's depth into the depth copy, then binds the scene framebuffer again.
   void copy_depth() const;
   GLuint depth_copy() const { return copy_depth_; }
+  // The scene's own depth texture: particles drawn into another target (half resolution)
+  // sample it directly, with no copy, since it is not attached where they draw.
+  GLuint scene_depth() const { return scene_depth_; }
   // Scales the scene colour into the window or the offscreen target (linear filtering unless
   // the sizes match) and leaves that bound with a width × height viewport.
   void resolve(int width, int height) const;

@@ -256,12 +256,16 @@ void Renderer::Impl::draw_particles(const RenderView& v, const ViewProjection& v
   }
   particles.upload(batch.particles);
   timers.begin_particle_pass();
-  if (batch.any_soft) {
+  // Soft edges read this frame's opaque depth. Particles drawn at full resolution test against
+  // the scene's depth buffer, so they read a copy; at half resolution they test against the
+  // half target's own depth and read the scene's depth texture as it is.
+  if (batch.any_soft && !half_res) {
     targets.copy_depth();
     stats.depth_copied = true;
   }
-  ParticleFrame frame{vp, v.camera.fov_y_radians, float(v.camera.near_plane), targets.depth_copy(),
-                      targets.scene_width(), targets.scene_height()};
+  ParticleFrame frame{vp, v.camera.fov_y_radians, float(v.camera.near_plane),
+                      half_res ? targets.scene_depth() : targets.depth_copy(), targets.scene_width(),
+                      targets.scene_height()};
   if (half_res) {
     half_particles.begin(targets.scene_fbo(), targets.scene_width(), targets.scene_height(),
                          targets.scene_internal_format());

@@ -50,7 +50,8 @@ struct FrameStats {
   int culled_offscreen = 0;  // particles whose quad lies wholly outside the view frustum's sides
   int over_draw_limit = 0;   // farthest particles left out: more than one buffer texture holds
   int sorted = 0;            // particles put in back-to-front order
-  bool depth_copied = false; // the soft-edge depth copy ran this frame
+  bool depth_copied = false; // the soft-edge depth copy ran this frame (full resolution only: at half
+                             // resolution soft edges read the scene depth itself)
   int soft_shaded = 0;       // particles that read the depth copy: soft edges on and an opaque
                              // mesh within their reach (the others' soft factor is exactly 1)
   int draw_calls = 0;

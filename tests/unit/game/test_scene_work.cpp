@@ -49,7 +49,7 @@ DepthCopies gallery_depth_copies(const std::string& soft_edges) {
     ++out.frames;
     out.copied += st.depth_copied;
     out.needed += st.soft_shaded > 0;
-    out.mismatched += st.depth_copied != (st.soft_shaded > 0);
+    out.mismatched += st.depth_copied != (st.soft_shaded > 0 && !st.particles_half_res);
   }
   return out;
 }
