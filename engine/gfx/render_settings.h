@@ -28,6 +28,7 @@ struct RenderSettings {
   float contrast_power = 2.0f;
   bool sky_exact = false;    // the nebula evaluated per pixel every frame, not looked up in a baked cube map
   int sky_resolution = 256;  // texels along a face of the baked cube map (16..1024)
+  int sky_grid = 0;          // baked sky looked up every N pixels and interpolated (0: every pixel; 0..64)
   // Screen layers of particle blending a frame may estimate before the nearest and largest
   // particles are shrunk, faded and dropped (overdraw_budget.h); 0: no budget.
   float overdraw_budget = 0.0f;

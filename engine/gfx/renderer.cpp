@@ -144,6 +144,7 @@ void Renderer::apply_settings(const Settings& s) {
   r.contrast_power = float(s.number("render.contrast_power"));
   r.sky_exact = s.choice("render.sky") == "exact";
   r.sky_resolution = int(s.integer("render.sky_resolution"));
+  r.sky_grid = int(s.integer("render.sky_grid"));
   r.overdraw_budget = float(s.number("render.overdraw_budget"));
   r.overdraw_near = float(s.number("render.overdraw_near"));
   const std::string& pr = s.choice("render.particle_resolution");
@@ -168,6 +169,7 @@ void Renderer::set_render_settings(const RenderSettings& s) {
   if (!m.clip_control) m.rs.reversed_z = false;
   m.rs.scale = std::clamp(m.rs.scale, 0.1, 4.0);
   m.rs.sky_resolution = std::clamp(m.rs.sky_resolution, 16, 1024);
+  m.rs.sky_grid = std::clamp(m.rs.sky_grid, 0, 64);
   m.rs.exposure = std::clamp(m.rs.exposure, 0.05f, 16.0f);
   m.rs.bloom = std::clamp(m.rs.bloom, 0.0f, 4.0f);
   m.particles.set_texture_filter(m.rs.filter);

@@ -89,7 +89,7 @@ ShaderPrograms::ShaderPrograms(std::string shader_dir) : dir_(std::move(shader_d
 }
 
 ShaderPrograms::~ShaderPrograms() {
-  for (Program* p : {&sky, &sky_exact, &stars, &mesh, &hud, &particle_hard, &particle_soft, &particle_contrast,
+  for (Program* p : {&sky, &sky_exact, &sky_grid, &stars, &mesh, &hud, &particle_hard, &particle_soft, &particle_contrast,
                      &particle_square, &bloom_prefilter, &bloom_down_karis, &bloom_down, &bloom_up, &tonemap, &tonemap_bloom, &fxaa, &msaa_resolve, &particle_composite})
     glDeleteProgram(p->id);
 }
@@ -113,6 +113,7 @@ void ShaderPrograms::build_all() {
   };
   const Spec specs[] = {{&sky, "sky.vert", "sky.frag", ""},
                         {&sky_exact, "sky.vert", "sky_exact.frag", ""},
+                        {&sky_grid, "sky_grid.vert", "sky_grid.frag", ""},
                         {&stars, "stars.vert", "stars.frag", ""},
                         {&mesh, "mesh.vert", "mesh.frag", ""},
                         {&particle_hard, "particle.vert", "particle.frag", "#define SOFT 0\n#define CONTRAST 0\n"},

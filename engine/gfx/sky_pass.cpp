@@ -135,7 +135,8 @@ int SkyPass::draw(const RenderView& v, const ShaderPrograms& programs, const Vie
   if (!rs.sky_exact && (cube.seed != star_seed_ || cube.size != rs.sky_resolution ||
                         cube.shader_generation != programs.generation()))
     bake(programs, rs.sky_resolution, rs.hdr);
-  const Program& p = rs.sky_exact ? programs.sky_exact : programs.sky;
+  const bool grid = !rs.sky_exact && rs.sky_grid > 0;
+  const Program& p = rs.sky_exact ? programs.sky_exact : grid ? programs.sky_grid : programs.sky;
   glUseProgram(p.id);
   double ty = std::tan(v.camera.fov_y_radians * 0.5);
   set_uniforms(p, vp.camera_basis, float(ty * vp.aspect), float(ty));
@@ -145,7 +146,15 @@ int SkyPass::draw(const RenderView& v, const ShaderPrograms& programs, const Vie
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_CUBE_MAP, cube.tex);
   glBindVertexArray(empty_vao_);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  if (grid) {
+    const int scene_w = std::max(1, int(std::lround(double(scene_h) * vp.aspect)));
+    const int cells_x = (scene_w + rs.sky_grid - 1) / rs.sky_grid, cells_y = (scene_h + rs.sky_grid - 1) / rs.sky_grid;
+    glUniform1i(p.loc("u_cells_x"), cells_x);
+    glUniform2f(p.loc("u_cell_ndc"), 2.0f * float(rs.sky_grid) / float(scene_w), 2.0f * float(rs.sky_grid) / float(scene_h));
+    glDrawArrays(GL_TRIANGLES, 0, cells_x * cells_y * 6);
+  } else {
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE);
   glEnable(GL_PROGRAM_POINT_SIZE);

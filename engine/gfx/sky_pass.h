@@ -3,6 +3,10 @@
 // First pass of a frame, into the cleared scene buffer with depth off. The nebula is either
 // looked up in a cube map baked once per seed, resolution and shader build (render.sky =
 // baked) or evaluated per pixel (exact, the reference); the stars are points blended on top.
+// The baked map is looked up at every pixel (render.sky_grid = 0) or at the corners of a
+// screen grid of N-pixel cells and interpolated across them (16 by default: on llvmpipe the
+// per-pixel cube-map sample was 2.5 ms of a 1280×720 frame, the grid's 7200 triangles about a
+// quarter of that; 58–75 dB PSNR against the per-pixel lookup in every level).
 // Both follow RenderView::starfield_seed, which also orients the nebula's two lobes. Their
 // colours are display values; with HDR they are decoded to linear light as they are drawn
 // (the baked map is baked again in linear light).

@@ -121,6 +121,7 @@ std::vector<Row> render_rows() {
       {"render.texture_filter", {"nearest", "linear", "mipmap_nearest"}},
       {"render.scale", {"0.5", "0.75", "1", "1.5"}},
       {"render.sky_resolution", {"64", "128", "256", "512", "1024"}},  // with render.sky=baked
+      {"render.sky_grid", {"0", "8", "16", "32"}},                       // with render.sky=baked
       {"render.hdr", {"false"}},
       {"render.bloom", {"off", "low"}},
       {"render.antialias", {"off", "fxaa", "msaa2"}},
@@ -137,7 +138,7 @@ std::vector<Row> render_rows() {
       Row r = ref;
       r.setting = key;
       r.value = v;
-      if (key == "render.sky_resolution") r.settings.set("render.sky", "baked", "tradeoffs");
+      if (key == "render.sky_resolution" || key == "render.sky_grid") r.settings.set("render.sky", "baked", "tradeoffs");
       r.settings.set(key, v, "tradeoffs");
       rows.push_back(r);
     }
