@@ -168,7 +168,7 @@ void ParticlePass::upload(const std::vector<ParticleInstance>& particles) {
 }
 
 int ParticlePass::draw(const ParticleBatch& batch, const ShaderPrograms& programs, const RenderSettings& rs,
-                       const ParticleFrame& frame, long long* fragments) {
+                       const ParticleFrame& frame) {
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(rs.reversed_z ? GL_GREATER : GL_LEQUAL);  // as the mesh pass: far ones round to depth 1
   glDepthMask(GL_FALSE);
@@ -209,13 +209,19 @@ int ParticlePass::draw(const ParticleBatch& batch, const ShaderPrograms& program
   }
   if (count_fragments_) {
     glEndQuery(GL_SAMPLES_PASSED);
-    GLuint64 samples = 0;
-    glGetQueryObjectui64v(fragment_query_, GL_QUERY_RESULT, &samples);
-    if (fragments) *fragments = static_cast<long long>(samples);
+    query_pending_ = true;
   }
   glDepthMask(GL_TRUE);
   glDisable(GL_BLEND);
   return draws;
+}
+
+long long ParticlePass::take_fragments() {
+  if (!query_pending_) return -1;
+  query_pending_ = false;
+  GLuint64 samples = 0;
+  glGetQueryObjectui64v(fragment_query_, GL_QUERY_RESULT, &samples);
+  return static_cast<long long>(samples);
 }
 
 }  // namespace arc

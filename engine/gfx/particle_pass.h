@@ -13,7 +13,7 @@
 //   particles.set_sprites({load_sprite("assets/textures/sprite_smoke.png")}, settings.filter);
 //   particles.upload(batch.particles);
 //   if (batch.any_soft) targets.copy_depth();
-//   particles.draw(batch, programs, settings, frame, /*fragments=*/nullptr);  // one draw per run
+//   particles.draw(batch, programs, settings, frame);  // one draw per run
 #pragma once
 #include <epoxy/gl.h>
 
@@ -59,11 +59,14 @@ class ParticlePass {
 
   void upload(const std::vector<ParticleInstance>& particles);
   // Draws what upload() received into the bound framebuffer, one draw per run of the batch,
-  // and returns the number of draws. When counting fragments, *fragments gets the samples
-  // blended (an occlusion query over all runs, read back at once, so it stalls).
+  // and returns the number of draws. When counting fragments, an occlusion query spans the runs.
   int draw(const ParticleBatch& batch, const ShaderPrograms& programs, const RenderSettings& settings,
-           const ParticleFrame& frame, long long* fragments);
+           const ParticleFrame& frame);
   void count_fragments(bool on) { count_fragments_ = on; }
+  // The samples the last counted draw blended, read back when first asked for (after the frame
+  // has been submitted, so the frame is not stalled halfway); −1 when none was counted since.
+  long long take_fragments();
+  void forget_fragments() { query_pending_ = false; }
 
  private:
   GLuint vao_ = 0, vbo_ = 0, ibo_ = 0, tbo_ = 0;
@@ -80,6 +83,7 @@ class ParticlePass {
   int sprite_w_ = 1, sprite_h_ = 1;
   bool count_fragments_ = false;
   GLuint fragment_query_ = 0;
+  bool query_pending_ = false;
 };
 
 }  // namespace arc

@@ -83,6 +83,7 @@ struct Renderer::Impl {
   ParticleTarget half_particles;
   std::vector<PixelRect> composite_rects;  // where the half-resolution target is put over the scene
   bool half_res = false;  // this frame's particles at half resolution (kept between frames for Auto's hysteresis)
+  bool particles_warm = false;  // every particle shader variant drawn once since the settings changed
   BloomPass bloom;
   PostPass post;
   HudPass hud;
@@ -92,6 +93,7 @@ struct Renderer::Impl {
   SceneFormat scene_format() const;
   void clear_scene();
   void draw_particles(const RenderView& v, const ViewProjection& vp);
+  void warm_up_particles(const RenderView& v, const ViewProjection& vp);
   void post_process(int width, int height);
 };
 
@@ -166,6 +168,7 @@ void Renderer::apply_settings(const Settings& s) {
 void Renderer::set_render_settings(const RenderSettings& s) {
   Impl& m = *impl_;
   m.rs = s;
+  m.particles_warm = false;
   if (!m.clip_control) m.rs.reversed_z = false;
   m.rs.scale = std::clamp(m.rs.scale, 0.1, 4.0);
   m.rs.sky_resolution = std::clamp(m.rs.sky_resolution, 16, 1024);
@@ -182,12 +185,14 @@ void Renderer::render(const RenderView& v, int width, int height) {
   Impl& m = *impl_;
   if (width <= 0 || height <= 0) throw std::invalid_argument("render: width and height must be positive");
   m.stats = FrameStats{};
+  m.particles.forget_fragments();  // an earlier frame's count nobody asked for
   m.timers.collect_finished();
   m.targets.ensure(width, height, m.rs.scale, m.scene_format());
   const int scene_w = m.targets.scene_width(), scene_h = m.targets.scene_height();
   const ViewProjection vp =
       make_view_projection(v.camera, double(scene_w) / double(scene_h), m.rs.reversed_z, m.rs.infinite_far);
 
+  if (!m.particles_warm) m.warm_up_particles(v, vp);
   m.clear_scene();
   m.stats.draw_calls += m.sky.draw(v, m.programs, vp, m.rs, scene_h);
   m.stats.draw_calls += m.meshes.draw(v, m.programs.mesh, vp.view_proj, m.rs.reversed_z, m.rs.hdr);
@@ -276,7 +281,7 @@ void Renderer::Impl::draw_particles(const RenderView& v, const ViewProjection& v
     frame.transmittance_alpha = true;
   }
   stats.particle_target_pixels = double(frame.scene_width) * double(frame.scene_height);
-  int draws = particles.draw(batch, programs, rs, frame, &stats.particle_fragments);
+  int draws = particles.draw(batch, programs, rs, frame);
   if (half_res) {
     batch.coverage.rects(composite_rects);
     half_particles.composite(programs.particle_composite, targets.scene_fbo(), targets.scene_width(),
@@ -288,6 +293,43 @@ void Renderer::Impl::draw_particles(const RenderView& v, const ViewProjection& v
   stats.particle_draw_calls += draws;
   stats.particle_pass_gpu_ms = timers.end_particle_pass();
   stats.particle_cpu_ms = ms_since(t0);
+}
+
+// A driver compiles a program's variant for each blend, depth and framebuffer state the first
+// time it draws with it: on llvmpipe 20–40 ms, a hitch the first time a battle's particles go
+// to half resolution or a soft run appears (combat_view's tick 160 took 41–48 ms among 13 ms
+// frames). So after every settings change, before the first frame clears the scene, one tiny
+// particle per program (hard, soft, soft with the contrast curve) is drawn into the scene and
+// into the half-resolution target, and that is put over the scene: every variant the frames
+// can pick is compiled there. The frame then clears it all.
+void Renderer::Impl::warm_up_particles(const RenderView& v, const ViewProjection& vp) {
+  particles_warm = true;
+  ParticleBatch warm;
+  const glm::dvec3 ahead = v.camera.orientation * glm::dvec3(0.0, 0.0, -4.0 * v.camera.near_plane);
+  for (uint8_t soft : {uint8_t(SoftEdge::Off), uint8_t(SoftEdge::Linear), uint8_t(SoftEdge::Contrast)}) {
+    ParticleInstance p{};
+    p.pos[0] = float(ahead.x), p.pos[1] = float(ahead.y), p.pos[2] = float(ahead.z);
+    p.size = float(v.camera.near_plane) * 0.01f;
+    p.color[3] = 0.01f;
+    p.soft_edge = soft;
+    warm.runs.push_back({uint32_t(warm.particles.size()), 1, soft != 0, soft == uint8_t(SoftEdge::Contrast), 1.0});
+    warm.particles.push_back(p);
+  }
+  particles.upload(warm.particles);
+  targets.bind_scene();
+  targets.copy_depth();
+  ParticleFrame frame{vp, v.camera.fov_y_radians, float(v.camera.near_plane), targets.depth_copy(),
+                      targets.scene_width(), targets.scene_height()};
+  particles.draw(warm, programs, rs, frame);
+  half_particles.begin(targets.scene_fbo(), targets.scene_width(), targets.scene_height(), targets.scene_internal_format());
+  frame.depth_copy = targets.scene_depth();
+  frame.scene_width = half_particles.width();
+  frame.scene_height = half_particles.height();
+  frame.transmittance_alpha = true;
+  particles.draw(warm, programs, rs, frame);
+  half_particles.composite(programs.particle_composite, targets.scene_fbo(), targets.scene_width(),
+                           targets.scene_height(), {PixelRect{0, 0, 1, 1}});
+  particles.forget_fragments();
 }
 
 // Bloom (HDR only) reads the finished scene; the post pass then tone-maps and/or filters it
@@ -313,7 +355,13 @@ Image Renderer::read_pixels() { return impl_->targets.read_pixels(); }
 
 std::vector<float> Renderer::read_pixels_float() { return impl_->targets.read_pixels_float(); }
 
-FrameStats Renderer::last_stats() const { return impl_->stats; }
+// The fragment count is read back here, once the frame has been submitted: reading it inside
+// the particle pass stalled the frame halfway (the passes after it waited for the particles).
+FrameStats Renderer::last_stats() const {
+  const long long fragments = impl_->particles.take_fragments();
+  if (fragments >= 0) impl_->stats.particle_fragments = fragments;
+  return impl_->stats;
+}
 
 std::string Renderer::reload() { return impl_->programs.reload(); }
 

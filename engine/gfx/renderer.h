@@ -116,7 +116,7 @@ class Renderer {
   // Blocks until the GPU has finished all submitted work (glFinish), for timing.
   void finish();
   // For the benchmark: count the fragments the particle draw blends (an occlusion query read
-  // back at the end of the frame, so it stalls; off by default).
+  // back by last_stats(), which then waits for the particle pass; off by default).
   void count_particle_fragments(bool on);
   // For the benchmark: time this frame's particle pass (depth copy and draw) and the fill
   // reference with GL_TIME_ELAPSED queries read back at once (stalls; off by default). On a
