@@ -301,7 +301,7 @@ void Renderer::Impl::draw_particles(const RenderView& v, const ViewProjection& v
 // frames). So after every settings change, before the first frame clears the scene, one tiny
 // particle per program (hard, soft, soft with the contrast curve) is drawn into the scene and
 // into the half-resolution target, and that is put over the scene: every variant the frames
-// can pick is compiled there. The frame then clears it all.
+// can pick is compiled there. The frame's clear and sky then cover it all.
 void Renderer::Impl::warm_up_particles(const RenderView& v, const ViewProjection& vp) {
   particles_warm = true;
   ParticleBatch warm;
@@ -309,8 +309,8 @@ void Renderer::Impl::warm_up_particles(const RenderView& v, const ViewProjection
   for (uint8_t soft : {uint8_t(SoftEdge::Off), uint8_t(SoftEdge::Linear), uint8_t(SoftEdge::Contrast)}) {
     ParticleInstance p{};
     p.pos[0] = float(ahead.x), p.pos[1] = float(ahead.y), p.pos[2] = float(ahead.z);
-    p.size = float(v.camera.near_plane) * 0.01f;
-    p.color[3] = 0.01f;
+    p.size = float(v.camera.near_plane) * 0.05f;  // a few pixels of white: a frame that failed to clear would show it
+    p.color[0] = p.color[1] = p.color[2] = p.color[3] = 1.0f;
     p.soft_edge = soft;
     warm.runs.push_back({uint32_t(warm.particles.size()), 1, soft != 0, soft == uint8_t(SoftEdge::Contrast), 1.0});
     warm.particles.push_back(p);

@@ -185,3 +185,29 @@ TEST(ParticleDraws, AutoResolutionFollowsTheLayersWithHysteresis) {
 
 }  // namespace
 }  // namespace arc
+
+namespace arc {
+namespace {
+
+// The first frame after a settings change draws a tiny particle per program into the scene and
+// the half-resolution target first (renderer.cpp, warm_up_particles); the frame must not show
+// it: the first frame, with and without particles of its own, equals the one drawn after it.
+TEST(ParticleDraws, ShaderWarmUpLeavesNoMark) {
+  REQUIRE_CONTEXT();
+  for (bool with_particles : {false, true}) {
+    Renderer r(RendererDesc{.offscreen = true});
+    r.set_sprites({scenes::soft_sprite(64)});
+    RenderView v = wall_view(r);
+    if (!with_particles) v.particles.clear();
+    RenderSettings s = test::plain_settings();
+    s.particle_resolution = RenderSettings::ParticleResolution::Half;
+    r.set_render_settings(s);
+    r.render(v, 320, 180);
+    const Image first = r.read_pixels();
+    r.render(v, 320, 180);
+    EXPECT_EQ(compare_images(first, r.read_pixels()).max_diff, 0) << "with particles: " << with_particles;
+  }
+}
+
+}  // namespace
+}  // namespace arc
