@@ -83,7 +83,10 @@ struct Renderer::Impl {
   ParticleTarget half_particles;
   std::vector<PixelRect> composite_rects;  // where the half-resolution target is put over the scene
   bool half_res = false;  // this frame's particles at half resolution (kept between frames for Auto's hysteresis)
-  bool particles_warm = false;  // every particle shader variant drawn once since the settings changed
+  // The states particle variants were compiled for (warm_up_particles): scene format, depth
+  // direction, sprite filter and contrast program, packed as warm_key() makes them.
+  std::vector<uint64_t> warm_keys;
+  uint64_t warm_key() const;
   BloomPass bloom;
   PostPass post;
   HudPass hud;
@@ -168,7 +171,6 @@ void Renderer::apply_settings(const Settings& s) {
 void Renderer::set_render_settings(const RenderSettings& s) {
   Impl& m = *impl_;
   m.rs = s;
-  m.particles_warm = false;
   if (!m.clip_control) m.rs.reversed_z = false;
   m.rs.scale = std::clamp(m.rs.scale, 0.1, 4.0);
   m.rs.sky_resolution = std::clamp(m.rs.sky_resolution, 16, 1024);
@@ -192,7 +194,7 @@ void Renderer::render(const RenderView& v, int width, int height) {
   const ViewProjection vp =
       make_view_projection(v.camera, double(scene_w) / double(scene_h), m.rs.reversed_z, m.rs.infinite_far);
 
-  if (!m.particles_warm) m.warm_up_particles(v, vp);
+  if (std::find(m.warm_keys.begin(), m.warm_keys.end(), m.warm_key()) == m.warm_keys.end()) m.warm_up_particles(v, vp);
   m.clear_scene();
   m.stats.draw_calls += m.sky.draw(v, m.programs, vp, m.rs, scene_h);
   m.stats.draw_calls += m.meshes.draw(v, m.programs.mesh, vp.view_proj, m.rs.reversed_z, m.rs.hdr);
@@ -295,15 +297,22 @@ void Renderer::Impl::draw_particles(const RenderView& v, const ViewProjection& v
   stats.particle_cpu_ms = ms_since(t0);
 }
 
+uint64_t Renderer::Impl::warm_key() const {
+  const uint64_t contrast = rs.contrast_power == 2.0f ? 0 : rs.contrast_power == 1.0f ? 1 : 2;
+  return uint64_t(targets.scene_internal_format()) << 16 | uint64_t(rs.reversed_z) << 8 | uint64_t(rs.filter) << 4 |
+         uint64_t(rs.hdr) << 2 | contrast;
+}
+
 // A driver compiles a program's variant for each blend, depth and framebuffer state the first
 // time it draws with it: on llvmpipe 20–40 ms, a hitch the first time a battle's particles go
 // to half resolution or a soft run appears (combat_view's tick 160 took 41–48 ms among 13 ms
-// frames). So after every settings change, before the first frame clears the scene, one tiny
+// frames). So the first frame in each state the variants depend on (scene format, depth
+// direction, sprite filter, HDR, contrast program: warm_key), before it clears the scene, one tiny
 // particle per program (hard, soft, soft with the contrast curve) is drawn into the scene and
 // into the half-resolution target, and that is put over the scene: every variant the frames
 // can pick is compiled there. The frame's clear and sky then cover it all.
 void Renderer::Impl::warm_up_particles(const RenderView& v, const ViewProjection& vp) {
-  particles_warm = true;
+  warm_keys.push_back(warm_key());
   ParticleBatch warm;
   const glm::dvec3 ahead = v.camera.orientation * glm::dvec3(0.0, 0.0, -4.0 * v.camera.near_plane);
   for (uint8_t soft : {uint8_t(SoftEdge::Off), uint8_t(SoftEdge::Linear), uint8_t(SoftEdge::Contrast)}) {
