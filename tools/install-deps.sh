@@ -9,7 +9,7 @@ packages=(
   nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev libimgui-dev
   libegl-mesa0 libgl1-mesa-dri libgbm1
   libopenal-dev
-  xvfb xauth xdotool
+  xvfb xauth xdotool time
   python3-matplotlib
 )
 

@@ -1,4 +1,5 @@
-// assets/image.cpp — images through OpenImageIO, always handed out as RGBA8.
+// assets/image.cpp — images through the codec module (OpenImageIO, loaded on first use:
+// assets/image_codec.h), always handed out as RGBA8. Limits and messages are checked here.
 #include <algorithm>
 #include <cstdio>
 #include <fcntl.h>
@@ -8,8 +9,7 @@
 #include <iterator>
 #include <memory>
 #include <string>
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
+#include "assets/image_codec.h"
 #include "assets/image_decode.h"
 #include "assets/image.h"
 #include "core/error.h"
@@ -19,38 +19,13 @@
 namespace arc {
 namespace {
 
-// OIIO premultiplies PNG colour on read and divides it out on write unless told that alpha is
-// unassociated; Arcfire keeps the stored bytes as they are and premultiplies explicitly.
-const OIIO::ImageSpec& raw_alpha_config() {
-  static const OIIO::ImageSpec config = [] {
-    OIIO::ImageSpec s;
-    s.attribute("oiio:UnassociatedAlpha", 1);
-    return s;
-  }();
-  return config;
-}
-
-Image read_rgba8(OIIO::ImageInput& in, const std::string& path) {
-  const OIIO::ImageSpec& spec = in.spec();
-  if (spec.width <= 0 || spec.height <= 0 || spec.width > kMaxImageSide || spec.height > kMaxImageSide)
-    throw InputError(path + ": image size " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
-                     " is not allowed (1 to " + std::to_string(kMaxImageSide) + " pixels per side)");
-  // Larger images are certainly a mistake for a game asset and would only exhaust memory.
-  if (size_t(spec.width) * size_t(spec.height) * 4 > kMaxImageDecodedBytes)
-    throw InputError(path + ": image size " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
-                     " decodes to more than " + std::to_string(kMaxImageDecodedBytes >> 20) + " MiB of RGBA8, the limit");
-  const int channels = spec.nchannels;
-  if (channels < 1 || channels > 4)
-    throw InputError(path + ": image has " + std::to_string(channels) + " channels; 1 to 4 are supported");
-  std::vector<uint8_t> pixels(size_t(spec.width) * size_t(spec.height) * size_t(channels));
-  // OIIO converts 16-bit, half and float data to UINT8 itself (clamped, rounded).
-  if (!in.read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, pixels.data()))
-    throw InputError(path + ": cannot decode image: " + in.geterror());
+// The decoded pixels, `channels` bytes each, widened to RGBA8.
+Image to_rgba8(const std::vector<uint8_t>& pixels, int width, int height, int channels) {
   Image img;
-  img.width = spec.width;
-  img.height = spec.height;
-  img.rgba.resize(size_t(spec.width) * size_t(spec.height) * 4);
-  const size_t n = size_t(spec.width) * size_t(spec.height);
+  img.width = width;
+  img.height = height;
+  img.rgba.resize(size_t(width) * size_t(height) * 4);
+  const size_t n = size_t(width) * size_t(height);
   for (size_t i = 0; i < n; ++i) {
     const uint8_t* s = &pixels[i * size_t(channels)];
     uint8_t* d = &img.rgba[i * 4];
@@ -63,6 +38,36 @@ Image read_rgba8(OIIO::ImageInput& in, const std::string& path) {
   }
   return img;
 }
+
+// Refuses sizes and channel counts before any pixel is decoded.
+void check_image_shape(int width, int height, int channels, const std::string& path) {
+  if (width <= 0 || height <= 0 || width > kMaxImageSide || height > kMaxImageSide)
+    throw InputError(path + ": image size " + std::to_string(width) + "x" + std::to_string(height) +
+                     " is not allowed (1 to " + std::to_string(kMaxImageSide) + " pixels per side)");
+  // Larger images are certainly a mistake for a game asset and would only exhaust memory.
+  if (size_t(width) * size_t(height) * 4 > kMaxImageDecodedBytes)
+    throw InputError(path + ": image size " + std::to_string(width) + "x" + std::to_string(height) +
+                     " decodes to more than " + std::to_string(kMaxImageDecodedBytes >> 20) + " MiB of RGBA8, the limit");
+  if (channels < 1 || channels > 4)
+    throw InputError(path + ": image has " + std::to_string(channels) + " channels; 1 to 4 are supported");
+}
+
+// An open reader of the codec module, closed (and its pending messages dropped unless the
+// decode succeeded) when it goes out of scope.
+class OpenReader {
+ public:
+  OpenReader(const ImageCodec& codec, ArcCodecReader* reader) : codec_(codec), reader_(reader) {}
+  ~OpenReader() { codec_.close(reader_, ok_ ? 1 : 0); }
+  OpenReader(const OpenReader&) = delete;
+  OpenReader& operator=(const OpenReader&) = delete;
+  ArcCodecReader* get() const { return reader_; }
+  void succeeded() { ok_ = true; }
+
+ private:
+  const ImageCodec& codec_;
+  ArcCodecReader* reader_;
+  bool ok_ = false;
+};
 
 // libpng and OpenImageIO's PNG reader print their own "libpng error: ..." lines to stderr
 // before OIIO hands back the same text; a bad file must answer with one line (ours, which
@@ -104,29 +109,22 @@ Image load_image(const std::string& path) {
 
 Image decode_image_memory(const uint8_t* data, size_t size, const std::string& name) {
   check_text_size(size, name, kMaxImageFileBytes, "an image");
-  const QuietStderr quiet;
-  OIIO::Filesystem::IOMemReader reader(const_cast<uint8_t*>(data), size);
-  // The reader is the one for the name's extension, made from the bare extension: given a name,
-  // OIIO tries every other format it has (JPEG 2000, OpenVDB, GDAL, video...) on bytes that are
-  // not what the extension says, and one of those hung on a fuzzed PNG. The bytes come from the
-  // proxy, never a file.
+  const ImageCodec& codec = image_codec();
+  // The module opens a reader for the name's extension only, from the bytes (oiio_codec.cpp).
   const std::string ext = std::filesystem::path(name).extension().string();
   if (ext.size() < 2) throw InputError(name + ": an image name needs an extension saying its format (.png, .jpg...)");
-  auto in = OIIO::ImageInput::create(ext.substr(1), false, &raw_alpha_config());
-  OIIO::ImageSpec spec;
-  if (!in || !in->set_ioproxy(&reader) || !in->open(name, spec, raw_alpha_config()))
-    throw InputError(name + ": not a readable image: " + (in ? in->geterror() : OIIO::geterror()));
-  try {
-    Image img = read_rgba8(*in, name);
-    in->close();
-    return img;
-  } catch (const InputError&) {
-    // A failed read can leave a second message pending ("PNG library error"), which OIIO
-    // prints to stderr when the reader is destroyed; it is in our message already.
-    in->geterror();
-    OIIO::geterror();
-    throw;
-  }
+  const QuietStderr quiet;
+  int width = 0, height = 0, channels = 0;
+  char* err = nullptr;
+  ArcCodecReader* opened = codec.open(data, size, ext.c_str() + 1, name.c_str(), &width, &height, &channels, &err);
+  if (!opened) throw InputError(name + ": not a readable image: " + take_codec_message(codec, err));
+  OpenReader reader(codec, opened);
+  check_image_shape(width, height, channels, name);
+  std::vector<uint8_t> pixels(size_t(width) * size_t(height) * size_t(channels));
+  if (!codec.read(reader.get(), channels, pixels.data(), &err))
+    throw InputError(name + ": cannot decode image: " + take_codec_message(codec, err));
+  reader.succeeded();
+  return to_rgba8(pixels, width, height, channels);
 }
 
 void flip_rows(Image& image) {
@@ -156,18 +154,17 @@ Image load_sprite(const std::string& path) {
 std::vector<uint8_t> encode_image(const std::string& path, const Image& image) {
   if (image.width <= 0 || image.height <= 0 || image.rgba.size() != size_t(image.width) * size_t(image.height) * 4)
     throw InputError(path + ": cannot save an image whose size does not match its pixel data");
-  // Encoded in memory: OIIO's own file writes (libpng's fwrite) go unchecked, so the bytes
-  // reach the disk through core/file_writer.h instead. The encoder is chosen by extension.
-  std::vector<uint8_t> bytes;
-  OIIO::Filesystem::IOVecOutput sink(bytes);
-  auto out = OIIO::ImageOutput::create(path, &sink);
-  if (!out || !out->supports("ioproxy"))
-    throw InputError(path + ": no image writer for this file extension that can encode in memory (use .png)");
-  OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::UINT8);
-  spec.attribute("oiio:UnassociatedAlpha", 1);
-  if (!out->set_ioproxy(&sink) || !out->open(path, spec) ||
-      !out->write_image(OIIO::TypeDesc::UINT8, image.rgba.data()) || !out->close())
-    throw InputError(path + ": cannot encode image: " + out->geterror());
+  // Encoded in memory: the library's own file writes (libpng's fwrite) go unchecked, so the
+  // bytes reach the disk through core/file_writer.h instead. The encoder is chosen by extension.
+  const ImageCodec& codec = image_codec();
+  unsigned char* encoded = nullptr;
+  size_t size = 0;
+  char* err = nullptr;
+  const int rc = codec.encode(path.c_str(), image.width, image.height, image.rgba.data(), &encoded, &size, &err);
+  if (rc == 1) throw InputError(path + ": no image writer for this file extension that can encode in memory (use .png)");
+  if (rc != 0) throw InputError(path + ": cannot encode image: " + take_codec_message(codec, err));
+  std::vector<uint8_t> bytes(encoded, encoded + size);
+  codec.free(encoded);
   return bytes;
 }
 

@@ -1,4 +1,5 @@
-// assets/image.h — RGBA8 images as plain CPU data, read and written through OpenImageIO (no GL).
+// assets/image.h — RGBA8 images as plain CPU data, read and written through OpenImageIO (no GL),
+// which lives in a module of its own loaded on the first image (assets/image_codec.h).
 //
 // load_image() reads any format OpenImageIO knows into RGBA8; load_sprite() also premultiplies
 // colour by alpha (Ilmonen eq. 10: tcola = tcol·talpha). save_image() encodes in memory and writes

@@ -14,6 +14,7 @@
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 #include <tiny_gltf.h>
+#include "assets/image_codec.h"
 #include "assets/image_decode.h"
 #include "assets/model.h"
 #include "core/error.h"
@@ -67,6 +68,7 @@ void validate_glb_container(const std::string& path, const std::string& bytes) {
 struct ImageBudget {
   std::string model_path;
   size_t decoded_bytes = 0;
+  std::string codec_error;  // the image codec module could not be loaded: not the model's fault
 };
 
 // Embedded and external images are decoded through OpenImageIO, like every other image.
@@ -90,6 +92,9 @@ bool decode_gltf_image(tinygltf::Image* image, const int index, std::string* err
     image->pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
     image->image = std::move(decoded.rgba);
     return true;
+  } catch (const ImageCodecUnavailable& e) {
+    budget.codec_error = e.what();
+    return false;
   } catch (const InputError& e) {
     if (err) *err += e.what();
     return false;
@@ -515,7 +520,7 @@ ModelData parse_model(const std::string& bytes, const std::string& path) {
   }
 
   tinygltf::TinyGLTF loader;
-  ImageBudget budget{path};
+  ImageBudget budget{path, 0, {}};
   loader.SetImageLoader(&decode_gltf_image, &budget);
   tinygltf::FsCallbacks fs{&tinygltf::FileExists, &tinygltf::ExpandFilePath, &read_external_file, &tinygltf::WriteWholeFile, nullptr};
   loader.SetFsCallbacks(fs);
@@ -525,6 +530,7 @@ ModelData parse_model(const std::string& bytes, const std::string& path) {
   const bool ok = binary ? loader.LoadBinaryFromMemory(&gltf, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
                                                        unsigned(bytes.size()), base_dir)
                          : loader.LoadASCIIFromString(&gltf, &err, &warn, bytes.data(), unsigned(bytes.size()), base_dir);
+  if (!budget.codec_error.empty()) throw ImageCodecUnavailable(budget.codec_error);
   if (!ok) {
     while (!err.empty() && (err.back() == '\n' || err.back() == '\r')) err.pop_back();
     for (char& c : err)

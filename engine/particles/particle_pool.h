@@ -4,7 +4,8 @@
 // arrays it needs and the compiler can vectorise it. Positions are floats in the cluster's
 // frame (the cluster origin is double precision). Particles stay in spawn order: removal is a
 // stable compaction, so the layout never depends on when a cluster was animated. Capacity is
-// kept when particles die or a cluster slot is reused, so steady state allocates nothing.
+// kept while the cluster lives (particles dying and being born allocate nothing) and given
+// back when it is released, so memory follows the live clusters.
 //
 // Bytes per particle: 20 floats + 3 uint32 + uint16 + uint8 = 95.
 #pragma once

@@ -75,14 +75,8 @@ struct ParticleWorld::Impl : ParticleWorldState {
       slots.emplace_back();
     }
     Cluster& c = slots[slot];
-    ParticlePool keep = std::move(c.pool);
-    std::vector<glm::dvec3> keep_points = std::move(c.lightning.points);
     const uint32_t generation = c.generation + 1;
     c = Cluster{};
-    c.pool = std::move(keep);
-    c.pool.clear();
-    c.lightning.points = std::move(keep_points);
-    c.lightning.points.clear();
     c.generation = generation;
     c.alive = true;
     return c;
@@ -115,7 +109,11 @@ struct ParticleWorld::Impl : ParticleWorldState {
 
   void release(Cluster& c) {
     live_particles -= uint32_t(c.pool.count());
-    c.pool.clear();
+    // The storage goes back to the heap. Kept for the slot's next cluster, it crept up: a slot
+    // is reused by any effect, so every slot came to hold the largest effect's capacity (three
+    // times the live particles by the end of an arena battle, and more with every battle).
+    c.pool = ParticlePool{};
+    c.lightning.points = {};
     c.alive = false;
     ++c.generation;
     free_slots.push_back(uint32_t(&c - slots.data()));
@@ -478,6 +476,10 @@ void ParticleWorld::step(uint64_t tick, const ParticleCamera& camera) {
 void ParticleWorld::collect(const ParticleCamera& camera, std::vector<ParticleInstance>& out,
                             std::span<const DrawnOwner> drawn) const {
   const Impl& w = *impl_;
+  // Room for the whole budget, taken once: grown by doubling, the output went through blocks of
+  // 0.5, 1 and 2 MiB as battles grew, each one copied and left behind in the heap. A block this
+  // large is mapped on its own, and only the pages the particles reach are ever resident.
+  if (out.capacity() < out.size() + w.config.budget) out.reserve(out.size() + w.config.budget);
   for (size_t slot = 0; slot < w.slots.size(); ++slot) {
     const Cluster& c = w.slots[slot];
     if (!c.alive || c.intensity <= 0.0 || w.tick < c.spawn_tick || c.pool.count() == 0) continue;
