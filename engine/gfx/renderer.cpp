@@ -97,6 +97,7 @@ struct Renderer::Impl {
   void clear_scene();
   void draw_particles(const RenderView& v, const ViewProjection& vp);
   void warm_up_particles(const RenderView& v, const ViewProjection& vp);
+  void begin_half_resolution(ParticleFrame& frame);
   void post_process(int width, int height);
 };
 
@@ -275,13 +276,7 @@ void Renderer::Impl::draw_particles(const RenderView& v, const ViewProjection& v
   ParticleFrame frame{vp, v.camera.fov_y_radians, float(v.camera.near_plane),
                       half_res ? targets.scene_depth() : targets.depth_copy(), targets.scene_width(),
                       targets.scene_height()};
-  if (half_res) {
-    half_particles.begin(targets.scene_fbo(), targets.scene_width(), targets.scene_height(),
-                         targets.scene_internal_format());
-    frame.scene_width = half_particles.width();
-    frame.scene_height = half_particles.height();
-    frame.transmittance_alpha = true;
-  }
+  if (half_res) begin_half_resolution(frame);
   stats.particle_target_pixels = double(frame.scene_width) * double(frame.scene_height);
   int draws = particles.draw(batch, programs, rs, frame);
   if (half_res) {
@@ -295,6 +290,14 @@ void Renderer::Impl::draw_particles(const RenderView& v, const ViewProjection& v
   stats.particle_draw_calls += draws;
   stats.particle_pass_gpu_ms = timers.end_particle_pass();
   stats.particle_cpu_ms = ms_since(t0);
+}
+
+// The half-resolution target bound, holding the scene's depth, and `frame` made to draw into it.
+void Renderer::Impl::begin_half_resolution(ParticleFrame& frame) {
+  half_particles.begin(targets.scene_fbo(), targets.scene_width(), targets.scene_height(), targets.scene_internal_format());
+  frame.scene_width = half_particles.width();
+  frame.scene_height = half_particles.height();
+  frame.transmittance_alpha = true;
 }
 
 uint64_t Renderer::Impl::warm_key() const {
@@ -330,11 +333,8 @@ void Renderer::Impl::warm_up_particles(const RenderView& v, const ViewProjection
   ParticleFrame frame{vp, v.camera.fov_y_radians, float(v.camera.near_plane), targets.depth_copy(),
                       targets.scene_width(), targets.scene_height()};
   particles.draw(warm, programs, rs, frame);
-  half_particles.begin(targets.scene_fbo(), targets.scene_width(), targets.scene_height(), targets.scene_internal_format());
   frame.depth_copy = targets.scene_depth();
-  frame.scene_width = half_particles.width();
-  frame.scene_height = half_particles.height();
-  frame.transmittance_alpha = true;
+  begin_half_resolution(frame);
   particles.draw(warm, programs, rs, frame);
   half_particles.composite(programs.particle_composite, targets.scene_fbo(), targets.scene_width(),
                            targets.scene_height(), {PixelRect{0, 0, 1, 1}});
