@@ -113,24 +113,15 @@ const std::pair<const char*, const char*> kCandidates[] = {
                       " render.sorting=cluster render.sky_resolution=128"},
 };
 
-std::vector<Row> render_rows() {
-  const std::vector<std::pair<std::string, std::vector<std::string>>> keys = {
-      {"render.soft_edges", {"off", "linear", "contrast", "average_density", "density_extent"}},
-      {"render.sorting", {"off", "cluster"}},
-      {"render.depth_mode", {"standard"}},
-      {"render.texture_filter", {"nearest", "linear", "mipmap_nearest"}},
-      {"render.scale", {"0.5", "0.75", "1", "1.5"}},
-      {"render.sky_resolution", {"64", "128", "256", "512", "1024"}},  // with render.sky=baked
-      {"render.sky_grid", {"0", "8", "16", "32"}},                       // with render.sky=baked
-      {"render.hdr", {"false"}},
-      {"render.bloom", {"off", "low"}},
-      {"render.antialias", {"off", "fxaa", "msaa2"}},
-      {"render.particle_resolution", {"half", "auto"}},
-      {"render.overdraw_budget", {"4", "3", "2"}},
-  };
+using KeySweep = std::vector<std::pair<std::string, std::vector<std::string>>>;
+
+// The reference preset, one row for each value of each key changed from it alone, then each
+// preset as it stands. The baked sky's keys switch the reference's exact sky to baked first, or
+// they would change nothing.
+std::vector<Row> sweep_from_reference(const char* kind, const KeySweep& keys, const char* preset_kind) {
   std::vector<Row> rows;
   Row ref;
-  ref.kind = "render";
+  ref.kind = kind;
   ref.settings = preset("reference");
   rows.push_back(ref);
   for (const auto& [key, values] : keys)
@@ -144,11 +135,30 @@ std::vector<Row> render_rows() {
     }
   for (const char* name : kPresets) {
     Row p;
-    p.kind = "preset";
+    p.kind = preset_kind;
     p.setting = name;
     p.settings = preset(name);
     rows.push_back(p);
   }
+  return rows;
+}
+
+std::vector<Row> render_rows() {
+  const KeySweep keys = {
+      {"render.soft_edges", {"off", "linear", "contrast", "average_density", "density_extent"}},
+      {"render.sorting", {"off", "cluster"}},
+      {"render.depth_mode", {"standard"}},
+      {"render.texture_filter", {"nearest", "linear", "mipmap_nearest"}},
+      {"render.scale", {"0.5", "0.75", "1", "1.5"}},
+      {"render.sky_resolution", {"64", "128", "256", "512", "1024"}},  // with render.sky=baked
+      {"render.sky_grid", {"0", "8", "16", "32"}},                       // with render.sky=baked
+      {"render.hdr", {"false"}},
+      {"render.bloom", {"off", "low"}},
+      {"render.antialias", {"off", "fxaa", "msaa2"}},
+      {"render.particle_resolution", {"half", "auto"}},
+      {"render.overdraw_budget", {"4", "3", "2"}},
+  };
+  std::vector<Row> rows = sweep_from_reference("render", keys, "preset");
   for (const auto& [name, keys_text] : kCandidates) {
     Row c;
     c.kind = "candidate";
@@ -247,32 +257,13 @@ void measure_scene(const Scene& sc, std::vector<Row>& rows, int rounds) {
 // ---- simulation ------------------------------------------------------------------------------
 
 std::vector<Row> sim_rows() {
-  const std::vector<std::pair<std::string, std::vector<std::string>>> keys = {
+  const KeySweep keys = {
       {"sim.substeps", {"16", "8", "2", "1"}},
       {"particles.lightning_interval", {"1", "2", "4", "8"}},
       {"particles.budget", {"200000", "50000", "10000", "2000"}},
       {"particles.cull_distance", {"1000", "300", "100"}},
   };
-  std::vector<Row> rows;
-  Row ref;
-  ref.kind = "sim";
-  ref.settings = preset("reference");
-  rows.push_back(ref);
-  for (const auto& [key, values] : keys)
-    for (const std::string& v : values) {
-      Row r = ref;
-      r.setting = key;
-      r.value = v;
-      r.settings.set(key, v, "tradeoffs");
-      rows.push_back(r);
-    }
-  for (const char* name : kPresets) {
-    Row p;
-    p.kind = "preset_sim";
-    p.setting = name;
-    p.settings = preset(name);
-    rows.push_back(p);
-  }
+  std::vector<Row> rows = sweep_from_reference("sim", keys, "preset_sim");
   return rows;
 }
 
