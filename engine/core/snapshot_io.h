@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <span>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -73,7 +74,7 @@ class Writer {
   }
   // An array of plain numbers (no count: the caller writes it once for several arrays).
   template <typename T>
-  void array(const std::vector<T>& v) {
+  void array(std::span<const T> v) {
     static_assert(std::is_arithmetic_v<T>);
     if constexpr (std::endian::native == std::endian::little) {
       const size_t at = bytes_.size();
@@ -87,6 +88,14 @@ class Writer {
         else u64(std::bit_cast<uint64_t>(x));
       }
     }
+  }
+  template <typename T>
+  void array(std::span<T> v) {
+    array(std::span<const T>(v));
+  }
+  template <typename T>
+  void array(const std::vector<T>& v) {
+    array(std::span<const T>(v));
   }
   size_t size() const { return bytes_.size(); }
 
@@ -184,9 +193,16 @@ class Reader {
   }
   template <typename T>
   void array(std::vector<T>& v, size_t n) {
-    static_assert(std::is_arithmetic_v<T>);
     check_room(n, sizeof(T), "array");
     v.resize(n);
+    array(std::span<T>(v));
+  }
+  // Exactly v.size() numbers into v.
+  template <typename T>
+  void array(std::span<T> v) {
+    static_assert(std::is_arithmetic_v<T>);
+    const size_t n = v.size();
+    check_room(n, sizeof(T), "array");
     if constexpr (std::endian::native == std::endian::little) {
       if (n) std::memcpy(v.data(), p_ + at_, n * sizeof(T));
       at_ += n * sizeof(T);
@@ -199,6 +215,7 @@ class Reader {
       }
     }
   }
+
   size_t remaining() const { return n_ - at_; }
   size_t position() const { return at_; }
   void expect_end() const {

@@ -63,7 +63,7 @@ static void write_leaf(snapshot::Writer& out, const EffectDef* effect) { out.str
 static void write_leaf(snapshot::Writer& out, const ClusterDef* def) { out.str(def->name); }
 static void write_leaf(snapshot::Writer& out, const ParticlePool& pool) {
   out.u32(uint32_t(pool.count()));
-  for_each_array(pool, [&out](const auto& v) { out.array(v); });
+  for_each_array(pool, [&out](const auto& v) { out.array(std::span(v.data(), v.size())); });
 }
 
 namespace {
@@ -94,8 +94,10 @@ struct ClusterReading {
               "' in this build, '" + name + "' in the snapshot");
   }
   void read_leaf(snapshot::Reader& in, const char*, ParticlePool& pool) {
-    const size_t n = in.count(95, "particle count");
-    for_each_array(pool, [&in, n](auto& v) { in.array(v, n); });
+    const size_t n = in.count(kParticleBytes, "particle count");
+    pool = ParticlePool(w.store.get());
+    pool.resize(n);
+    for_each_array(pool, [&in, n](auto& v) { in.array(std::span(v.data(), n)); });
     pool.touch();
   }
   void after_read(snapshot::Reader& in, Cluster& c) {
@@ -197,6 +199,7 @@ void ParticleWorld::load(const uint8_t* data, size_t size) {
   // Built aside and swapped in at the end: a bad snapshot leaves this world as it was.
   ParticleWorldState w;
   w.effects = live.effects;
+  w.store = live.store;
   w.motion_tables = live.motion_tables;
   w.config.seed = in.u64();
   w.config.budget = in.u32();
@@ -224,6 +227,7 @@ void ParticleWorld::load(const uint8_t* data, size_t size) {
     if (id == 0 || !w.owners.emplace(id, t).second) in.fail("owner id " + std::to_string(id) + " is 0 or repeated");
   }
   const size_t slots = in.count(5, "cluster slot count");
+  w.reserve_slots();
   w.slots.resize(slots);
   uint64_t particles = 0;
   size_t dead = 0;

@@ -39,7 +39,10 @@ float curve_max(const Curve& c) {
 }  // namespace
 
 struct ParticleWorld::Impl : ParticleWorldState {
-  mutable ParticlePool scratch;  // a culled cluster drawn anyway is evaluated here, not in place
+  // A culled cluster drawn anyway is evaluated here, not in place. Its storage comes from the
+  // store (copy assignment keeps the source), so it does not follow the largest such cluster
+  // in the heap.
+  mutable ParticlePool scratch;
   uint32_t skipped_particles = 0, animated_particles = 0, caught_up = 0;  // the last step's, for stats()
 
   Cluster* find(ClusterHandle hnd) {
@@ -103,6 +106,7 @@ struct ParticleWorld::Impl : ParticleWorldState {
     c.world_origin = e.position;
     c.last_emit_position = e.position;
     const double expected = d.emitter.burst * p.intensity + d.emitter.rate * p.intensity * d.particles.lifetime.max + 16.0;
+    c.pool = ParticlePool(store.get());
     c.pool.reserve(size_t(std::min(expected, double(config.budget))));
     return {slot + 1, c.generation};
   }
@@ -303,6 +307,9 @@ struct ParticleWorld::Impl : ParticleWorldState {
 ParticleWorld::ParticleWorld(const ParticleConfig& config, const EffectLibrary* effects) : impl_(std::make_unique<Impl>()) {
   impl_->config = config;
   impl_->effects = effects;
+  impl_->store = std::make_shared<ParticleStore>(config.budget);
+  impl_->scratch = ParticlePool(impl_->store.get());
+  impl_->reserve_slots();
 }
 ParticleWorld::~ParticleWorld() = default;
 ParticleWorldState& ParticleWorldAccess::state(ParticleWorld& w) { return *w.impl_; }
@@ -503,7 +510,12 @@ void ParticleWorld::collect(const ParticleCamera& camera, std::vector<ParticleIn
 ParticleStats ParticleWorld::stats() const {
   ParticleStats s;
   s.live_particles = impl_->live_particles;
-  for (const Cluster& c : impl_->slots) s.live_clusters += c.alive ? 1u : 0u;
+  for (const Cluster& c : impl_->slots) {
+    s.live_clusters += c.alive ? 1u : 0u;
+    s.pools_on_heap += c.alive && c.pool.capacity() && !c.pool.in_store() ? 1u : 0u;
+  }
+  s.store_in_use = impl_->store->in_use();
+  s.store_capacity = impl_->store->capacity();
   s.refused_particles = impl_->refused;
   s.skipped_clusters = impl_->skipped;
   s.skipped_particles = impl_->skipped_particles;

@@ -88,6 +88,11 @@ struct ParticleStats {
   uint32_t skipped_particles = 0;  // particles of the culled clusters: none of them evaluated
   uint32_t animated_particles = 0; // particles the last step evaluated (position, size, colour)
   uint32_t caught_up_clusters = 0; // clusters animated after skipping one tick or more
+  // The particle store (particle_store.h): room handed to pools now, the whole store, and the
+  // live pools whose storage came from the heap (the store full, or a pool over a top block).
+  uint32_t store_in_use = 0;
+  uint32_t store_capacity = 0;
+  uint32_t pools_on_heap = 0;
 };
 
 // Where an owner is drawn this frame: the renderer interpolates meshes between the last two

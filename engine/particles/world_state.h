@@ -35,6 +35,11 @@ inline uint32_t life_ticks(double seconds, double h) {
 struct ParticleWorldState {
   ParticleConfig config;
   const EffectLibrary* effects = nullptr;
+  // Where the clusters' pools take their storage (particle_store.h), made at the budget with the
+  // world. Shared, not copied: a copied world's pools are copies on the heap, and a snapshot
+  // read builds its clusters aside in the same store. Declared before the slots, so it
+  // outlives every pool that gives a block back to it.
+  std::shared_ptr<ParticleStore> store;
   std::vector<Cluster> slots;
   std::vector<uint32_t> free_slots;
   std::map<uint32_t, OwnerTransform> owners;
@@ -46,6 +51,18 @@ struct ParticleWorldState {
   uint32_t skipped = 0;
 
   double h() const { return config.tick_seconds; }
+
+  // The slot table is taken for a full budget's clusters (at 64 particles each, within
+  // [256, 16384] slots) and written through at once, like the particle store: grown by
+  // doubling, it took a new block at each power of two of clusters seen (the soak's heap
+  // stepped up at game minute 4, when a battle first passed 512 slots).
+  void reserve_slots() {
+    const size_t n = std::clamp<size_t>(config.budget / 64, 256, 16384);
+    if (slots.capacity() >= n) return;
+    const size_t used = slots.size();
+    slots.resize(n);
+    slots.resize(used);
+  }
 
   Pose owner_pose(uint32_t owner) const {
     if (owner == 0) return {};

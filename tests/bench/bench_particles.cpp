@@ -166,7 +166,7 @@ BENCHMARK(BM_SphereClusterUpdate)->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(b
 // Sum of every array an update writes (outside the timed region).
 double checksum(const ParticlePool& p) {
   double s = 0.0;
-  for (const std::vector<float>* v : {&p.px, &p.py, &p.pz, &p.size, &p.rotation, &p.r, &p.g, &p.b, &p.a, &p.burn})
+  for (const ParticleColumn<float>* v : {&p.px, &p.py, &p.pz, &p.size, &p.rotation, &p.r, &p.g, &p.b, &p.a, &p.burn})
     for (float x : *v) s += double(x);
   return s;
 }

@@ -125,7 +125,7 @@ TEST(Sphere, StochasticRedrawsEveryTickOnTheSphereAndIsKeyed) {
   p.resize(50);
   for (uint32_t i = 0; i < 50; ++i) p.uid[i] = i;
   animate_sphere_stochastic(p, 3.0f, 9, 4, 100);
-  const std::vector<float> first = p.px;
+  const std::vector<float> first(p.px.begin(), p.px.end());
   for (size_t i = 0; i < 50; ++i)
     EXPECT_NEAR(std::sqrt(p.px[i] * p.px[i] + p.py[i] * p.py[i] + p.pz[i] * p.pz[i]), 3.0, 1e-5);
   animate_sphere_stochastic(p, 3.0f, 9, 4, 101);
@@ -133,7 +133,7 @@ TEST(Sphere, StochasticRedrawsEveryTickOnTheSphereAndIsKeyed) {
   for (size_t i = 0; i < 50; ++i) moved += p.px[i] != first[i];
   EXPECT_GT(moved, 45);
   animate_sphere_stochastic(p, 3.0f, 9, 4, 100);
-  EXPECT_EQ(p.px, first);
+  EXPECT_EQ(std::vector<float>(p.px.begin(), p.px.end()), first);
 }
 
 TEST(Sphere, RadiusAnimationsFollowTheirClosedForms) {

@@ -59,8 +59,9 @@ const EffectLibrary& burst_library() {
 }
 
 // Budget 1000 (the least --set allows) and 4,000,000 (the most): a burst of a million asked
-// for in one tick leaves at most the budget alive, counts every particle it refused, and no
-// pool holds room for more particles than the budget.
+// for in one tick leaves at most the budget alive, counts every particle it refused, no pool
+// holds room for more particles than the budget, and the store is the budget rounded up to
+// whole top blocks (particle_store.h).
 TEST(Extremes, BudgetHoldsAtItsMinimumAndMaximumUnderAMillionParticleBurst) {
   for (uint32_t budget : {1000u, 4000000u}) {
     ParticleWorld w(ParticleConfig{.seed = 2, .budget = budget}, &burst_library());
@@ -70,9 +71,13 @@ TEST(Extremes, BudgetHoldsAtItsMinimumAndMaximumUnderAMillionParticleBurst) {
     EXPECT_LE(st.live_particles, budget) << "budget " << budget;
     EXPECT_EQ(st.live_particles + st.refused_particles, 1000000u) << "budget " << budget;
     EXPECT_EQ(st.live_particles, std::min(budget, 1000000u)) << "budget " << budget;
-    size_t capacity = 0;
-    for (const Cluster& c : ParticleWorldAccess::state(w).slots) capacity += c.pool.p0x.capacity();
-    EXPECT_LE(capacity, size_t(budget)) << "budget " << budget << ": room for more particles than it admits";
+    size_t heap = 0;
+    for (const Cluster& c : ParticleWorldAccess::state(w).slots)
+      if (!c.pool.in_store()) heap += c.pool.capacity();
+    EXPECT_LE(heap, size_t(budget)) << "budget " << budget << ": room for more particles than it admits";
+    const ParticleStore& store = *ParticleWorldAccess::state(w).store;
+    EXPECT_GE(store.capacity(), budget);
+    EXPECT_LT(store.capacity(), budget + store.top_block()) << "budget " << budget;
   }
 }
 

@@ -239,6 +239,29 @@ TEST(World, BudgetRefusesAndCountsCosmeticFirst) {
   EXPECT_EQ(w.stats().refused_particles, 1100u + 400u);
 }
 
+// Every effect spawned again and again for five seconds: each live cluster's pool takes its room
+// from the world's store (none from the heap), the store hands out no less than the live
+// particles, and once every cluster has ended (and the step released it) all room is back.
+TEST(World, EveryPoolTakesItsRoomFromTheStoreAndGivesItBack) {
+  ParticleWorld w(ParticleConfig{.seed = 6, .budget = 60000}, &library());
+  std::vector<EffectHandle> handles;
+  for (uint64_t t = 1; t <= 300; ++t) {
+    if (t % 30 == 1)
+      for (const std::string& e : all_effects()) handles.push_back(w.spawn(e, SpawnParams{.position = {double(t % 7), 0, 0}}));
+    w.step(t, looking_at_origin());
+    const ParticleStats st = w.stats();
+    ASSERT_EQ(st.pools_on_heap, 0u) << "tick " << t;
+    ASSERT_GE(st.store_in_use, st.live_particles) << "tick " << t;
+    ASSERT_LE(st.store_in_use, st.store_capacity) << "tick " << t;
+  }
+  EXPECT_GT(w.stats().live_particles, 1000u);
+  EXPECT_GE(w.stats().store_capacity, 60000u);
+  for (const EffectHandle& h : handles) w.destroy(h);
+  w.step(301, looking_at_origin());
+  EXPECT_EQ(w.stats().live_clusters, 0u);
+  EXPECT_EQ(w.stats().store_in_use, 0u);
+}
+
 TEST(World, OutputIsCameraRelativeAndIndependentOfWorldOffset) {
   auto run = [](glm::dvec3 offset) {
     ParticleWorld w(ParticleConfig{.seed = 4}, &library());
