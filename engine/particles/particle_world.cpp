@@ -304,14 +304,16 @@ struct ParticleWorld::Impl : ParticleWorldState {
 
 // ---- public API -------------------------------------------------------------------------------
 
-ParticleWorld::ParticleWorld(const ParticleConfig& config, const EffectLibrary* effects) : impl_(std::make_unique<Impl>()) {
+ParticleWorld::ParticleWorld(const ParticleConfig& config, const EffectLibrary* effects, std::shared_ptr<ParticleStore> store)
+    : impl_(std::make_unique<Impl>()) {
   impl_->config = config;
   impl_->effects = effects;
-  impl_->store = std::make_shared<ParticleStore>(config.budget);
+  impl_->store = store && store->capacity() >= config.budget ? std::move(store) : std::make_shared<ParticleStore>(config.budget);
   impl_->scratch = ParticlePool(impl_->store.get());
   impl_->reserve_slots();
 }
 ParticleWorld::~ParticleWorld() = default;
+std::shared_ptr<ParticleStore> ParticleWorld::store() const { return impl_->store; }
 ParticleWorldState& ParticleWorldAccess::state(ParticleWorld& w) { return *w.impl_; }
 const ParticleWorldState& ParticleWorldAccess::state(const ParticleWorld& w) { return *w.impl_; }
 ParticleWorld::ParticleWorld(const ParticleWorld& o) : impl_(std::make_unique<Impl>(*o.impl_)) {}

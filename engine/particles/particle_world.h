@@ -113,10 +113,17 @@ struct ParticleCamera {
   glm::dvec3 velocity{0.0};  // m/s: velocity-stretched particles streak along their motion relative to it
 };
 
+class ParticleStore;
+
 class ParticleWorld {
  public:
-  ParticleWorld(const ParticleConfig& config, const EffectLibrary* effects);
+  // The world makes its particle store (particle_store.h) at the budget, or takes `store` when
+  // given one at least that large: a tool that remakes its world often (the workbench's
+  // timeline, on every scrub back) keeps one store instead of writing a new one through each time.
+  ParticleWorld(const ParticleConfig& config, const EffectLibrary* effects, std::shared_ptr<ParticleStore> store = nullptr);
   ~ParticleWorld();
+  // The store its pools take their room from, to hand to the next world a tool makes.
+  std::shared_ptr<ParticleStore> store() const;
   ParticleWorld(const ParticleWorld&);             // deep copy (serialization test)
   ParticleWorld& operator=(const ParticleWorld&);
 

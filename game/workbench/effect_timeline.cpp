@@ -58,7 +58,10 @@ void EffectTimeline::restart() {
   config.tick_seconds = stage_.tick_seconds;
   config.budget = stage_.particle_budget;
   config.lightning_interval = stage_.lightning_interval;
-  world_ = std::make_unique<ParticleWorld>(config, library_.get());
+  // The old world goes first, so its blocks are back in the store the new one takes over.
+  world_.reset();
+  world_ = std::make_unique<ParticleWorld>(config, library_.get(), store_);
+  store_ = world_->store();
   SpawnParams params;
   if (stage_.motion == StageMotion::Circle) {
     params.owner = kStageOwner;

@@ -98,6 +98,22 @@ TEST(EffectTimeline, RunsUnderTheGivenParticleBudget) {
   EXPECT_GT(limited.world().stats().refused_particles, 0u);
 }
 
+// Scrubbing back remakes the world, but not its particle store (written through at the budget,
+// 20 MiB at 200 000): the new world takes the old one's, with all its room given back.
+TEST(EffectTimeline, ScrubbingBackKeepsTheParticleStore) {
+  EffectTimeline t(game_effects(), "ship_explosion");
+  t.scrub_to(30, stage_camera());
+  const std::shared_ptr<ParticleStore> store = t.world().store();
+  ASSERT_GT(t.world().stats().store_in_use, 0u);
+  t.scrub_to(10, stage_camera());
+  EXPECT_EQ(t.world().store(), store);
+  EXPECT_EQ(t.world().stats().pools_on_heap, 0u);
+  EXPECT_GT(t.world().stats().live_particles, 0u);
+  EffectTimeline fresh(game_effects(), "ship_explosion");
+  fresh.scrub_to(10, stage_camera());
+  EXPECT_EQ(t.world().stats().store_in_use, fresh.world().stats().store_in_use) << "the old world's blocks are back";
+}
+
 TEST(EffectTimeline, LifeEndsForBurstsAndLoopsForSteadyEmitters) {
   auto fx = game_effects();
   bool ends = false;
