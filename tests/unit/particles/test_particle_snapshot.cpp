@@ -11,6 +11,7 @@
 #include "core/hash.h"
 #include "particles/effect_library.h"
 #include "core/fast_hash.h"
+#include "particles/particle_store.h"
 #include "particles/particle_world.h"
 #include "core/snapshot_io.h"
 #include "particles/world_state.h"
@@ -177,12 +178,13 @@ TEST(ParticleSnapshot, FieldsBehindAValidChecksumAreCheckedOrHarmless) {
   const std::vector<uint8_t> bytes = a.world.save();
   const size_t end = bytes.size() - snapshot::kFrameTrailer;
   int errors = 0, loaded = 0;
+  auto store = std::make_shared<ParticleStore>(60000);  // one for every world below, made one at a time
   for (size_t at = snapshot::kFrameHeader; at < end; at += (at < 3000 ? 1 : 61)) {
     std::vector<uint8_t> bad = bytes;
     bad[at] = uint8_t(~bad[at]);
     const uint64_t c = snapshot::checksum(bad.data() + snapshot::kFrameHeader, end - snapshot::kFrameHeader);
     for (int i = 0; i < 8; ++i) bad[end + size_t(i)] = uint8_t(c >> (8 * i));
-    ParticleWorld w(ParticleConfig{.seed = 77, .budget = 60000}, &effects());
+    ParticleWorld w(ParticleConfig{.seed = 77, .budget = 60000}, &effects(), store);
     try {
       w.load(bad);
       for (uint64_t t = 61; t <= 63; ++t) w.step(t, camera());
@@ -195,6 +197,27 @@ TEST(ParticleSnapshot, FieldsBehindAValidChecksumAreCheckedOrHarmless) {
   }
   EXPECT_GT(errors, 50);
   EXPECT_GT(loaded, 50);
+}
+
+// The budget is the settings' range at most (1..4 000 000): a world's particle store is written
+// through at its budget, so a snapshot asking for more is refused before any of it is made.
+TEST(ParticleSnapshot, ABudgetAboveTheSettingsRangeIsRefused) {
+  Scene a;
+  const std::vector<uint8_t> bytes = a.world.save();
+  const size_t end = bytes.size() - snapshot::kFrameTrailer;
+  std::vector<uint8_t> bad = bytes;
+  const size_t budget_at = snapshot::kFrameHeader + 8;  // after the seed
+  const uint32_t too_many = 4'000'001;
+  for (int i = 0; i < 4; ++i) bad[budget_at + size_t(i)] = uint8_t(too_many >> (8 * i));
+  const uint64_t c = snapshot::checksum(bad.data() + snapshot::kFrameHeader, end - snapshot::kFrameHeader);
+  for (int i = 0; i < 8; ++i) bad[end + size_t(i)] = uint8_t(c >> (8 * i));
+  ParticleWorld w(ParticleConfig{.seed = 77, .budget = 60000}, &effects());
+  try {
+    w.load(bad);
+    ADD_FAILURE() << "a budget of 4 000 001 was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("particle budget 4000001 is outside 1..4000000"), std::string::npos) << e.what();
+  }
 }
 
 // A member added to Cluster or LightningChannel and not to its visitor makes the aggregate count
