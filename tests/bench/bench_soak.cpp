@@ -11,6 +11,7 @@
 //                                    grows on; pools and buffers reaching their high-water mark stop)
 //   soak_render_rss_growth_fraction  the same over the rendered ten minutes
 //   soak_max_particles               live particles, the most at any tick
+//   soak_max_pools_on_heap           live pools the particle store could not serve, the most at any tick
 //   soak_restarts                    battles decided and restarted
 //   soak_game_minutes                game minutes run in all (ARCFIRE_SOAK_MINUTES=N shortens the hour,
 //                                    ARCFIRE_SOAK_RENDER_MINUTES=N sets the rendered part, 0 skips it)
@@ -86,6 +87,7 @@ struct SoakRun {
   int restarts = 0;
   int64_t decided_at = -1;  // game tick (of the soak) a battle was decided
   size_t max_particles = 0;
+  uint32_t max_pools_on_heap = 0;  // pools the particle store could not serve (particle_store.h)
   bool failed = false;
   Game game = load(1);
 
@@ -103,7 +105,9 @@ struct SoakRun {
     in.throttle = 64;
     in.buttons = kFirePrimary;
     game.step(in);
-    max_particles = std::max<size_t>(max_particles, game.world().particles->stats().live_particles);
+    const ParticleStats st = game.world().particles->stats();
+    max_particles = std::max<size_t>(max_particles, st.live_particles);
+    max_pools_on_heap = std::max(max_pools_on_heap, st.pools_on_heap);
     if (game.world().outcome == Outcome::Undecided) return;
     if (decided_at < 0) decided_at = soak_tick;
     if (soak_tick - decided_at < 300) return;
@@ -190,6 +194,7 @@ ARCFIRE_SCENE_ON_REQUEST(soak) {
   bench::report_metric("soak_rss_growth_second_half_fraction", headless_mib.back() / headless_mib[headless_mib.size() / 2] - 1.0);
   if (!render_mib.empty()) bench::report_metric("soak_render_rss_growth_fraction", growth(render_mib));
   bench::report_metric("soak_max_particles", double(run.max_particles));
+  bench::report_metric("soak_max_pools_on_heap", double(run.max_pools_on_heap));
   bench::report_metric("soak_restarts", run.restarts);
   bench::report_metric("soak_game_minutes", double(tick) / double(per_minute));
 }
