@@ -98,7 +98,8 @@ void ParticleBatch::prepare(const RenderView& v, const ViewProjection& vp, const
     areas.erase(areas.begin(), areas.begin() + std::ptrdiff_t(areas.size() - options.max_particles));
   }
   // Runs by program, from the particles that are drawn; the depth copy only for a soft run.
-  group_runs(particles, areas, options.max_runs, runs);
+  screen_boxes(vp, float(v.camera.near_plane));
+  group_runs(particles, areas, boxes_, options.max_runs, runs);
   for (const ParticleInstance& q : particles) soft_shaded += needs_depth(q);
   for (const ParticleRun& r : runs) {
     any_soft = any_soft || r.soft;
@@ -135,6 +136,19 @@ void ParticleBatch::cull_and_flag(const RenderView& v, const ViewProjection& vp,
     if (soft_override >= 0) q.soft_edge = uint8_t(soft_override);
     if (q.soft_edge != 0 && !occluders_.soft_can_matter(q, b, near)) q.soft_edge |= kSoftClear;
     particles.push_back(q);
+  }
+}
+
+void ParticleBatch::screen_boxes(const ViewProjection& vp, float near) {
+  const glm::mat3 to_view(vp.view);
+  const float sx = vp.proj[0][0], sy = vp.proj[1][1];  // 1 / tan of the half-angles
+  const float inf = std::numeric_limits<float>::infinity();
+  boxes_.clear();
+  for (const ParticleInstance& p : particles) {
+    const float axis_len = std::sqrt(p.axis[0] * p.axis[0] + p.axis[1] * p.axis[1] + p.axis[2] * p.axis[2]);
+    const QuadFootprint f = quad_footprint(quad_bounds(p, to_view, axis_len), near);
+    if (f.whole_screen) boxes_.push_back({-inf, -inf, inf, inf});
+    else boxes_.push_back({f.x0 * sx, f.y0 * sy, f.x1 * sx, f.y1 * sy});
   }
 }
 

@@ -64,6 +64,8 @@ struct ParticleBatch {
   void cull_and_flag(const RenderView& view, const ViewProjection& vp, const glm::vec3& forward,
                      const ModelCoverBoxes& model_boxes, int soft_override);
   void sort(RenderSettings::Sorting sorting, const glm::vec3& forward);
+  void screen_boxes(const ViewProjection& vp, float near);  // boxes_ of `particles`
+  std::vector<ScreenBox> boxes_;
   std::vector<uint32_t> keys_, order_;  // depth keys of `particles`, and the sorted order
   std::vector<ParticleInstance> sorted_;
   std::vector<float> sorted_areas_;
