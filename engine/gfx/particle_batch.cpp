@@ -98,7 +98,8 @@ void ParticleBatch::prepare(const RenderView& v, const ViewProjection& vp, const
     areas.erase(areas.begin(), areas.begin() + std::ptrdiff_t(areas.size() - options.max_particles));
   }
   // Runs by program, from the particles that are drawn; the depth copy only for a soft run.
-  screen_boxes(vp, float(v.camera.near_plane));
+  boxes_.clear();
+  if (mixed_programs(particles)) screen_boxes(vp, float(v.camera.near_plane));
   group_runs(particles, areas, boxes_, options.max_runs, runs);
   for (const ParticleInstance& q : particles) soft_shaded += needs_depth(q);
   for (const ParticleRun& r : runs) {
@@ -143,7 +144,6 @@ void ParticleBatch::screen_boxes(const ViewProjection& vp, float near) {
   const glm::mat3 to_view(vp.view);
   const float sx = vp.proj[0][0], sy = vp.proj[1][1];  // 1 / tan of the half-angles
   const float inf = std::numeric_limits<float>::infinity();
-  boxes_.clear();
   for (const ParticleInstance& p : particles) {
     const float axis_len = std::sqrt(p.axis[0] * p.axis[0] + p.axis[1] * p.axis[1] + p.axis[2] * p.axis[2]);
     const QuadFootprint f = quad_footprint(quad_bounds(p, to_view, axis_len), near);

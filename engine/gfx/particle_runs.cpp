@@ -18,7 +18,7 @@ bool uses_contrast(const ParticleInstance& p) {
 
 // The screen as a grid of cells for the order constraints: a particle must be drawn after
 // every earlier one whose box shares a cell with its own, unless both are pure additive.
-constexpr int kCellsX = 64, kCellsY = 36;
+constexpr int kCellsX = 32, kCellsY = 18;
 
 struct CellRange {
   int x0, y0, x1, y1;  // inclusive
@@ -84,10 +84,24 @@ void order_by_run(std::vector<ParticleInstance>& particles, std::vector<float>& 
 
 bool needs_depth(const ParticleInstance& p) { return p.soft_edge != 0 && !(p.soft_edge & kSoftClear); }
 
+bool mixed_programs(const std::vector<ParticleInstance>& particles) {
+  return !particles.empty() && std::any_of(particles.begin(), particles.end(), [&](const ParticleInstance& p) {
+    return needs_depth(p) != needs_depth(particles[0]);
+  });
+}
+
 void group_runs(std::vector<ParticleInstance>& particles, std::vector<float>& areas, const std::vector<ScreenBox>& boxes,
                 int max_runs, std::vector<ParticleRun>& runs, double min_hard_pixels) {
   runs.clear();
   if (particles.empty()) return;
+  if (!mixed_programs(particles)) {  // one program for all: one run in the batch's order
+    runs.push_back({0, uint32_t(particles.size()), needs_depth(particles[0]), false, 0.0});
+    for (size_t i = 0; i < particles.size(); ++i) {
+      runs[0].contrast = runs[0].contrast || uses_contrast(particles[i]);
+      runs[0].pixels += areas[i];
+    }
+    return;
+  }
   std::vector<uint32_t> run_of;
   assign_runs(particles, boxes, run_of);
   order_by_run(particles, areas, run_of);

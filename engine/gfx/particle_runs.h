@@ -11,7 +11,7 @@
 // The order matters only between particles that share a pixel, and not between two pure
 // additive ones (alpha·(1 − burn) = 0: they commute). So each particle goes to the earliest
 // run of its kind that comes at or after the run of every earlier particle it must follow:
-// one whose screen box shares a cell of a 64 × 36 grid with its own, unless both are pure
+// one whose screen box shares a cell of a 32 × 18 grid with its own, unless both are pure
 // additive. Effects in different parts of the screen then no longer interleave their soft and
 // hard particles, and each pixel still sees its blends in the batch's order. And because a
 // clear particle drawn with the soft program gets the same factor 1, the smallest hard runs
@@ -45,6 +45,10 @@ struct ScreenBox {
 
 // Soft factor possibly below 1: a soft method and not flagged kSoftClear.
 bool needs_depth(const ParticleInstance& p);
+
+// Whether some particles need the depth read and others do not (group_runs has more to do
+// than make one run).
+bool mixed_programs(const std::vector<ParticleInstance>& particles);
 
 // Reorders particles and areas into runs as above and fills `runs`: at most max(max_runs, 1).
 // boxes[i] is particles[i]'s screen box; with no boxes every particle shares every pixel (only
