@@ -69,8 +69,8 @@ ViewBox view_box(const Box3& box, const glm::dvec3& rel, const glm::dmat3& rot, 
 bool separated(const ViewBox& b, const glm::vec3 (&corners)[8]) {
   for (int i = 0; i < 3; ++i) {
     bool above = true, below = true;
-    for (const glm::vec3& q : corners) {
-      const float s = glm::dot(q, b.normal[i]) - b.middle[i];
+    for (int k = 0; k < 8 && (above || below); ++k) {
+      const float s = glm::dot(corners[k], b.normal[i]) - b.middle[i];
       above = above && s > b.half_width[i];
       below = below && s < -b.half_width[i];
     }
@@ -94,9 +94,12 @@ QuadBounds quad_bounds(const ParticleInstance& p, const glm::mat3& to_view, floa
 QuadFootprint quad_footprint(const QuadBounds& q, float near) {
   const glm::vec3& c = q.centre;
   const float d = -c.z;
-  const float dist = glm::length(c);
-  const float sine = dist > 0.0f ? std::sqrt(std::max(0.0f, 1.0f - (c.z / dist) * (c.z / dist))) : 1.0f;
-  const float spread = q.axis_locked ? q.radius * std::min(1.0f, sine + 1e-4f) : 0.0f;
+  float spread = 0.0f;
+  if (q.axis_locked) {
+    const float dist = glm::length(c);
+    const float sine = dist > 0.0f ? std::sqrt(std::max(0.0f, 1.0f - (c.z / dist) * (c.z / dist))) : 1.0f;
+    spread = q.radius * std::min(1.0f, sine + 1e-4f);
+  }
   QuadFootprint f;
   f.z0 = d - spread, f.z1 = d + spread;
   f.whole_screen = !(f.z0 > near);
@@ -176,15 +179,22 @@ bool OccluderSet::soft_can_matter(const ParticleInstance& p, const QuadBounds& q
   // there and the farthest the soft edges reach. It is convex, so a face slab of a part box
   // with all eight of its corners on one side has the whole volume there.
   glm::vec3 corners[8];
-  const float depths[2] = {std::max(front, near), reach};
-  for (int i = 0; i < 8; ++i) {
-    const float z = depths[i >> 2];
-    corners[i] = glm::vec3(((i & 1) ? f.x1 : f.x0) * z, ((i & 2) ? f.y1 : f.y0) * z, -z);
-  }
+  bool have_corners = false;
   for (const OccluderGroup& g : groups_) {
     if (!touches(g.bound)) continue;
-    for (size_t i = g.first; i < g.first + g.count; ++i)
-      if (touches(occluders_[i]) && (f.whole_screen || !separated(boxes_[i], corners))) return true;
+    for (size_t i = g.first; i < g.first + g.count; ++i) {
+      if (!touches(occluders_[i])) continue;
+      if (f.whole_screen) return true;
+      if (!have_corners) {
+        const float depths[2] = {std::max(front, near), reach};
+        for (int k = 0; k < 8; ++k) {
+          const float z = depths[k >> 2];
+          corners[k] = glm::vec3(((k & 1) ? f.x1 : f.x0) * z, ((k & 2) ? f.y1 : f.y0) * z, -z);
+        }
+        have_corners = true;
+      }
+      if (!separated(boxes_[i], corners)) return true;
+    }
   }
   return false;
 }

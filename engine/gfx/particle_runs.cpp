@@ -27,7 +27,8 @@ struct CellRange {
 CellRange cells_of(const ScreenBox& b) {
   auto cell = [](float v, int n) { return std::clamp(int(std::floor((v * 0.5f + 0.5f) * float(n))), 0, n - 1); };
   // NaN or unbounded boxes (whole screen) take every cell.
-  if (!(b.x0 >= -1.0f) || !(b.y0 >= -1.0f)) return {0, 0, kCellsX - 1, kCellsY - 1};
+  if (!std::isfinite(b.x0) || !std::isfinite(b.y0) || !std::isfinite(b.x1) || !std::isfinite(b.y1))
+    return {0, 0, kCellsX - 1, kCellsY - 1};
   return {cell(b.x0, kCellsX), cell(b.y0, kCellsY), cell(b.x1, kCellsX), cell(b.y1, kCellsY)};
 }
 
@@ -63,14 +64,20 @@ void assign_runs(const std::vector<ParticleInstance>& particles, const std::vect
 }
 
 // Particles and areas put in run order, each run keeping the particles' order (a counting sort).
+// Nothing moves when the runs are already in order. The copies are kept from call to call (per
+// thread): a batch of thousands of particles is a few hundred kilobytes, which a fresh
+// allocation would map and fault in every frame.
 void order_by_run(std::vector<ParticleInstance>& particles, std::vector<float>& areas,
                   const std::vector<uint32_t>& run_of) {
+  if (std::is_sorted(run_of.begin(), run_of.end())) return;
   const uint32_t runs = *std::max_element(run_of.begin(), run_of.end()) + 1;
   std::vector<uint32_t> start(runs + 1, 0);
   for (uint32_t r : run_of) ++start[r + 1];
   for (uint32_t r = 0; r < runs; ++r) start[r + 1] += start[r];
-  std::vector<ParticleInstance> p(particles.size());
-  std::vector<float> a(areas.size());
+  thread_local std::vector<ParticleInstance> p;
+  thread_local std::vector<float> a;
+  p.resize(particles.size());
+  a.resize(areas.size());
   for (size_t i = 0; i < particles.size(); ++i) {
     const uint32_t dst = start[run_of[i]]++;
     p[dst] = particles[i];
@@ -102,7 +109,7 @@ void group_runs(std::vector<ParticleInstance>& particles, std::vector<float>& ar
     }
     return;
   }
-  std::vector<uint32_t> run_of;
+  thread_local std::vector<uint32_t> run_of;
   assign_runs(particles, boxes, run_of);
   order_by_run(particles, areas, run_of);
   std::vector<ParticleRun> raw;

@@ -26,6 +26,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "gfx/particle_coverage.h"
 #include "particles/render_output.h"
 
 namespace arc {
@@ -35,12 +36,6 @@ struct ParticleRun {
   bool soft = false;              // drawn with a soft-edge program (reads the depth copy)
   bool contrast = false;          // a particle of the run uses the contrast curve
   double pixels = 0;              // estimated blended pixels of the run
-};
-
-// Where a particle's quad can be on screen, conservatively: x and y from −1 to 1 across the
-// view (y up). A box with x0 < −1 (or NaN) is taken as the whole screen.
-struct ScreenBox {
-  float x0, y0, x1, y1;
 };
 
 // Soft factor possibly below 1: a soft method and not flagged kSoftClear.

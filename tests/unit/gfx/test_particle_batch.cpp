@@ -187,6 +187,33 @@ TEST(ParticleBatch, ATiltedWallsPlaneKeepsParticlesInFrontOfItClear) {
   }
 }
 
+// The depth copy is filled only where a particle that reads it can be: the tiles of the soft
+// particle just in front of the wall (left of centre), not those of the clear ones beside it.
+TEST(ParticleBatch, MarksTheDepthReadsOfSoftParticlesOnly) {
+  ReachScene scene;
+  ParticleBatchOptions options;
+  options.width = 320, options.height = 320;  // the square view of base_view()
+  const ParticleBatch batch = prepare(scene.view, options, scene.boxes);
+  ASSERT_EQ(batch.soft_shaded, 1);
+  std::vector<PixelRect> rects;
+  batch.depth_reads.rects(rects);
+  ASSERT_FALSE(rects.empty());
+  // The soft one is at x = −3 at depth 9.8 (tan 0.45 = 0.483 across half the view): about
+  // pixel 58 of 320, size 0.5 (8 pixels), so within the first few 32-pixel tiles.
+  for (const PixelRect& r : rects) {
+    EXPECT_LT(r.x1, 160) << "nothing right of the centre";
+    EXPECT_LE(r.x0, 58);
+    EXPECT_GE(r.x1, 58);
+  }
+  EXPECT_LT(batch.depth_reads.share(), 0.1);
+  // Every particle soft and reaching a surface: the whole screen.
+  RenderView v = scene.view;
+  v.particles = {v.particles[0]};
+  const ParticleBatch one = prepare(v, options, scene.boxes);
+  ASSERT_EQ(one.soft_shaded, 1);
+  EXPECT_EQ(one.depth_reads.share(), 1.0);
+}
+
 TEST(ParticleBatch, SoftOverrideAppliesToEveryParticle) {
   ReachScene scene;
   ParticleBatchOptions options;
