@@ -2,9 +2,11 @@
 //
 // Soft edges change a particle's pixels only where an opaque surface lies within its depth
 // extent. Each frame the part boxes of every visible mesh instance (cover_boxes.h) become
-// Occluders: a view-depth range and a screen rectangle in tangent units. soft_can_matter()
-// asks, conservatively, whether any of them can reach a particle's quad (QuadBounds); a
-// particle none reaches is flagged kSoftClear, skips the depth read and stays bit-identical.
+// Occluders: a view-depth range and a screen rectangle in tangent units, and ViewBoxes: the
+// box's three face slabs in view space. soft_can_matter() asks, conservatively, whether any of
+// them can reach a particle's quad (QuadBounds): the rectangle and depth range first, then
+// whether a face plane has the particle's whole reach volume on its far side. A particle none
+// reaches is flagged kSoftClear, skips the depth read and stays bit-identical.
 //
 //   OccluderSet occluders;
 //   occluders.gather(view, model_boxes, to_view, tan_half_x, tan_half_y);
