@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -178,7 +179,7 @@ void OverdrawBudget::update_caps(const std::vector<ParticleInstance>& particles,
 }
 
 OverdrawStats OverdrawBudget::apply(std::vector<ParticleInstance>& particles, std::vector<float>& areas,
-                                    const OverdrawFrame& frame, const OverdrawOptions& o) {
+                                    const OverdrawFrame& frame, const OverdrawOptions& o, std::vector<ScreenBox>* boxes) {
   OverdrawStats s;
   const double screen = double(frame.width) * double(frame.height);
   double fixed = 0;
@@ -191,6 +192,10 @@ OverdrawStats OverdrawBudget::apply(std::vector<ParticleInstance>& particles, st
   s.cap = target < k_none * 0.999 ? target : 0.0;
 
   areas.resize(particles.size());
+  if (boxes) boxes->clear();
+  // Screen boxes in units of half the screen, a pixel wider each way than the estimate.
+  const float to_x = 2.0f / float(frame.width), to_y = 2.0f / float(frame.height);
+  const float inf = std::numeric_limits<float>::infinity();
   size_t kept = 0;
   uint32_t cluster = 0;
   double k = k_none;
@@ -215,6 +220,10 @@ OverdrawStats OverdrawBudget::apply(std::vector<ParticleInstance>& particles, st
       area = float(std::min(area_at(uint32_t(i), k), screen));
     }
     s.budgeted_layers += area;
+    if (boxes && f.past_near) boxes->push_back({-inf, -inf, inf, inf});
+    else if (boxes)
+      boxes->push_back({(f.x - f.hx - 1.0f) * to_x - 1.0f, (f.y - f.hy - 1.0f) * to_y - 1.0f,
+                        (f.x + f.hx + 1.0f) * to_x - 1.0f, (f.y + f.hy + 1.0f) * to_y - 1.0f});
     areas[kept] = area;
     particles[kept++] = p;
   }

@@ -74,9 +74,10 @@ constexpr float kOverdrawFadeGamma[3] = {1.0f, 0.25f, 0.0f};
 class OverdrawBudget {
  public:
   // Estimates, and reduces in place when over budget; `areas` gets each remaining particle's
-  // estimated blended pixels, in the order of `particles` (dropped ones are erased from both).
+  // estimated blended pixels, in the order of `particles` (dropped ones are erased from both),
+  // and `boxes`, when given, each one's screen box before any reduction (which only shrinks).
   OverdrawStats apply(std::vector<ParticleInstance>& particles, std::vector<float>& areas, const OverdrawFrame& frame,
-                      const OverdrawOptions& options);
+                      const OverdrawOptions& options, std::vector<ScreenBox>* boxes = nullptr);
   // Marks the screen box of every particle the last apply() was given (before any reduction,
   // which only shrinks them): the tiles the frame's particles can touch.
   void mark_coverage(ParticleCoverage& coverage) const;

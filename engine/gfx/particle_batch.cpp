@@ -74,7 +74,7 @@ void ParticleBatch::prepare(const RenderView& v, const ViewProjection& vp, const
   cull_and_flag(v, vp, forward, model_boxes, options.soft_override);
   const OverdrawFrame frame{glm::mat3(vp.view), 1.0f / vp.proj[1][1], float(v.camera.near_plane), options.size_clamp,
                             options.width, options.height, v.time_seconds};
-  overdraw = budget_.apply(particles, areas, frame, options.overdraw);
+  overdraw = budget_.apply(particles, areas, frame, options.overdraw, &boxes_);
   coverage.reset(options.width, options.height);
   budget_.mark_coverage(coverage);
   visible = int(particles.size());
@@ -96,9 +96,13 @@ void ParticleBatch::prepare(const RenderView& v, const ViewProjection& vp, const
     over_draw_limit = int(particles.size() - options.max_particles);
     particles.erase(particles.begin(), particles.begin() + std::ptrdiff_t(particles.size() - options.max_particles));
     areas.erase(areas.begin(), areas.begin() + std::ptrdiff_t(areas.size() - options.max_particles));
+    boxes_.erase(boxes_.begin(), boxes_.begin() + std::ptrdiff_t(boxes_.size() - options.max_particles));
   }
   // Runs by program, from the particles that are drawn; the depth copy only for a soft run.
-  group_runs(particles, areas, options.max_runs, runs);
+  depth_reads.reset(options.width, options.height);
+  if (mixed_programs(particles)) mark_depth_reads(options.width, options.height);
+  else if (needs_depth(particles[0])) depth_reads.add_whole_screen();
+  group_runs(particles, areas, boxes_, options.max_runs, runs);
   for (const ParticleInstance& q : particles) soft_shaded += needs_depth(q);
   for (const ParticleRun& r : runs) {
     any_soft = any_soft || r.soft;
@@ -138,17 +142,32 @@ void ParticleBatch::cull_and_flag(const RenderView& v, const ViewProjection& vp,
   }
 }
 
+// The tiles of the soft particles' screen boxes: only there does a fragment read the depth
+// copy (a clear particle drawn by the soft program computes the read and discards it).
+void ParticleBatch::mark_depth_reads(int width, int height) {
+  const float hw = 0.5f * float(width), hh = 0.5f * float(height);
+  for (size_t i = 0; i < particles.size(); ++i) {
+    if (!needs_depth(particles[i])) continue;
+    const ScreenBox& b = boxes_[i];
+    depth_reads.add_box((0.5f * (b.x0 + b.x1) + 1.0f) * hw, (0.5f * (b.y0 + b.y1) + 1.0f) * hh, 0.5f * (b.x1 - b.x0) * hw,
+                        0.5f * (b.y1 - b.y0) * hh);
+  }
+}
+
 void ParticleBatch::sort(RenderSettings::Sorting sorting, const glm::vec3& forward) {
   if (sorting == RenderSettings::Sorting::Cluster) cluster_depth_keys(particles, forward, keys_);
   radix_sort_back_to_front(keys_, order_);
   sorted_.resize(particles.size());
   sorted_areas_.resize(areas.size());
+  sorted_boxes_.resize(boxes_.size());
   for (size_t i = 0; i < order_.size(); ++i) {
     sorted_[i] = particles[order_[i]];
     sorted_areas_[i] = areas[order_[i]];
+    sorted_boxes_[i] = boxes_[order_[i]];
   }
   particles.swap(sorted_);
   areas.swap(sorted_areas_);
+  boxes_.swap(sorted_boxes_);
   sorted = int(particles.size());
 }
 

@@ -47,6 +47,7 @@ struct ParticleBatch {
   std::vector<float> areas;
   std::vector<ParticleRun> runs;  // spans of `particles`, one draw each
   ParticleCoverage coverage;      // the scene tiles the particles can touch (particle_coverage.h)
+  ParticleCoverage depth_reads;   // the scene tiles where a soft particle can read the depth copy
   OverdrawStats overdraw;
   int visible = 0;           // kept before the draw limit (FrameStats::particles_drawn)
   int culled_offscreen = 0;  // quad wholly outside a side of the frustum
@@ -64,6 +65,8 @@ struct ParticleBatch {
   void cull_and_flag(const RenderView& view, const ViewProjection& vp, const glm::vec3& forward,
                      const ModelCoverBoxes& model_boxes, int soft_override);
   void sort(RenderSettings::Sorting sorting, const glm::vec3& forward);
+  void mark_depth_reads(int width, int height);  // depth_reads from boxes_
+  std::vector<ScreenBox> boxes_, sorted_boxes_;  // screen boxes of `particles` (the budget's estimate)
   std::vector<uint32_t> keys_, order_;  // depth keys of `particles`, and the sorted order
   std::vector<ParticleInstance> sorted_;
   std::vector<float> sorted_areas_;

@@ -24,6 +24,13 @@ struct PixelRect {
   int x0, y0, x1, y1;  // [x0, x1) × [y0, y1), GL window pixels (y up)
 };
 
+// Where a particle's quad can be on screen, conservatively: x and y from −1 to 1 across the
+// view (y up), beyond that where it reaches off screen. A box that is not finite (a quad
+// reaching past the near plane) is taken as the whole screen.
+struct ScreenBox {
+  float x0, y0, x1, y1;
+};
+
 class ParticleCoverage {
  public:
   static constexpr int kTile = 32;       // pixels along a tile's side

@@ -45,6 +45,40 @@ bool project_box(const Box3& box, const glm::dvec3& rel, const glm::dmat3& rot, 
   return true;
 }
 
+// The part box's slabs in view space, under the same transform as project_box.
+ViewBox view_box(const Box3& box, const glm::dvec3& rel, const glm::dmat3& rot, const glm::mat3& to_view) {
+  const glm::dvec3 mid = (glm::dvec3(box.lo) + glm::dvec3(box.hi)) * 0.5;
+  const glm::dvec3 half = (glm::dvec3(box.hi) - glm::dvec3(box.lo)) * 0.5;
+  const glm::vec3 centre = to_view * glm::vec3(rel + rot * mid);
+  glm::vec3 edge[3];
+  for (int i = 0; i < 3; ++i) edge[i] = to_view * glm::vec3(rot[i] * half[i]);
+  ViewBox b;
+  for (int i = 0; i < 3; ++i) {
+    const glm::vec3 n = glm::cross(edge[(i + 1) % 3], edge[(i + 2) % 3]);
+    const float len = glm::length(n);
+    b.normal[i] = len > 0.0f ? n / len : glm::vec3(0.0f);
+    b.middle[i] = glm::dot(centre, b.normal[i]);
+    // The other two edges lie in the slab's plane; only edge i reaches across it.
+    const float width = std::abs(glm::dot(edge[i], b.normal[i]));
+    b.half_width[i] = width + 1e-4f * (glm::length(centre) + width) + 1e-5f;
+  }
+  return b;
+}
+
+// Whether one face slab of `b` has all eight corners of a reach volume on one side.
+bool separated(const ViewBox& b, const glm::vec3 (&corners)[8]) {
+  for (int i = 0; i < 3; ++i) {
+    bool above = true, below = true;
+    for (int k = 0; k < 8 && (above || below); ++k) {
+      const float s = glm::dot(corners[k], b.normal[i]) - b.middle[i];
+      above = above && s > b.half_width[i];
+      below = below && s < -b.half_width[i];
+    }
+    if (above || below) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 QuadBounds quad_bounds(const ParticleInstance& p, const glm::mat3& to_view, float axis_len) {
@@ -55,6 +89,30 @@ QuadBounds quad_bounds(const ParticleInstance& p, const glm::mat3& to_view, floa
   b.half_long = b.axis_locked ? 0.5f * axis_len + b.size : b.size;
   b.radius = std::sqrt(b.size * b.size + b.half_long * b.half_long) * 1.001f;
   return b;
+}
+
+QuadFootprint quad_footprint(const QuadBounds& q, float near) {
+  const glm::vec3& c = q.centre;
+  const float d = -c.z;
+  float spread = 0.0f;
+  if (q.axis_locked) {
+    const float dist = glm::length(c);
+    const float sine = dist > 0.0f ? std::sqrt(std::max(0.0f, 1.0f - (c.z / dist) * (c.z / dist))) : 1.0f;
+    spread = q.radius * std::min(1.0f, sine + 1e-4f);
+  }
+  QuadFootprint f;
+  f.z0 = d - spread, f.z1 = d + spread;
+  f.whole_screen = !(f.z0 > near);
+  if (f.whole_screen) {
+    f.x0 = f.y0 = f.x1 = f.y1 = 0.0f;
+    return f;
+  }
+  // A side's extreme tangent is at the nearest depth when it lies that way from the axis.
+  auto lo = [&](float a) { return a < 0.0f ? a / f.z0 : a / f.z1; };
+  auto hi = [&](float b) { return b < 0.0f ? b / f.z1 : b / f.z0; };
+  f.x0 = lo(c.x - q.radius), f.x1 = hi(c.x + q.radius);
+  f.y0 = lo(c.y - q.radius), f.y1 = hi(c.y + q.radius);
+  return f;
 }
 
 Occluder Occluder::none() {
@@ -71,6 +129,7 @@ void Occluder::include(const Occluder& o) {
 void OccluderSet::gather(const RenderView& v, const ModelCoverBoxes& model_boxes, const glm::mat3& to_view, float tan_x,
                          float tan_y) {
   occluders_.clear();
+  boxes_.clear();
   groups_.clear();
   const float near = float(v.camera.near_plane);
   const float mx = tan_x * 1.01f, my = tan_y * 1.01f;
@@ -85,6 +144,7 @@ void OccluderSet::gather(const RenderView& v, const ModelCoverBoxes& model_boxes
     for (const Box3& part : model_boxes[inst.model.index()]) {
       if (!project_box(part, rel, rot, to_view, near, mx, my, o)) continue;
       occluders_.push_back(o);
+      boxes_.push_back(view_box(part, rel, rot, to_view));
       group.bound.include(o);
       ++group.count;
     }
@@ -100,40 +160,41 @@ void OccluderSet::gather(const RenderView& v, const ModelCoverBoxes& model_boxes
 // gives exactly 1 (linear and contrast reach 1 at zb − z ≥ E, average density at E/2, density
 // extent at E·texture alpha); in front of it the depth test rejects the fragment whatever the
 // factor. When no mesh box reaches into the range, the particle can skip the depth read and
-// stay bit-identical. With the bounds of QuadBounds: a camera-facing quad is built from
-// view-space axes, so it lies at one view depth; an axis-locked quad lies in the plane through
-// its centre square to the view ray, so its view depth varies by at most its radius times the
-// sine of the ray's angle to the view axis.
+// stay bit-identical. The quad's depths and footprint are those of quad_footprint().
 bool OccluderSet::soft_can_matter(const ParticleInstance& p, const QuadBounds& q, float near) const {
-  const glm::vec3& c = q.centre;
-  float d = -c.z;
+  const QuadFootprint f = quad_footprint(q, near);
   float extent = p.soft_extent > 0.0f ? p.soft_extent : q.size;
-  float dist = glm::length(c);
-  float sine = dist > 0.0f ? std::sqrt(std::max(0.0f, 1.0f - (c.z / dist) * (c.z / dist))) : 1.0f;
-  float spread = q.axis_locked ? q.radius * std::min(1.0f, sine + 1e-4f) : 0.0f;
-  float reach = d + spread + extent * 1.001f;
+  float reach = f.z1 + extent * 1.001f;
   uint8_t method = p.soft_edge & ~kSoftClear;
   float push = method == uint8_t(SoftEdge::AverageDensity) ? 0.5f * extent
                : method == uint8_t(SoftEdge::DensityExtent) ? extent
                                                            : 0.0f;
-  float front = d - spread - push * 1.001f;
-  float z0 = d - spread, z1 = d + spread;
-  bool whole_screen = !(z0 > near);
-  // The quad's footprint in tangent units; pushing it along the view ray (density methods)
-  // keeps the footprint.
-  auto lo = [&](float a) { return a < 0.0f ? a / z0 : a / z1; };
-  auto hi = [&](float b) { return b < 0.0f ? b / z1 : b / z0; };
-  float x0 = whole_screen ? 0.0f : lo(c.x - q.radius), x1 = whole_screen ? 0.0f : hi(c.x + q.radius);
-  float y0 = whole_screen ? 0.0f : lo(c.y - q.radius), y1 = whole_screen ? 0.0f : hi(c.y + q.radius);
+  float front = f.z0 - push * 1.001f;
   auto touches = [&](const Occluder& o) {
     return o.nearest < reach && o.farthest > front &&
-           (whole_screen || (o.x0 <= x1 && x0 <= o.x1 && o.y0 <= y1 && y0 <= o.y1));
+           (f.whole_screen || (o.x0 <= f.x1 && f.x0 <= o.x1 && o.y0 <= f.y1 && f.y0 <= o.y1));
   };
   if (groups_.empty() || !touches(bounds_)) return false;
+  // The reach volume: the footprint's rays between the nearest depth a drawn surface can have
+  // there and the farthest the soft edges reach. It is convex, so a face slab of a part box
+  // with all eight of its corners on one side has the whole volume there.
+  glm::vec3 corners[8];
+  bool have_corners = false;
   for (const OccluderGroup& g : groups_) {
     if (!touches(g.bound)) continue;
-    for (size_t i = g.first; i < g.first + g.count; ++i)
-      if (touches(occluders_[i])) return true;
+    for (size_t i = g.first; i < g.first + g.count; ++i) {
+      if (!touches(occluders_[i])) continue;
+      if (f.whole_screen) return true;
+      if (!have_corners) {
+        const float depths[2] = {std::max(front, near), reach};
+        for (int k = 0; k < 8; ++k) {
+          const float z = depths[k >> 2];
+          corners[k] = glm::vec3(((k & 1) ? f.x1 : f.x0) * z, ((k & 2) ? f.y1 : f.y0) * z, -z);
+        }
+        have_corners = true;
+      }
+      if (!separated(boxes_[i], corners)) return true;
+    }
   }
   return false;
 }

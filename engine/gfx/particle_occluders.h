@@ -2,9 +2,11 @@
 //
 // Soft edges change a particle's pixels only where an opaque surface lies within its depth
 // extent. Each frame the part boxes of every visible mesh instance (cover_boxes.h) become
-// Occluders: a view-depth range and a screen rectangle in tangent units. soft_can_matter()
-// asks, conservatively, whether any of them can reach a particle's quad (QuadBounds); a
-// particle none reaches is flagged kSoftClear, skips the depth read and stays bit-identical.
+// Occluders: a view-depth range and a screen rectangle in tangent units, and ViewBoxes: the
+// box's three face slabs in view space. soft_can_matter() asks, conservatively, whether any of
+// them can reach a particle's quad (QuadBounds): the rectangle and depth range first, then
+// whether a face plane has the particle's whole reach volume on its far side. A particle none
+// reaches is flagged kSoftClear, skips the depth read and stays bit-identical.
 //
 //   OccluderSet occluders;
 //   occluders.gather(view, model_boxes, to_view, tan_half_x, tan_half_y);
@@ -39,6 +41,19 @@ struct QuadBounds {
 // `axis_len` is the length of the particle's axis (used only when it is axis-locked).
 QuadBounds quad_bounds(const ParticleInstance& p, const glm::mat3& to_view, float axis_len);
 
+// Where a quad lies on screen, in tangent units (x/depth, y/depth), and the view depths it
+// spans (a camera-facing quad one depth, an axis-locked one tilted by up to its radius times
+// the sine of the view ray's angle to the view axis). A quad that reaches the near plane has an
+// unbounded projection: whole_screen, and the rectangle is meaningless. Pushing a quad along the
+// view ray (the density methods) keeps its footprint.
+struct QuadFootprint {
+  float x0, y0, x1, y1;
+  float z0, z1;  // nearest and farthest view depth
+  bool whole_screen;
+};
+
+QuadFootprint quad_footprint(const QuadBounds& q, float near);
+
 // An opaque mesh as the particle pass sees it: the view depth range of its box and the box's
 // screen rectangle in tangent units (x/depth, y/depth); infinite when the box crosses the near
 // plane.
@@ -48,6 +63,16 @@ struct Occluder {
   // Covers nothing: the identity of include().
   static Occluder none();
   void include(const Occluder& o);
+};
+
+// A part box in view space as the three slabs between its opposite faces: the set of points p
+// with |dot(p, normal[i]) − middle[i]| ≤ half_width[i] for each i (widened a little for the
+// GPU's float rounding). A face plane separates a box from a particle's reach where the box's
+// screen rectangle and depth range alone cannot: a tilted wall's rectangle and depth range
+// cover much of the screen and many depths, its surface only one depth at each pixel.
+struct ViewBox {
+  glm::vec3 normal[3];  // unit, or zero for a degenerate pair of edges (then never separating)
+  float middle[3], half_width[3];
 };
 
 // One mesh instance: the union of its part boxes' occluders, and where they are.
@@ -71,6 +96,7 @@ class OccluderSet {
 
  private:
   std::vector<Occluder> occluders_;  // one per part box of each visible mesh instance
+  std::vector<ViewBox> boxes_;       // the same part boxes, in view space
   std::vector<OccluderGroup> groups_;
   Occluder bounds_ = Occluder::none();  // union of all: most particles of a frame fall outside it
 };

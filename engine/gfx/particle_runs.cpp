@@ -1,7 +1,8 @@
-// gfx/particle_runs.cpp — additive regrouping, runs by shader variant, folding small hard runs (no GL).
+// gfx/particle_runs.cpp — runs by shader variant under the order constraints, folding small hard runs (no GL).
 #include "gfx/particle_runs.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 #include "gfx/particle_occluders.h"
@@ -15,48 +16,102 @@ bool uses_contrast(const ParticleInstance& p) {
   return needs_depth(p) && (p.soft_edge & 0x7F) == uint8_t(SoftEdge::Contrast);
 }
 
-// Within each stretch of pure additive particles, those of `first` kind (soft or hard) come
-// first: the previous particle's kind, or when the stretch opens the batch, the kind the next
-// particle does not have.
-void regroup_additive(std::vector<ParticleInstance>& particles, std::vector<float>& areas) {
-  std::vector<ParticleInstance> tail;
-  std::vector<float> tail_areas;
+// The screen as a grid of cells for the order constraints: a particle must be drawn after
+// every earlier one whose box shares a cell with its own, unless both are pure additive.
+constexpr int kCellsX = 32, kCellsY = 18;
+
+struct CellRange {
+  int x0, y0, x1, y1;  // inclusive
+};
+
+CellRange cells_of(const ScreenBox& b) {
+  auto cell = [](float v, int n) { return std::clamp(int(std::floor((v * 0.5f + 0.5f) * float(n))), 0, n - 1); };
+  // NaN or unbounded boxes (whole screen) take every cell.
+  if (!std::isfinite(b.x0) || !std::isfinite(b.y0) || !std::isfinite(b.x1) || !std::isfinite(b.y1))
+    return {0, 0, kCellsX - 1, kCellsY - 1};
+  return {cell(b.x0, kCellsX), cell(b.y0, kCellsY), cell(b.x1, kCellsX), cell(b.y1, kCellsY)};
+}
+
+// Gives each particle the earliest run it can take: runs alternate between the two programs
+// (run 0 has the first particle's), and a particle's run is at or after the run of every
+// earlier particle it must follow (one that shares a cell with it, unless both are pure
+// additive). Particles of one run keep their order, so every pixel sees the blends it saw.
+void assign_runs(const std::vector<ParticleInstance>& particles, const std::vector<ScreenBox>& boxes,
+                 std::vector<uint32_t>& run_of) {
   const size_t n = particles.size();
-  for (size_t i = 0; i < n;) {
-    if (ordered(particles[i])) {
-      ++i;
-      continue;
-    }
-    size_t j = i;
-    while (j < n && !ordered(particles[j])) ++j;
-    const bool first = i > 0 ? needs_depth(particles[i - 1]) : j < n ? !needs_depth(particles[j]) : false;
-    tail.clear();
-    tail_areas.clear();
-    size_t out = i;
-    for (size_t k = i; k < j; ++k) {
-      if (needs_depth(particles[k]) == first) {
-        particles[out] = particles[k];
-        areas[out++] = areas[k];
-      } else {
-        tail.push_back(particles[k]);
-        tail_areas.push_back(areas[k]);
+  run_of.resize(n);
+  const bool first_soft = needs_depth(particles[0]);
+  std::vector<int> after_all(boxes.empty() ? 1 : kCellsX * kCellsY, -1);  // latest run of any particle
+  std::vector<int> after_ordered(after_all.size(), -1);                   // latest run of an ordered one
+  for (size_t i = 0; i < n; ++i) {
+    const bool is_ordered = ordered(particles[i]);
+    const std::vector<int>& must_follow = is_ordered ? after_all : after_ordered;
+    const CellRange c = boxes.empty() ? CellRange{0, 0, 0, 0} : cells_of(boxes[i]);
+    const int w = boxes.empty() ? 1 : kCellsX;
+    int latest = 0;
+    for (int y = c.y0; y <= c.y1; ++y)
+      for (int x = c.x0; x <= c.x1; ++x) latest = std::max(latest, must_follow[size_t(y * w + x)]);
+    const bool run_soft = first_soft == (latest % 2 == 0);
+    const int run = run_soft == needs_depth(particles[i]) ? latest : latest + 1;
+    run_of[i] = uint32_t(run);
+    for (int y = c.y0; y <= c.y1; ++y)
+      for (int x = c.x0; x <= c.x1; ++x) {
+        const size_t k = size_t(y * w + x);
+        after_all[k] = std::max(after_all[k], run);
+        if (is_ordered) after_ordered[k] = std::max(after_ordered[k], run);
       }
-    }
-    std::copy(tail.begin(), tail.end(), particles.begin() + std::ptrdiff_t(out));
-    std::copy(tail_areas.begin(), tail_areas.end(), areas.begin() + std::ptrdiff_t(out));
-    i = j;
   }
+}
+
+// Particles and areas put in run order, each run keeping the particles' order (a counting sort).
+// Nothing moves when the runs are already in order. The copies are kept from call to call (per
+// thread): a batch of thousands of particles is a few hundred kilobytes, which a fresh
+// allocation would map and fault in every frame.
+void order_by_run(std::vector<ParticleInstance>& particles, std::vector<float>& areas,
+                  const std::vector<uint32_t>& run_of) {
+  if (std::is_sorted(run_of.begin(), run_of.end())) return;
+  const uint32_t runs = *std::max_element(run_of.begin(), run_of.end()) + 1;
+  std::vector<uint32_t> start(runs + 1, 0);
+  for (uint32_t r : run_of) ++start[r + 1];
+  for (uint32_t r = 0; r < runs; ++r) start[r + 1] += start[r];
+  thread_local std::vector<ParticleInstance> p;
+  thread_local std::vector<float> a;
+  p.resize(particles.size());
+  a.resize(areas.size());
+  for (size_t i = 0; i < particles.size(); ++i) {
+    const uint32_t dst = start[run_of[i]]++;
+    p[dst] = particles[i];
+    a[dst] = areas[i];
+  }
+  particles.swap(p);
+  areas.swap(a);
 }
 
 }  // namespace
 
 bool needs_depth(const ParticleInstance& p) { return p.soft_edge != 0 && !(p.soft_edge & kSoftClear); }
 
-void group_runs(std::vector<ParticleInstance>& particles, std::vector<float>& areas, int max_runs,
-                std::vector<ParticleRun>& runs, double min_hard_pixels) {
+bool mixed_programs(const std::vector<ParticleInstance>& particles) {
+  return !particles.empty() && std::any_of(particles.begin(), particles.end(), [&](const ParticleInstance& p) {
+    return needs_depth(p) != needs_depth(particles[0]);
+  });
+}
+
+void group_runs(std::vector<ParticleInstance>& particles, std::vector<float>& areas, const std::vector<ScreenBox>& boxes,
+                int max_runs, std::vector<ParticleRun>& runs, double min_hard_pixels) {
   runs.clear();
   if (particles.empty()) return;
-  regroup_additive(particles, areas);
+  if (!mixed_programs(particles)) {  // one program for all: one run in the batch's order
+    runs.push_back({0, uint32_t(particles.size()), needs_depth(particles[0]), false, 0.0});
+    for (size_t i = 0; i < particles.size(); ++i) {
+      runs[0].contrast = runs[0].contrast || uses_contrast(particles[i]);
+      runs[0].pixels += areas[i];
+    }
+    return;
+  }
+  thread_local std::vector<uint32_t> run_of;
+  assign_runs(particles, boxes, run_of);
+  order_by_run(particles, areas, run_of);
   std::vector<ParticleRun> raw;
   for (size_t i = 0; i < particles.size(); ++i) {
     const bool soft = needs_depth(particles[i]);

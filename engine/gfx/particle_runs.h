@@ -5,23 +5,28 @@
 // soon as one particle needs it. Instead the sorted batch is drawn as a few runs, each a span of
 // consecutive particles (back to front) drawn with one program: the hard one for particles whose
 // soft factor is exactly 1 (method off, or kSoftClear: no mesh within reach), the soft one
-// (with the contrast curve when a particle of the run uses it) for the rest. The order of the
-// draw is the batch's order, so the picture is the one-draw picture.
+// (with the contrast curve when a particle of the run uses it) for the rest, and the picture is
+// the one-draw picture.
 //
-// Pure additive particles (alpha·(1 − burn) = 0) commute with each other, so within each
-// stretch of them between two ordered particles they are regrouped: those of the previous
-// run's kind first, those of the next run's kind last. And because a clear particle drawn with
-// the soft program gets the same factor 1, the smallest hard runs (by estimated pixels) are
-// folded into their soft neighbours until at most `max_runs` remain: each is a draw call and
-// a program switch, which costs more than a few thousand pixels' depth reads.
+// The order matters only between particles that share a pixel, and not between two pure
+// additive ones (alpha·(1 − burn) = 0: they commute). So each particle goes to the earliest
+// run of its kind that comes at or after the run of every earlier particle it must follow:
+// one whose screen box shares a cell of a 32 × 18 grid with its own, unless both are pure
+// additive. Effects in different parts of the screen then no longer interleave their soft and
+// hard particles, and each pixel still sees its blends in the batch's order. And because a
+// clear particle drawn with the soft program gets the same factor 1, the smallest hard runs
+// (by estimated pixels) are folded into their soft neighbours until at most `max_runs` remain:
+// each is a draw call and a program switch, which costs more than a few thousand pixels'
+// depth reads.
 //
 //   std::vector<ParticleRun> runs;
-//   group_runs(batch.particles, areas, /*max_runs=*/24, runs);
+//   group_runs(batch.particles, areas, boxes, /*max_runs=*/24, runs);
 //   for (auto& r : runs) draw(r.first, r.count, r.soft ? (r.contrast ? contrast : soft) : hard);
 #pragma once
 #include <cstdint>
 #include <vector>
 
+#include "gfx/particle_coverage.h"
 #include "particles/render_output.h"
 
 namespace arc {
@@ -36,10 +41,15 @@ struct ParticleRun {
 // Soft factor possibly below 1: a soft method and not flagged kSoftClear.
 bool needs_depth(const ParticleInstance& p);
 
-// Reorders pure additive particles within their stretches (particles and areas together) and
-// fills `runs`: at most max(max_runs, 1). Hard runs under `min_hard_pixels` are folded into
-// their soft neighbours first, then the smallest others until the count is met.
-void group_runs(std::vector<ParticleInstance>& particles, std::vector<float>& areas, int max_runs,
-                std::vector<ParticleRun>& runs, double min_hard_pixels = 4096.0);
+// Whether some particles need the depth read and others do not (group_runs has more to do
+// than make one run).
+bool mixed_programs(const std::vector<ParticleInstance>& particles);
+
+// Reorders particles and areas into runs as above and fills `runs`: at most max(max_runs, 1).
+// boxes[i] is particles[i]'s screen box; with no boxes every particle shares every pixel (only
+// pure additive ones move). Hard runs under `min_hard_pixels` are folded into their soft
+// neighbours first, then the smallest others until the count is met.
+void group_runs(std::vector<ParticleInstance>& particles, std::vector<float>& areas, const std::vector<ScreenBox>& boxes,
+                int max_runs, std::vector<ParticleRun>& runs, double min_hard_pixels = 4096.0);
 
 }  // namespace arc

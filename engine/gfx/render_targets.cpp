@@ -150,19 +150,27 @@ void RenderTargets::resolve_opaque(const Program& hdr_resolve) const {
   glDepthMask(GL_TRUE);
 }
 
-void RenderTargets::copy_depth() const {
+void RenderTargets::copy_depth() const { copy_depth({PixelRect{0, 0, scene_w_, scene_h_}}); }
+
+void RenderTargets::copy_depth(const std::vector<PixelRect>& rects) const {
   // This frame's depth, never last frame's (Ribeiro: a stale copy flickers as the camera moves).
   // Same format and size on both sides, so where GL 4.3's image copy exists it is a plain copy
   // of texels (a memcpy on llvmpipe); a depth blit runs a draw through the blitter.
-  if (epoxy_gl_version() >= 43) {
-    glCopyImageSubData(scene_depth_, GL_TEXTURE_2D, 0, 0, 0, 0, copy_depth_, GL_TEXTURE_2D, 0, 0, 0, 0, scene_w_,
-                       scene_h_, 1);
-    glBindFramebuffer(GL_FRAMEBUFFER, scene_fbo_);
-    return;
+  const bool image_copy = epoxy_gl_version() >= 43;
+  if (!image_copy) {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, scene_fbo_);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, copy_fbo_);
   }
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, scene_fbo_);
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, copy_fbo_);
-  glBlitFramebuffer(0, 0, scene_w_, scene_h_, 0, 0, scene_w_, scene_h_, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  for (const PixelRect& r : rects) {
+    const int x0 = std::clamp(r.x0, 0, scene_w_), x1 = std::clamp(r.x1, 0, scene_w_);
+    const int y0 = std::clamp(r.y0, 0, scene_h_), y1 = std::clamp(r.y1, 0, scene_h_);
+    if (x1 <= x0 || y1 <= y0) continue;
+    if (image_copy)
+      glCopyImageSubData(scene_depth_, GL_TEXTURE_2D, 0, x0, y0, 0, copy_depth_, GL_TEXTURE_2D, 0, x0, y0, 0, x1 - x0,
+                         y1 - y0, 1);
+    else
+      glBlitFramebuffer(x0, y0, x1, y1, x0, y0, x1, y1, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, scene_fbo_);
 }
 

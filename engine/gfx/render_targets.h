@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "assets/model.h"
+#include "gfx/particle_coverage.h"
 #include "gfx/render_settings.h"
 #include "gfx/shader_programs.h"
 
@@ -67,8 +68,10 @@ class RenderTargets {
   // is averaged by `hdr_resolve` (shaders/msaa_resolve.frag, as if tone-mapped), an 8-bit one
   // by a blit.
   void resolve_opaque(const Program& hdr_resolve) const;
-  // Blits the scene's depth into the depth copy, then binds the scene framebuffer again.
+  // Copies the scene's depth into the depth copy, then binds the scene framebuffer again: all
+  // of it, or only `rects` (scene pixels; what the soft particles can read).
   void copy_depth() const;
+  void copy_depth(const std::vector<PixelRect>& rects) const;
   GLuint depth_copy() const { return copy_depth_; }
   // The scene's own depth texture: particles drawn into another target (half resolution)
   // sample it directly, with no copy, since it is not attached where they draw.

@@ -82,6 +82,7 @@ struct Renderer::Impl {
   ParticlePass particles;
   ParticleTarget half_particles;
   std::vector<PixelRect> composite_rects;  // where the half-resolution target is put over the scene
+  std::vector<PixelRect> depth_rects;      // where the depth copy is filled (the soft particles' tiles)
   bool half_res = false;  // this frame's particles at half resolution (kept between frames for Auto's hysteresis)
   // The states particle variants were compiled for (warm_up_particles): scene format, depth
   // direction, sprite filter and contrast program, packed as warm_key() makes them.
@@ -270,7 +271,8 @@ void Renderer::Impl::draw_particles(const RenderView& v, const ViewProjection& v
   // the scene's depth buffer, so they read a copy; at half resolution they test against the
   // half target's own depth and read the scene's depth texture as it is.
   if (batch.any_soft && !half_res) {
-    targets.copy_depth();
+    batch.depth_reads.rects(depth_rects);
+    targets.copy_depth(depth_rects);
     stats.depth_copied = true;
   }
   ParticleFrame frame{vp, v.camera.fov_y_radians, float(v.camera.near_plane),

@@ -1,9 +1,12 @@
 // The particle batch on the CPU, no GL context: culling against the frustum's sides, the
 // back-to-front sort (and its absence for pure additive particles), the draw limit, and the
-// soft-edge flag set only where an opaque mesh is within a particle's reach.
+// soft-edge flag set only where an opaque mesh is within a particle's reach (a part box's face
+// planes included).
 #include <gtest/gtest.h>
 
 #include <cmath>
+
+#include <glm/gtc/quaternion.hpp>
 
 #include "gfx/particle_batch.h"
 #include "scene_models.h"
@@ -158,6 +161,57 @@ TEST(ParticleBatch, FlagsSoftEdgesClearWhereNoMeshIsWithinReach) {
   EXPECT_TRUE(batch.any_soft);
   EXPECT_FALSE(batch.any_contrast);
   EXPECT_FALSE(prepare(scene.view).any_soft) << "no mesh at all: nothing needs the depth copy";
+}
+
+// A wall turned 60° about the vertical, centred at depth 10: its box's screen rectangle and
+// depth range (7.4 to 12.6) hold particles that are far in front of its surface, which its own
+// plane keeps out of reach. A particle 1.2 in front of the surface (extent 0.4) is clear; one
+// 0.1 in front, and one 1.2 in front with an extent of 2, are soft; one 1.2 behind is hidden.
+TEST(ParticleBatch, ATiltedWallsPlaneKeepsParticlesInFrontOfItClear) {
+  RenderView v = base_view();
+  ModelCoverBoxes boxes{cover_boxes(scenes::wall_model(6, 20, {0.3f, 0.4f, 0.5f, 1}, glm::vec3(0)).primitives, 3)};
+  const glm::dquat yaw = glm::angleAxis(60.0 * 3.14159265358979 / 180.0, glm::dvec3(0, 1, 0));
+  v.meshes.push_back({ModelId{1u}, {0, 0, -10}, yaw});
+  const glm::vec3 normal = glm::vec3(yaw * glm::dvec3(0, 0, 1)), centre(0, 0, -10);
+  struct Case {
+    float gap, extent;
+    bool soft;
+  } cases[] = {{1.2f, 0.4f, false}, {0.1f, 0.4f, true}, {1.2f, 2.0f, true}, {-1.2f, 0.4f, false}};
+  for (const Case& c : cases) {
+    ParticleInstance p = particle(centre + normal * c.gap, 0.4f, glm::vec3(1), 1.0f, 1.0f, SoftEdge::Linear);
+    p.soft_extent = c.extent;
+    v.particles = {p};
+    const ParticleBatch batch = prepare(v, {}, boxes);
+    ASSERT_EQ(batch.particles.size(), 1u);
+    EXPECT_EQ(batch.soft_shaded, c.soft ? 1 : 0) << "gap " << c.gap << ", extent " << c.extent;
+  }
+}
+
+// The depth copy is filled only where a particle that reads it can be: the tiles of the soft
+// particle just in front of the wall (left of centre), not those of the clear ones beside it.
+TEST(ParticleBatch, MarksTheDepthReadsOfSoftParticlesOnly) {
+  ReachScene scene;
+  ParticleBatchOptions options;
+  options.width = 320, options.height = 320;  // the square view of base_view()
+  const ParticleBatch batch = prepare(scene.view, options, scene.boxes);
+  ASSERT_EQ(batch.soft_shaded, 1);
+  std::vector<PixelRect> rects;
+  batch.depth_reads.rects(rects);
+  ASSERT_FALSE(rects.empty());
+  // The soft one is at x = −3 at depth 9.8 (tan 0.45 = 0.483 across half the view): about
+  // pixel 58 of 320, size 0.5 (8 pixels), so within the first few 32-pixel tiles.
+  for (const PixelRect& r : rects) {
+    EXPECT_LT(r.x1, 160) << "nothing right of the centre";
+    EXPECT_LE(r.x0, 58);
+    EXPECT_GE(r.x1, 58);
+  }
+  EXPECT_LT(batch.depth_reads.share(), 0.1);
+  // Every particle soft and reaching a surface: the whole screen.
+  RenderView v = scene.view;
+  v.particles = {v.particles[0]};
+  const ParticleBatch one = prepare(v, options, scene.boxes);
+  ASSERT_EQ(one.soft_shaded, 1);
+  EXPECT_EQ(one.depth_reads.share(), 1.0);
 }
 
 TEST(ParticleBatch, SoftOverrideAppliesToEveryParticle) {

@@ -1,7 +1,13 @@
 // The particle pass drawn as runs and held to the overdraw budget, headless through EGL: the
-// runs give the one-draw picture, a frame under budget is untouched, and over budget the
-// near particles shrink, the blended fragments fall and the estimate matches the count.
+// runs give the one-draw picture (and effects apart on screen do not split each other's runs),
+// particles a tilted wall's plane keeps out of reach skip the soft program, a frame under
+// budget is untouched, and over budget the near particles shrink, the blended fragments fall
+// and the estimate matches the count.
 #include <gtest/gtest.h>
+
+#include <string>
+
+#include <glm/gtc/quaternion.hpp>
 
 #include "gfx/image_compare.h"
 #include "gfx_test_util.h"
@@ -55,6 +61,68 @@ TEST(ParticleDraws, RunsGiveTheOneDrawPicture) {
   EXPECT_LT(soft_one, 120);
   // Additive particles regrouped among themselves round in another order: at most 1/255.
   EXPECT_LE(compare_images(one, runs).max_diff, 1);
+}
+
+// A wall turned 60° about the vertical: its box spans depths 7.4 to 12.6 and a wide strip of
+// the screen, but its surface has one depth at each pixel. A particle 1.2 in front of the
+// surface (its depth extent 0.4) lies inside the box's screen rectangle and depth range; only
+// the wall's own plane separates them, and it must skip the depth read and look exactly as with
+// soft edges off. One just in front of the surface must still be soft.
+TEST(ParticleDraws, SoftEdgesSkipParticlesInFrontOfATiltedWall) {
+  REQUIRE_CONTEXT();
+  Renderer r(RendererDesc{.offscreen = true});
+  r.set_sprites({scenes::soft_sprite(64)});
+  RenderView v = test::dark_view();
+  const double turn = 60.0 * 3.14159265358979 / 180.0;
+  const glm::dquat yaw = glm::angleAxis(turn, glm::dvec3(0, 1, 0));
+  v.meshes.push_back({r.add_model(scenes::wall_model(6, 20, {0.3f, 0.4f, 0.5f, 1}, glm::vec3(0))), {0, 0, -10}, yaw});
+  const glm::vec3 normal = glm::vec3(yaw * glm::dvec3(0, 0, 1)), centre(0, 0, -10);
+  auto render = [&](SoftEdge m) {
+    RenderSettings s = test::plain_settings();
+    s.soft_override = int(m);
+    r.set_render_settings(s);
+    r.render(v, 96, 64);
+    return r.read_pixels();
+  };
+  for (float gap : {1.2f, 0.1f}) {
+    v.particles = {particle(centre + normal * gap, 0.4f, glm::vec3(1, 0.5f, 0.2f), 0.7f, 0.0f)};
+    const Image off = render(SoftEdge::Off);
+    const Image soft = render(SoftEdge::Linear);
+    test::dump_if_asked("tilted_wall_" + std::to_string(gap), soft);
+    EXPECT_EQ(r.last_stats().soft_shaded, gap > 1.0f ? 0 : 1) << "gap " << gap;
+    if (gap > 1.0f) EXPECT_EQ(compare_images(off, soft).max_diff, 0);
+    else EXPECT_GT(compare_images(off, soft).max_diff, 4) << "soft edges must show";
+  }
+}
+
+// Two effects side by side, each with its soft particles interleaved in depth with the clear
+// ones of the other: the back-to-front order alternates programs at every particle, but
+// particles that share no pixel need no order between them, so the draw takes two runs (in
+// depth order the hard runs would be single particles, folded into the soft program: every
+// particle would pay the depth read), and the picture is the one-draw picture.
+TEST(ParticleDraws, EffectsApartOnScreenDoNotInterleaveTheirRuns) {
+  REQUIRE_CONTEXT();
+  Renderer r(RendererDesc{.offscreen = true});
+  r.set_sprites({scenes::soft_sprite(64)});
+  RenderView v = test::dark_view();
+  v.meshes.push_back({r.add_model(scenes::wall_model(4, 6, {0.3f, 0.4f, 0.5f, 1}, glm::vec3(0))), {-3, 0, -10}});
+  for (int i = 0; i < 40; ++i) {  // smoke: alpha blended, so the order matters where they overlap
+    const bool left = i % 2 == 0;
+    v.particles.push_back(particle({left ? -3.0f : 3.0f, 0.05f * float(i) - 1.0f, -9.9f + 0.01f * float(i)}, 0.8f,
+                                   glm::vec3(0.6f), 0.5f, 0.0f, SoftEdge::Linear));
+  }
+  RenderSettings s = test::plain_settings();
+  s.max_particle_draws = 1;
+  r.set_render_settings(s);
+  r.render(v, 160, 90);
+  const Image one = r.read_pixels();
+  s.max_particle_draws = 24;
+  r.set_render_settings(s);
+  r.render(v, 160, 90);
+  test::dump_if_asked("effects_apart", r.read_pixels());
+  EXPECT_EQ(r.last_stats().soft_shaded, 20);
+  EXPECT_EQ(r.last_stats().particle_draw_calls, 2);
+  EXPECT_EQ(compare_images(one, r.read_pixels()).max_diff, 0);
 }
 
 TEST(ParticleDraws, BudgetLeavesAFrameUnderItUntouched) {

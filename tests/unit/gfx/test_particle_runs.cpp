@@ -1,7 +1,10 @@
 // Runs by shader variant on the CPU, no GL: clear particles stay out of soft runs, pure
-// additive ones are regrouped only among themselves, ordered ones keep their order, and the
-// count of draws is bounded by folding the smallest hard runs into soft neighbours.
+// additive ones are regrouped only among themselves, ordered ones keep their order against
+// every particle they share screen cells with (and only those), and the count of draws is
+// bounded by folding the smallest hard runs into soft neighbours.
 #include <gtest/gtest.h>
+
+#include <limits>
 
 #include "gfx/particle_occluders.h"
 #include "gfx/particle_runs.h"
@@ -30,7 +33,7 @@ TEST(ParticleRuns, ClearParticlesAreDrawnByTheHardProgram) {
   std::vector<ParticleInstance> ps = {make(0, false, false), make(1, false, true), make(2, false, false)};
   std::vector<float> areas(ps.size(), 1e6f);  // large: nothing is folded
   std::vector<ParticleRun> runs;
-  group_runs(ps, areas, 24, runs);
+  group_runs(ps, areas, {}, 24, runs);
   ASSERT_EQ(runs.size(), 3u);
   EXPECT_FALSE(runs[0].soft);
   EXPECT_TRUE(runs[1].soft);
@@ -48,7 +51,7 @@ TEST(ParticleRuns, RegroupsAdditiveStretchesAndKeepsOrderedOnesInPlace) {
                                       make(9, true, true)};
   std::vector<float> areas(ps.size(), 1e6f);
   std::vector<ParticleRun> runs;
-  group_runs(ps, areas, 24, runs);
+  group_runs(ps, areas, {}, 24, runs);
   // The first stretch opens with the previous (soft) kind, ends with the next (hard) one;
   // the last opens with the hard kind before it.
   EXPECT_EQ(tags(ps), (std::vector<float>{0, 2, 4, 1, 3, 5, 6, 8, 7, 9}));
@@ -66,7 +69,7 @@ TEST(ParticleRuns, PureAdditiveBatchesNeedAtMostTwoDraws) {
   for (int i = 0; i < 100; ++i) ps.push_back(make(float(i), true, i % 3 == 0));
   std::vector<float> areas(ps.size(), 1e6f);
   std::vector<ParticleRun> runs;
-  group_runs(ps, areas, 24, runs);
+  group_runs(ps, areas, {}, 24, runs);
   EXPECT_EQ(runs.size(), 2u);
 }
 
@@ -79,7 +82,7 @@ TEST(ParticleRuns, FoldsTheSmallestHardRunsIntoSoftOnesToStayUnderTheLimit) {
     areas.push_back(i % 2 ? 1e5f + float(i) : 10.0f);  // hard ones large, the larger the later
   }
   std::vector<ParticleRun> runs;
-  group_runs(ps, areas, 24, runs);
+  group_runs(ps, areas, {}, 24, runs);
   EXPECT_LE(runs.size(), 24u);
   EXPECT_GE(runs.size(), 20u);
   uint32_t total = 0;
@@ -97,9 +100,56 @@ TEST(ParticleRuns, FoldsTheSmallestHardRunsIntoSoftOnesToStayUnderTheLimit) {
   // Small hard runs are folded even under the limit.
   std::vector<ParticleInstance> few = {make(0, false, true), make(1, false, false), make(2, false, true)};
   std::vector<float> small(3, 100.0f);
-  group_runs(few, small, 24, runs);
+  group_runs(few, small, {}, 24, runs);
   EXPECT_EQ(runs.size(), 1u);
   EXPECT_TRUE(runs[0].soft);
+}
+
+// Screen boxes: the left or right third of the screen, or all of it.
+constexpr ScreenBox kLeft{-1.0f, -1.0f, -0.4f, 1.0f}, kRight{0.4f, -1.0f, 1.0f, 1.0f}, kWide{-1.0f, -0.2f, 1.0f, 0.2f};
+
+TEST(ParticleRuns, ParticlesThatShareNoPixelAreNotOrderedAgainstEachOther) {
+  // Ordered particles alternating soft (left) and hard (right) in depth order: two runs.
+  std::vector<ParticleInstance> ps;
+  std::vector<ScreenBox> boxes;
+  for (int i = 0; i < 10; ++i) {
+    ps.push_back(make(float(i), false, i % 2 == 0));
+    boxes.push_back(i % 2 == 0 ? kLeft : kRight);
+  }
+  std::vector<float> areas(ps.size(), 1e6f);
+  std::vector<ParticleRun> runs;
+  group_runs(ps, areas, boxes, 24, runs);
+  ASSERT_EQ(runs.size(), 2u);
+  EXPECT_TRUE(runs[0].soft);
+  EXPECT_EQ(tags(ps), (std::vector<float>{0, 2, 4, 6, 8, 1, 3, 5, 7, 9}));
+  // A hard particle across the screen between soft ones on the left: the ones after it must
+  // follow it; a hard one on the right after them need only follow the wide one.
+  ps = {make(0, false, true), make(1, false, false), make(2, false, true), make(3, false, false)};
+  boxes = {kLeft, kWide, kLeft, kRight};
+  areas.assign(ps.size(), 1e6f);
+  group_runs(ps, areas, boxes, 24, runs);
+  EXPECT_EQ(tags(ps), (std::vector<float>{0, 1, 3, 2}));
+  ASSERT_EQ(runs.size(), 3u);  // soft 0 | hard 1 3 | soft 2
+  EXPECT_EQ(runs[1].count, 2u);
+  // A box that is not finite is the whole screen: everything keeps its order.
+  const float inf = std::numeric_limits<float>::infinity();
+  ps = {make(0, false, true), make(1, false, false), make(2, false, true)};
+  boxes = {kLeft, {-inf, -inf, inf, inf}, kRight};
+  areas.assign(ps.size(), 1e6f);
+  group_runs(ps, areas, boxes, 24, runs);
+  EXPECT_EQ(tags(ps), (std::vector<float>{0, 1, 2}));
+  EXPECT_EQ(runs.size(), 3u);
+}
+
+TEST(ParticleRuns, PureAdditiveParticlesFollowOnlyTheOrderedOnesTheyOverlap) {
+  // Additive soft, ordered hard, additive soft, all on the left; an additive soft on the right.
+  std::vector<ParticleInstance> ps = {make(0, true, true), make(1, false, false), make(2, true, true), make(3, true, true)};
+  std::vector<ScreenBox> boxes = {kLeft, kLeft, kLeft, kRight};
+  std::vector<float> areas(ps.size(), 1e6f);
+  std::vector<ParticleRun> runs;
+  group_runs(ps, areas, boxes, 24, runs);
+  EXPECT_EQ(tags(ps), (std::vector<float>{0, 3, 1, 2}));
+  ASSERT_EQ(runs.size(), 3u);
 }
 
 TEST(ParticleRuns, AOnlyHardBatchIsOneHardDraw) {
@@ -107,7 +157,7 @@ TEST(ParticleRuns, AOnlyHardBatchIsOneHardDraw) {
   ps[1].soft_edge = 0;  // method off
   std::vector<float> areas(2, 1.0f);
   std::vector<ParticleRun> runs;
-  group_runs(ps, areas, 1, runs);
+  group_runs(ps, areas, {}, 1, runs);
   ASSERT_EQ(runs.size(), 1u);
   EXPECT_FALSE(runs[0].soft);
 }
