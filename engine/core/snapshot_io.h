@@ -89,14 +89,6 @@ class Writer {
       }
     }
   }
-  template <typename T>
-  void array(std::span<T> v) {
-    array(std::span<const T>(v));
-  }
-  template <typename T>
-  void array(const std::vector<T>& v) {
-    array(std::span<const T>(v));
-  }
   size_t size() const { return bytes_.size(); }
 
   // The payload written so far, framed: magic, version, size, payload, checksum.
@@ -190,12 +182,6 @@ class Reader {
     const uint64_t n = u64();
     check_room(n, min_item_bytes, what);
     return n;
-  }
-  template <typename T>
-  void array(std::vector<T>& v, size_t n) {
-    check_room(n, sizeof(T), "array");
-    v.resize(n);
-    array(std::span<T>(v));
   }
   // Exactly v.size() numbers into v.
   template <typename T>

@@ -87,12 +87,15 @@ void ParticleCoverage::rects(std::vector<PixelRect>& out) const {
   }
 }
 
+// The marked tiles' pixels (the last row and column cut at the screen's edge), as rects() covers them.
 double ParticleCoverage::share() const {
   if (whole_) return 1.0;
-  std::vector<PixelRect> r;
-  rects(r);
+  resolve();
   double px = 0;
-  for (const PixelRect& q : r) px += double(q.x1 - q.x0) * double(q.y1 - q.y0);
+  for (int y = 0; y < tiles_y_; ++y)
+    for (int x = 0; x < tiles_x_; ++x)
+      if (marked_[size_t(y) * size_t(tiles_x_) + size_t(x)])
+        px += double(std::min(kTile, width_ - x * kTile)) * double(std::min(kTile, height_ - y * kTile));
   return px / (double(width_) * double(height_));
 }
 

@@ -28,9 +28,6 @@ namespace {
 
 constexpr uint64_t kMagic = snapshot::magic("ARCPWRLD");
 constexpr uint32_t kVersion = 1;
-// The settings' largest particles.budget: a world is made with its particle store written
-// through at the budget (particle_store.h), so a snapshot may not ask for more.
-constexpr uint32_t kMaxBudget = 4'000'000;
 
 template <typename Pool, typename F>
 void for_each_array(Pool& p, F&& f) {
@@ -208,8 +205,8 @@ void ParticleWorld::load(const uint8_t* data, size_t size) {
   w.config.cull_distance = in.f64();
   w.config.lightning_interval = in.i32();
   w.config.tick_seconds = in.f64();
-  if (w.config.budget == 0 || w.config.budget > kMaxBudget)
-    in.fail("particle budget " + std::to_string(w.config.budget) + " is outside 1.." + std::to_string(kMaxBudget));
+  if (w.config.budget == 0 || w.config.budget > kMaxParticleBudget)
+    in.fail("particle budget " + std::to_string(w.config.budget) + " is outside 1.." + std::to_string(kMaxParticleBudget));
   if (!(w.config.tick_seconds > 0.0) || !std::isfinite(w.config.tick_seconds))
     in.fail("tick length " + std::to_string(w.config.tick_seconds) + " s is not a positive number");
   if (w.config.tick_seconds != live.config.tick_seconds) w.motion_tables.clear();  // tables depend on the tick length

@@ -70,6 +70,10 @@ struct SpawnParams {
   int priority = 1;                      // 0 = cosmetic (refused first when the budget is full)
 };
 
+// The largest particle budget: the settings' range for particles.budget (core/settings.cpp), and
+// what a snapshot may ask for, since a world writes its particle store through at its budget.
+inline constexpr uint32_t kMaxParticleBudget = 4'000'000;
+
 struct ParticleConfig {
   uint64_t seed = 1;
   uint32_t budget = 200000;          // live particles at most

@@ -573,7 +573,7 @@ int run_window(const AppOptions& o) {
     const double now = session.time();
     session.update(now - last);
     session.draw();
-    frame_times.frame(now - last, now, session.tick(), session.frame_stats());
+    if (frame_times.enabled()) frame_times.frame(now - last, now, session.tick(), session.frame_stats());
     last = now;
   }
   frame_times.finish();

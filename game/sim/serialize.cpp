@@ -72,9 +72,8 @@ SnapshotSettings settings_of(const World& w) {
 // Reads the header; hooks of fields::FieldReader check the values the engine relies on.
 struct SettingsReading {
   void after_read(Reader& in, const SnapshotSettings& s) {
-    // The settings' largest particles.budget: the particle store is written through at it.
-    if (s.particle_budget == 0 || s.particle_budget > 4'000'000)
-      in.fail("particle budget " + std::to_string(s.particle_budget) + " is outside 1..4000000");
+    if (s.particle_budget == 0 || s.particle_budget > kMaxParticleBudget)
+      in.fail("particle budget " + std::to_string(s.particle_budget) + " is outside 1.." + std::to_string(kMaxParticleBudget));
     if (s.lightning_interval < 0 || s.lightning_interval > 1000)
       in.fail("lightning interval " + std::to_string(s.lightning_interval) + " is out of range 0..1000");
     if (s.substeps < 1 || s.substeps > 64) in.fail("sub-steps " + std::to_string(s.substeps) + " is out of range 1..64");

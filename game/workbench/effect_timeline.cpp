@@ -58,10 +58,10 @@ void EffectTimeline::restart() {
   config.tick_seconds = stage_.tick_seconds;
   config.budget = stage_.particle_budget;
   config.lightning_interval = stage_.lightning_interval;
-  // The old world goes first, so its blocks are back in the store the new one takes over.
+  // The new world takes the old one's store; the old world goes first, so its blocks are back.
+  std::shared_ptr<ParticleStore> store = world_ ? world_->store() : nullptr;
   world_.reset();
-  world_ = std::make_unique<ParticleWorld>(config, library_.get(), store_);
-  store_ = world_->store();
+  world_ = std::make_unique<ParticleWorld>(config, library_.get(), std::move(store));
   SpawnParams params;
   if (stage_.motion == StageMotion::Circle) {
     params.owner = kStageOwner;

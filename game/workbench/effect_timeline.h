@@ -79,7 +79,6 @@ class EffectTimeline {
   std::shared_ptr<const EffectLibrary> library_;
   std::string effect_;
   StageOptions stage_;
-  std::shared_ptr<ParticleStore> store_;  // kept from one world to the next (restart)
   std::unique_ptr<ParticleWorld> world_;
   EffectHandle handle_;
 };
