@@ -56,7 +56,7 @@ Settings Settings::defaults() {
   s.define_choice("render.sky", "baked", {"baked", "exact"},
                   "nebula background: baked once per level into a cube map, or evaluated per pixel every frame");
   s.define_integer("render.sky_resolution", 256, 16, 1024, "texels along each face of the baked nebula cube map");
-  s.define_integer("render.sky_grid", 16, 0, 64, "baked nebula looked up every N pixels and interpolated between (0: at every pixel)");
+  s.define_integer("render.sky_grid", 32, 0, 64, "baked nebula looked up every N pixels and interpolated between (0: at every pixel)");
   s.define_number("render.overdraw_budget", 3.0, 0.0, 64.0,
                   "screen layers of particle blending per frame before the nearest, largest particles are shrunk,"
                   " faded and dropped (low screen priority first); 0: no budget");
