@@ -197,14 +197,20 @@ void Renderer::render(const RenderView& v, int width, int height) {
       make_view_projection(v.camera, double(scene_w) / double(scene_h), m.rs.reversed_z, m.rs.infinite_far);
 
   if (std::find(m.warm_keys.begin(), m.warm_keys.end(), m.warm_key()) == m.warm_keys.end()) m.warm_up_particles(v, vp);
+  auto t = std::chrono::steady_clock::now();
   m.clear_scene();
   m.stats.draw_calls += m.sky.draw(v, m.programs, vp, m.rs, scene_h);
   m.stats.draw_calls += m.meshes.draw(v, m.programs.mesh, vp.view_proj, m.rs.reversed_z, m.rs.hdr);
   m.targets.resolve_opaque(m.programs.msaa_resolve);
   m.stats.msaa_samples = m.targets.samples();
+  m.stats.opaque_cpu_ms = ms_since(t);
   m.draw_particles(v, vp);
+  t = std::chrono::steady_clock::now();
   m.post_process(width, height);
+  m.stats.post_cpu_ms = ms_since(t);
+  t = std::chrono::steady_clock::now();
   m.stats.draw_calls += m.hud.draw(v.hud, m.programs.hud, width, height);
+  m.stats.hud_cpu_ms = ms_since(t);
   m.stats.particle_gpu_ms = m.timers.last_particle_gpu_ms();
 }
 
@@ -270,6 +276,7 @@ void Renderer::Impl::draw_particles(const RenderView& v, const ViewProjection& v
   // Soft edges read this frame's opaque depth. Particles drawn at full resolution test against
   // the scene's depth buffer, so they read a copy; at half resolution they test against the
   // half target's own depth and read the scene's depth texture as it is.
+  auto t = std::chrono::steady_clock::now();
   if (batch.any_soft && !half_res) {
     batch.depth_reads.rects(depth_rects);
     targets.copy_depth(depth_rects);
@@ -279,13 +286,16 @@ void Renderer::Impl::draw_particles(const RenderView& v, const ViewProjection& v
                       half_res ? targets.scene_depth() : targets.depth_copy(), targets.scene_width(),
                       targets.scene_height()};
   if (half_res) begin_half_resolution(frame);
+  if (half_res || stats.depth_copied) stats.particle_target_cpu_ms = ms_since(t);
   stats.particle_target_pixels = double(frame.scene_width) * double(frame.scene_height);
   int draws = particles.draw(batch, programs, rs, frame);
   if (half_res) {
+    t = std::chrono::steady_clock::now();
     batch.coverage.rects(composite_rects);
     half_particles.composite(programs.particle_composite, targets.scene_fbo(), targets.scene_width(),
                              targets.scene_height(), composite_rects);
     stats.composite_share = batch.coverage.share();
+    stats.particle_composite_cpu_ms = ms_since(t);
     ++draws;
   }
   stats.draw_calls += draws;

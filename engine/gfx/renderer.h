@@ -71,6 +71,19 @@ struct FrameStats {
   double particle_cpu_ms = 0;  // all of the pass on the CPU: preparation, upload, draw submission
                                // (on llvmpipe submission includes vertex work, binning and any
                                // wait for earlier passes the depth copy needs)
+  // Where the frame's wall-clock time goes on the CPU, pass by pass (render() to its return):
+  // submitting the opaque pass (clear, sky, meshes, MSAA resolve), the particle pass's target
+  // (the depth copy, or the half-resolution target taking the scene's depth), its half-
+  // resolution composite, the post pass and the HUD. On a GPU these are submission costs; on
+  // llvmpipe, which rasterises a pass before a later one may read it, the target step also
+  // waits for the opaque pass to be rasterised and the composite for the particles, so the
+  // split says where a slow frame's time goes (`--scene combat_view` prints it for the slowest
+  // frames).
+  double opaque_cpu_ms = 0;
+  double particle_target_cpu_ms = 0;
+  double particle_composite_cpu_ms = 0;
+  double post_cpu_ms = 0;
+  double hud_cpu_ms = 0;
   double particle_gpu_ms = -1; // GL_TIME_ELAPSED of the particle pass of an earlier frame; −1 if unknown
   long long particle_fragments = -1;  // samples the particle draw blended (count_particle_fragments); −1 if not counted
   double particle_pass_gpu_ms = -1;   // GL_TIME_ELAPSED of this frame's particle pass (time_gpu_passes); −1 if not timed

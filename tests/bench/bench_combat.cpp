@@ -17,9 +17,12 @@
 //   soft_edge_cost_ratio_combat_<camera>   per-effect soft edges ÷ soft edges off, median of pairs
 // ARCFIRE_GFX_DUMP=DIR saves the slowest frame of each camera (combat_slowest_<camera>.png).
 // ARCFIRE_BENCH_SET="key=value key=value" measures under other settings (as --set; bad ones exit 2).
-// ARCFIRE_BENCH_FRAMES=FILE.csv writes one line per timed frame (camera, tick, ms, stats).
+// ARCFIRE_BENCH_FRAMES=FILE.csv writes one line per timed frame (camera, tick, ms, stats, and the
+// frame split by pass: FrameStats' *_cpu_ms). Each camera also prints that split averaged over
+// its slowest 1 % of frames: where a p99 frame's time goes.
 // ARCFIRE_BENCH_RECORD=1 records the dogfight anew into tests/bench/combat_view.replay first.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -102,6 +105,10 @@ double percentile(std::vector<double> v, double q) {
   return v[std::min(v.size() - 1, size_t(q * double(v.size() - 1) + 0.5))];
 }
 
+constexpr int kStages = 8;
+const char* const kStageNames[kStages] = {"opaque", "particle prep", "particle target", "particle upload+draws",
+                                          "composite", "post", "hud", "finish"};
+
 struct CameraRun {
   const char* name;
   CameraMode mode;
@@ -114,7 +121,22 @@ struct CameraRun {
   double slowest_ms = 0;
   Image slowest, worst_budgeted, worst_unbudgeted;  // the slowest frame; the worst-PSNR pair
   uint64_t slowest_tick = 0, worst_tick = 0;
+  // Per timed frame, where its time went (FrameStats' *_cpu_ms, the particle preparation and
+  // the draws, the rest to glFinish): the slowest frames' split is reported.
+  std::vector<std::array<double, kStages>> stages;
 };
+
+// The frame split into the passes FrameStats times on the CPU; "finish" is what is left between
+// render()'s return and glFinish's (on llvmpipe: rasterising the post pass and the HUD).
+std::array<double, kStages> stage_split(const FrameStats& st, double frame_ms) {
+  const double draws = st.particle_cpu_ms - st.particle_prep_ms - st.particle_target_cpu_ms - st.particle_composite_cpu_ms;
+  std::array<double, kStages> a = {st.opaque_cpu_ms, st.particle_prep_ms, st.particle_target_cpu_ms, draws,
+                                   st.particle_composite_cpu_ms, st.post_cpu_ms, st.hud_cpu_ms, 0.0};
+  double sum = 0;
+  for (int i = 0; i + 1 < kStages; ++i) sum += a[size_t(i)];
+  a[kStages - 1] = std::max(0.0, frame_ms - sum);
+  return a;
+}
 
 std::unique_ptr<Renderer> make_renderer(const std::string& root, Settings settings, const char* key, const char* value,
                                         const World& world, std::vector<ModelId>* models) {
@@ -142,12 +164,18 @@ void sample(CameraRun& c, const RenderView& view, bool compare, bool reverse, st
   const double ms = timed_render(*c.main, view);
   const FrameStats st = c.main->last_stats();
   if (csv)
-    std::fprintf(csv, "%s,%llu,%.3f,%d,%d,%.3f,%.3f,%lld,%d,%d,%d,%.4f,%.3f,%.3f\n", c.name, static_cast<unsigned long long>(tick),
+    std::fprintf(csv, "%s,%llu,%.3f,%d,%d,%.3f,%.3f,%lld,%d,%d,%d,%.4f,%.3f,%.3f,", c.name, static_cast<unsigned long long>(tick),
                  ms, st.particles_in, st.particles_drawn, st.overdraw_estimated_layers, st.overdraw_budgeted_layers,
                  st.particle_fragments, st.particle_draw_calls, st.particles_reduced, st.soft_shaded, st.overdraw_cap,
                  st.particle_prep_ms, st.particle_cpu_ms);
+  if (csv) {
+    const std::array<double, kStages> a = stage_split(st, ms);
+    for (size_t i = 0; i < a.size(); ++i) std::fprintf(csv, "%s%.3f", i ? "," : "", a[i]);
+    std::fprintf(csv, "\n");
+  }
   ++c.samples;
   c.ms.push_back(ms);
+  c.stages.push_back(stage_split(st, ms));
   // Layers of the target the particles blend into (render.scale and render.particle_resolution
   // size it), the unit the budget's estimate is in.
   const double measured = double(std::max(0LL, st.particle_fragments)) / std::max(1.0, st.particle_target_pixels);
@@ -206,6 +234,17 @@ void report(CameraRun& c) {
   bench::report_metric("combat_estimate_over_measured_" + n, bench::median(c.estimate_ratio));
   bench::report_metric("combat_particle_draws_max_" + n, c.draws_max);
   bench::report_metric("soft_edge_cost_ratio_combat_" + n, bench::median(c.soft_ratio));
+  // Where the slowest 1 % of frames spend their time: each stage's mean over the frames at or
+  // above the 99th percentile (past the first frames, which compile shader variants).
+  std::array<double, kStages> slow{};
+  int slow_n = 0;
+  for (size_t i = 10; i < c.ms.size(); ++i) {
+    if (c.ms[i] < p99) continue;
+    for (int k = 0; k < kStages; ++k) slow[size_t(k)] += c.stages[i][size_t(k)];
+    ++slow_n;
+  }
+  std::printf("  %-7s the %d frames at or above p99, mean ms:", c.name, slow_n);
+  for (int k = 0; k < kStages; ++k) std::printf(" %s %.2f%s", kStageNames[k], slow[size_t(k)] / std::max(1, slow_n), k + 1 < kStages ? "," : "\n");
   std::printf("  %-7s slowest frame at tick %llu; worst budgeted frame at tick %llu\n", c.name,
               static_cast<unsigned long long>(c.slowest_tick), static_cast<unsigned long long>(c.worst_tick));
   if (const char* dir = std::getenv("ARCFIRE_GFX_DUMP")) {
@@ -260,7 +299,8 @@ ARCFIRE_SCENE(combat_view) {
       std::fprintf(stderr, "arcfire-bench: ARCFIRE_BENCH_FRAMES='%s' cannot be written; name a file in a folder that exists\n", f);
       std::exit(2);
     }
-    std::fprintf(csv, "camera,tick,ms,particles_in,drawn,estimated_layers,budgeted_layers,fragments,draws,reduced,soft,cap,prep_ms,cpu_ms\n");
+    std::fprintf(csv, "camera,tick,ms,particles_in,drawn,estimated_layers,budgeted_layers,fragments,draws,reduced,soft,cap,prep_ms,cpu_ms,"
+                      "opaque_ms,particle_prep_ms,particle_target_ms,particle_draws_ms,composite_ms,post_ms,hud_ms,finish_ms\n");
   }
   for (uint64_t tick = 0; tick < end; ++tick) {
     feeder.step(game, tick);

@@ -5,6 +5,7 @@
 // and the estimate matches the count.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <string>
 
 #include <glm/gtc/quaternion.hpp>
@@ -275,6 +276,49 @@ TEST(ParticleDraws, ShaderWarmUpLeavesNoMark) {
     r.render(v, 320, 180);
     EXPECT_EQ(compare_images(first, r.read_pixels()).max_diff, 0) << "with particles: " << with_particles;
   }
+}
+
+// FrameStats splits the frame by pass on the CPU: the opaque pass, the particle target (the
+// depth copy, or the half-resolution target taking the scene's depth), the composite, the post
+// pass and the HUD. Each is a part of the wall-clock time render() took, and the steps a frame
+// does not take stay 0.
+TEST(ParticleDraws, FrameStatsSplitTheFrameByPass) {
+  REQUIRE_CONTEXT();
+  Renderer r(RendererDesc{.offscreen = true});
+  r.set_sprites({scenes::soft_sprite(64)});
+  const RenderView v = wall_view(r);
+  auto split_sum = [](const FrameStats& st) {
+    return st.opaque_cpu_ms + st.particle_cpu_ms + st.post_cpu_ms + st.hud_cpu_ms;
+  };
+  for (auto res : {RenderSettings::ParticleResolution::Full, RenderSettings::ParticleResolution::Half}) {
+    RenderSettings s = test::plain_settings();
+    s.particle_resolution = res;
+    r.set_render_settings(s);
+    r.render(v, 320, 180);  // shader variants compiled, targets sized
+    const auto t0 = std::chrono::steady_clock::now();
+    r.render(v, 320, 180);
+    const double wall = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    const FrameStats st = r.last_stats();
+    const bool half = res == RenderSettings::ParticleResolution::Half;
+    SCOPED_TRACE(half ? "half resolution" : "full resolution");
+    ASSERT_EQ(st.particles_half_res, half);
+    ASSERT_GT(st.soft_shaded, 0);
+    EXPECT_GT(st.opaque_cpu_ms, 0.0);
+    EXPECT_GT(st.particle_target_cpu_ms, 0.0);  // the depth copy, or the half target's depth
+    EXPECT_EQ(st.particle_composite_cpu_ms > 0.0, half);
+    EXPECT_GE(st.post_cpu_ms, 0.0);
+    EXPECT_GE(st.hud_cpu_ms, 0.0);
+    EXPECT_LE(st.particle_prep_ms + st.particle_target_cpu_ms + st.particle_composite_cpu_ms, st.particle_cpu_ms);
+    EXPECT_LE(split_sum(st), wall);
+  }
+  // Soft edges off at full resolution: no depth copy, no composite.
+  RenderSettings s = test::plain_settings();
+  s.soft_override = 0;
+  r.set_render_settings(s);
+  r.render(v, 320, 180);
+  EXPECT_FALSE(r.last_stats().depth_copied);
+  EXPECT_EQ(r.last_stats().particle_target_cpu_ms, 0.0);
+  EXPECT_EQ(r.last_stats().particle_composite_cpu_ms, 0.0);
 }
 
 }  // namespace
