@@ -164,10 +164,10 @@ void sample(CameraRun& c, const RenderView& view, bool compare, bool reverse, st
   const double ms = timed_render(*c.main, view);
   const FrameStats st = c.main->last_stats();
   if (csv)
-    std::fprintf(csv, "%s,%llu,%.3f,%d,%d,%.3f,%.3f,%lld,%d,%d,%d,%.4f,%.3f,%.3f,", c.name, static_cast<unsigned long long>(tick),
+    std::fprintf(csv, "%s,%llu,%.3f,%d,%d,%.3f,%.3f,%lld,%d,%d,%d,%.4f,%.3f,%.3f,%.3f,", c.name, static_cast<unsigned long long>(tick),
                  ms, st.particles_in, st.particles_drawn, st.overdraw_estimated_layers, st.overdraw_budgeted_layers,
                  st.particle_fragments, st.particle_draw_calls, st.particles_reduced, st.soft_shaded, st.overdraw_cap,
-                 st.particle_prep_ms, st.particle_cpu_ms);
+                 st.particle_prep_ms, st.particle_cpu_ms, st.particles_half_res ? st.composite_share : 0.0);
   if (csv) {
     const std::array<double, kStages> a = stage_split(st, ms);
     for (size_t i = 0; i < a.size(); ++i) std::fprintf(csv, "%s%.3f", i ? "," : "", a[i]);
@@ -299,7 +299,7 @@ ARCFIRE_SCENE(combat_view) {
       std::fprintf(stderr, "arcfire-bench: ARCFIRE_BENCH_FRAMES='%s' cannot be written; name a file in a folder that exists\n", f);
       std::exit(2);
     }
-    std::fprintf(csv, "camera,tick,ms,particles_in,drawn,estimated_layers,budgeted_layers,fragments,draws,reduced,soft,cap,prep_ms,cpu_ms,"
+    std::fprintf(csv, "camera,tick,ms,particles_in,drawn,estimated_layers,budgeted_layers,fragments,draws,reduced,soft,cap,prep_ms,cpu_ms,composite_share,"
                       "opaque_ms,particle_prep_ms,particle_target_ms,particle_draws_ms,composite_ms,post_ms,hud_ms,finish_ms\n");
   }
   for (uint64_t tick = 0; tick < end; ++tick) {
