@@ -569,11 +569,15 @@ int run_window(const AppOptions& o) {
   session.setup();
   FrameTimeLog frame_times(o.frame_times_path);
   double last = session.time();
+  bool drawn = false;
   while (session.open()) {
     const double now = session.time();
+    // The frame that just ended: its whole interval (update, draw, swap) beside what the
+    // renderer timed of it and the tick it showed.
+    if (drawn && frame_times.enabled()) frame_times.frame(now - last, now, session.tick(), session.frame_stats());
     session.update(now - last);
     session.draw();
-    if (frame_times.enabled()) frame_times.frame(now - last, now, session.tick(), session.frame_stats());
+    drawn = true;
     last = now;
   }
   frame_times.finish();

@@ -25,7 +25,9 @@ xvfb-run -a -s "-screen 0 1280x720x24" bash -c '
 ' _ "$arcfire" "$out" || { cat "$out.log" 2>/dev/null; exit 1; }
 grep -E "^arcfire: [0-9]+ frames in [0-9.]+ s: p50 [0-9.]+ ms, p99 [0-9.]+ ms, worst [0-9.]+ ms" "$out.log" ||
   { echo "cli_frame_times: no percentile line"; cat "$out.log"; exit 1; }
-head -1 "$out.csv" | grep -qx "time_s,frame_ms,tick,particles_drawn,budgeted_layers,half_res" ||
+grep -E "^arcfire: median frame [0-9.]+ ms: render [0-9.]+ ms \(opaque [0-9.]+, particles [0-9.]+, post [0-9.]+, hud [0-9.]+\), the rest [0-9.]+ ms" "$out.log" ||
+  { echo "cli_frame_times: no median frame line"; cat "$out.log"; exit 1; }
+head -1 "$out.csv" | grep -qx "time_s,frame_ms,tick,particles_drawn,budgeted_layers,half_res,render_opaque_ms,render_particles_ms,render_post_ms,render_hud_ms" ||
   { echo "cli_frame_times: bad CSV header"; head -2 "$out.csv"; exit 1; }
 rows=$(($(wc -l < "$out.csv") - 1))
 [ "$rows" -ge 30 ] || { echo "cli_frame_times: only $rows frames logged"; exit 1; }
