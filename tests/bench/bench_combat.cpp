@@ -163,19 +163,18 @@ double timed_render(Renderer& r, const RenderView& v) {
 void sample(CameraRun& c, const RenderView& view, bool compare, bool reverse, std::FILE* csv, uint64_t tick) {
   const double ms = timed_render(*c.main, view);
   const FrameStats st = c.main->last_stats();
-  if (csv)
+  const std::array<double, kStages> split = stage_split(st, ms);
+  if (csv) {
     std::fprintf(csv, "%s,%llu,%.3f,%d,%d,%.3f,%.3f,%lld,%d,%d,%d,%.4f,%.3f,%.3f,%.3f,", c.name, static_cast<unsigned long long>(tick),
                  ms, st.particles_in, st.particles_drawn, st.overdraw_estimated_layers, st.overdraw_budgeted_layers,
                  st.particle_fragments, st.particle_draw_calls, st.particles_reduced, st.soft_shaded, st.overdraw_cap,
                  st.particle_prep_ms, st.particle_cpu_ms, st.particles_half_res ? st.composite_share : 0.0);
-  if (csv) {
-    const std::array<double, kStages> a = stage_split(st, ms);
-    for (size_t i = 0; i < a.size(); ++i) std::fprintf(csv, "%s%.3f", i ? "," : "", a[i]);
+    for (size_t i = 0; i < split.size(); ++i) std::fprintf(csv, "%s%.3f", i ? "," : "", split[i]);
     std::fprintf(csv, "\n");
   }
   ++c.samples;
   c.ms.push_back(ms);
-  c.stages.push_back(stage_split(st, ms));
+  c.stages.push_back(split);
   // Layers of the target the particles blend into (render.scale and render.particle_resolution
   // size it), the unit the budget's estimate is in.
   const double measured = double(std::max(0LL, st.particle_fragments)) / std::max(1.0, st.particle_target_pixels);
