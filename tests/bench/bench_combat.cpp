@@ -217,8 +217,8 @@ void sample(CameraRun& c, const RenderView& view, bool compare, bool reverse, st
     nb_ms = timed_render(*c.no_budget, view);
     off_ms = timed_render(*c.soft_off, view);
   }
-  c.soft_ratio.push_back(ms / off_ms);
-  c.budget_ratio.push_back(ms / nb_ms);
+  c.soft_ratio.push_back(single_ms / off_ms);  // one draw against one draw
+  c.budget_ratio.push_back(single_ms / nb_ms);
   ++c.compared;
   if (st.particles_reduced == 0) return;  // the same frame: nothing to compare
   Image unbudgeted = c.no_budget->read_pixels();
