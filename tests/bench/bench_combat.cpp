@@ -5,13 +5,14 @@
 // camera by its own Renderer (the overdraw budget smooths over the frames it has drawn).
 // Every frame is timed alone (render + glFinish), and its blended particle pixels are counted
 // by the occlusion query. Each camera has a twin renderer, made alike and fed the same frames (so
-// its budget smoothing and resolution choice stay the same as the main one's), which draws every
-// timed frame again, before the main one on odd samples and after it on even ones: a frame's time
-// is the faster of the two. On a shared machine a single draw now and then waits for the CPU
-// (one run's single-draw p99 moved 24–34 ms with the same build); the faster of two draws rarely
-// does, and the single draws are still reported (_single_). Every sixth sample each camera also renders the same frame without
-// the overdraw budget (its image error against the budgeted frame, PSNR) and with soft edges
-// off (what soft edges cost), interleaved with the timed frames of the same tick.
+// its budget smoothing and resolution choice stay the main one's), which draws every timed frame
+// again, before the main one on odd samples and after it on even ones: a frame's time is the
+// faster of the two. On a shared machine a single draw now and then waits for the CPU (the same
+// build's single-draw p99 moved between 24 and 34 ms from run to run); the faster of two draws
+// rarely does, and the single draws are still reported (_single_). Every sixth sample each
+// camera also renders the same frame without the overdraw budget (its image error against the
+// budgeted frame, PSNR) and with soft edges off (what soft edges cost), interleaved with the
+// timed frames of the same tick; those ratios pair the main draw alone with the variant's draw.
 //   combat_frame_p50_ms_<camera>, combat_frame_p99_ms_<camera>   frame time percentiles (faster of two)
 //   combat_frame_p50_ms_single_<camera>, combat_frame_p99_ms_single_<camera>   the main draws alone
 //   combat_blended_layers_p99_<camera>     blended particle pixels ÷ screen pixels, 99th percentile
