@@ -12,6 +12,11 @@ uniform float u_size_clamp; // largest on-screen size as a fraction of screen he
 uniform float u_near;
 uniform vec3 u_linearize;   // view depth = x / (y·depth + z), denominator ≥ 0 in every depth mode
 uniform bool u_linear;        // HDR: decode the sRGB-picked colour to linear light
+// Trimming (gfx/sprite_trim.h): the quad is cut to the box outside which the sprite samples
+// zero at the coarsest mip level any of its pixels can read.
+uniform sampler2D u_trim;     // texel (level, sprite): the box (u0, v0, u1, v1)
+uniform float u_lod_scale;    // sprite texels per pixel at unit view depth and unit half-size
+uniform int u_trim_mode;      // 0: level 0 only (no mipmaps), 1: nearest level, 2: trilinear; −1: whole quads
 out vec2 v_uv;
 out float v_depth;          // linear view depth of this fragment (varies along axis-locked quads)
 // Everything constant over one particle is flat, so a software rasteriser interpolates only the
@@ -48,7 +53,6 @@ void main() {
   vec2 i_burn_extent = uintBitsToFloat(w3.xy);
   uint i_sprite = w3.z & 0xFFu;                                // uint8 sprite (then uint8 screen priority)
   uvec2 i_soft_board = uvec2((w3.z >> 16) & 0xFFu, w3.z >> 24);  // uint8 soft_edge, uint8 billboard
-  vec2 corner = vec2((gl_VertexID & 1) != 0 ? 1.0 : -1.0, (gl_VertexID & 2) != 0 ? 1.0 : -1.0);
   vec3 c = (u_view * vec4(i_pos_size.xyz, 1.0)).xyz;
   float dist = max(-c.z, u_near);
   float size = max(i_pos_size.w, kEps);
@@ -72,6 +76,16 @@ void main() {
     right = vec3(cs, sn, 0.0);
     up = vec3(-sn, cs, 0.0);
   }
+  // The quad faces the view ray (both axes are across it), so no part of it shows smaller than
+  // its centre would at the depth of its farthest point: the sampler's level of detail is at
+  // most log2(texels per pixel there) across its narrower side (size ≤ half_long).
+  float far_depth = max(-c.z + sqrt(size * size + half_long * half_long), u_near);
+  float lod = log2(max(u_lod_scale * far_depth / size, 1e-30));
+  int levels = textureSize(u_trim, 0).x;
+  int level = u_trim_mode == 0 ? 0 : int(floor(lod + (u_trim_mode == 1 ? 0.55 : 1.05)));
+  vec4 box = u_trim_mode < 0 ? vec4(0.0, 0.0, 1.0, 1.0) : texelFetch(u_trim, ivec2(clamp(level, 0, levels - 1), int(i_sprite)), 0);
+  vec2 uv = vec2((gl_VertexID & 1) != 0 ? box.z : box.x, (gl_VertexID & 2) != 0 ? box.y : box.w);
+  vec2 corner = vec2(2.0 * uv.x - 1.0, 1.0 - 2.0 * uv.y);
   vec3 p = c + right * (corner.x * size) + up * (corner.y * half_long);
   float extent = max(i_burn_extent.y > 0.0 ? i_burn_extent.y : size, kEps);
   // Krazanowski's volumes reach in front of the particle's mirror plane (by extent/2 for average
@@ -85,7 +99,7 @@ void main() {
   float pd = -p.z;
   if (push > 0.0 && pd > u_near) p *= max(pd - push, u_near * 1.001) / pd;
   gl_Position = u_proj * vec4(p, 1.0);
-  v_uv = vec2(corner.x * 0.5 + 0.5, 0.5 - corner.y * 0.5);
+  v_uv = uv;
   v_color = vec4(instance_rgb(i_color), i_color.a * (1.0 - i_burn_extent.x));
   v_depth = -p.z;
   float inv_e = 1.0 / extent;

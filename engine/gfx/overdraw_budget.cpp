@@ -36,7 +36,7 @@ double step_toward(double log_k, double log_target, double dt) {
 double OverdrawBudget::area_at(uint32_t i, double k) const {
   const Footprint& f = fp_[i];
   const float r = float(std::min(1.0, k / double(f.threshold)));
-  return double(f.frac) * 4.0 * double(r * f.w_px) * double(f.half_axis_px + r * f.w_px);
+  return double(f.frac) * 4.0 * double(r * f.w_px * f.trim_across) * double((f.half_axis_px + r * f.w_px) * f.trim_along);
 }
 
 double OverdrawBudget::total_area(const std::vector<uint32_t>& set, double k) const {
@@ -136,6 +136,13 @@ double OverdrawBudget::estimate(const std::vector<ParticleInstance>& particles, 
       }
     }
     const float len = f.half_axis_px + f.w_px;
+    f.trim_across = f.trim_along = 1.0f;
+    if (frame.trim && frame.trim_mode != TrimMode::Off) {
+      const float lod_scale = frame.trim->lod_scale(tan_y, frame.trim_height);
+      const TrimBox b = frame.trim->box(frame.trim_mode, p.sprite, lod_scale, f.size, len / ppu, -c.z, frame.near);
+      f.trim_across = b.u1 - b.u0;
+      f.trim_along = b.v1 - b.v0;
+    }
     const float hx = std::abs(dir.x) * len + std::abs(dir.y) * f.w_px;
     const float hy = std::abs(dir.y) * len + std::abs(dir.x) * f.w_px;
     if (f.half_axis_px > 0.0f) set_segment_box(f, c, across, to_p, frame);
@@ -143,7 +150,7 @@ double OverdrawBudget::estimate(const std::vector<ParticleInstance>& particles, 
     const float sx = 0.5f * W + c.x * ppu, sy = 0.5f * H - c.y * ppu;
     const float box = std::max(4.0f * hx * hy, 1e-12f);
     f.frac = std::min(1.0f, overlap(sx, hx, W) * overlap(sy, hy, H) / box);
-    f.area = float(std::min(double(f.frac) * 4.0 * double(f.w_px) * double(len), screen));
+    f.area = float(std::min(double(f.frac) * 4.0 * double(f.w_px * f.trim_across) * double(len * f.trim_along), screen));
     const int prio = std::min<int>(p.screen_priority, 2);
     const float g = std::max(1.0f, (d / near_m) * (d / near_m));
     // What the particle does to a pixel: the light it adds (rgb is premultiplied) or the

@@ -41,6 +41,7 @@
 #include <glm/mat3x3.hpp>
 
 #include "gfx/particle_coverage.h"
+#include "gfx/sprite_trim.h"
 #include "particles/render_output.h"
 
 namespace arc {
@@ -52,6 +53,11 @@ struct OverdrawFrame {
   float size_clamp = 0.5f;   // render.particle_size_clamp, as particle.vert applies it
   int width = 1, height = 1; // scene pixels
   double time_seconds = 0;   // RenderView::time_seconds
+  // Quads cut to their sprites' boxes (sprite_trim.h), as particle.vert draws them: each
+  // particle's area is its box's share of the quad, taken at its unreduced size.
+  const SpriteTrim* trim = nullptr;
+  TrimMode trim_mode = TrimMode::Off;
+  int trim_height = 1;  // pixel rows of the target the particles are drawn into (its level of detail)
 };
 
 struct OverdrawOptions {
@@ -88,6 +94,8 @@ class OverdrawBudget {
   struct Footprint {
     float size;          // half-width, m, after particle.vert's size clamp
     float w_px;          // half-width on screen, pixels
+    float trim_across;   // share of the width the sprite's trim box keeps (1: whole quad)
+    float trim_along;    // share of the length it keeps
     float half_axis_px;  // half the axis-locked segment's on-screen length, pixels (0: square)
     float frac;          // share of the quad's bounding box on screen
     float threshold;     // the k below which its cap binds

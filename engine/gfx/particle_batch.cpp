@@ -73,7 +73,8 @@ void ParticleBatch::prepare(const RenderView& v, const ViewProjection& vp, const
   const glm::vec3 forward = -glm::vec3(glm::transpose(vp.view)[2]);  // camera −Z in world space
   cull_and_flag(v, vp, forward, model_boxes, options.soft_override);
   const OverdrawFrame frame{glm::mat3(vp.view), 1.0f / vp.proj[1][1], float(v.camera.near_plane), options.size_clamp,
-                            options.width, options.height, v.time_seconds};
+                            options.width, options.height, v.time_seconds, options.trim, options.trim_mode,
+                            options.trim_height};
   overdraw = budget_.apply(particles, areas, frame, options.overdraw, &boxes_);
   coverage.reset(options.width, options.height);
   budget_.mark_coverage(coverage);

@@ -38,6 +38,9 @@ struct ParticleBatchOptions {
   float size_clamp = 0.5f;   // RenderSettings::size_clamp, as particle.vert applies it
   int width = 1280, height = 720;  // scene pixels, for the blended-area estimate
   int max_runs = 24;         // draws the batch may be split into (particle_runs.h)
+  const SpriteTrim* trim = nullptr;  // the sprites' trim boxes, for the area estimate
+  TrimMode trim_mode = TrimMode::Off;
+  int trim_height = 720;  // pixel rows of the target drawn into: the half-resolution one's when it is likely
 };
 
 struct ParticleBatch {

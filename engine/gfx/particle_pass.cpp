@@ -9,6 +9,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "gfx/color_space.h"
+#include "gfx/sprite_trim.h"
 #include "gfx/texture_filter.h"
 
 namespace arc {
@@ -25,7 +26,7 @@ const Program& choose_program(const ShaderPrograms& programs, const ParticleRun&
 }
 
 // The frame's uniforms of one particle program (each program the runs use, once a frame).
-void set_uniforms(const Program& particle, const RenderSettings& rs, const ParticleFrame& frame) {
+void set_uniforms(const Program& particle, const RenderSettings& rs, const ParticleFrame& frame, const SpriteTrim& trim) {
   glUniformMatrix4fv(particle.loc("u_view"), 1, GL_FALSE, glm::value_ptr(frame.vp.view));
   glUniformMatrix4fv(particle.loc("u_proj"), 1, GL_FALSE, glm::value_ptr(frame.vp.proj));
   glUniform1f(particle.loc("u_tan_half_y"), float(std::tan(frame.fov_y_radians * 0.5)));
@@ -43,6 +44,11 @@ void set_uniforms(const Program& particle, const RenderSettings& rs, const Parti
   glUniform1i(particle.loc("u_scene_depth"), 1);
   glUniform1i(particle.loc("u_particles"), 2);
   glUniform2f(particle.loc("u_inv_depth_size"), 1.0f / float(frame.scene_width), 1.0f / float(frame.scene_height));
+  // Sprite texels per screen pixel at unit view depth and unit half-size, and which mip levels
+  // the filter can read (the trim box of the coarsest one is taken: sprite_trim.h).
+  glUniform1i(particle.loc("u_trim"), 3);
+  glUniform1f(particle.loc("u_lod_scale"), trim.lod_scale(float(std::tan(frame.fov_y_radians * 0.5)), frame.scene_height));
+  glUniform1i(particle.loc("u_trim_mode"), int(trim_mode(rs)));
 }
 
 }  // namespace
@@ -76,8 +82,8 @@ ParticlePass::~ParticlePass() {
   glDeleteVertexArrays(1, &vao_);
   GLuint bufs[] = {vbo_, ibo_};
   glDeleteBuffers(2, bufs);
-  GLuint tex[] = {tbo_, sprite_tex_, sprite_tex_linear_};
-  glDeleteTextures(3, tex);
+  GLuint tex[] = {tbo_, sprite_tex_, sprite_tex_linear_, trim_tex_};
+  glDeleteTextures(4, tex);
   if (fragment_query_) glDeleteQueries(1, &fragment_query_);
 }
 
@@ -96,6 +102,18 @@ void ParticlePass::set_sprites(const std::vector<Image>& sprites, RenderSettings
   for (Image& s : display) premultiply(s);
   if (!sprite_tex_) glGenTextures(1, &sprite_tex_);
   upload_sprite_array(sprite_tex_, GL_RGBA8, display);
+  // The trim boxes of the array as uploaded (linear-light premultiplication keeps the zeros).
+  std::vector<Image> stretched;
+  for (const Image& s : display) stretched.push_back(stretch_nearest(s, sprite_w_, sprite_h_));
+  trim_.boxes = trim_boxes(stretched);
+  trim_.levels = mip_levels(sprite_w_, sprite_h_);
+  trim_.texels = std::max(sprite_w_, sprite_h_);
+  if (!trim_tex_) glGenTextures(1, &trim_tex_);
+  glBindTexture(GL_TEXTURE_2D, trim_tex_);
+  static_assert(sizeof(TrimBox) == 4 * sizeof(float), "trim boxes are uploaded as RGBA32F texels");
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, trim_.levels, GLsizei(stretched.size()), 0, GL_RGBA, GL_FLOAT,
+               trim_.boxes.data());
+  set_target_sampling(GL_TEXTURE_2D, GL_NEAREST);
   if (sprite_tex_linear_) glDeleteTextures(1, &sprite_tex_linear_);
   sprite_tex_linear_ = 0;
 }
@@ -117,18 +135,9 @@ void ParticlePass::upload_sprite_array(GLuint tex, GLenum internal_format, const
   glBindTexture(GL_TEXTURE_2D_ARRAY, tex);
   glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GLint(internal_format), w, h, GLsizei(sprites.size()), 0, GL_RGBA,
                GL_UNSIGNED_BYTE, nullptr);
-  std::vector<uint8_t> resized;
   for (size_t layer = 0; layer < sprites.size(); ++layer) {
-    const Image& s = sprites[layer];
-    const uint8_t* data = s.rgba.data();
-    if (s.width != w || s.height != h) {
-      resized.resize(size_t(w) * h * 4);
-      for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x)
-          std::memcpy(&resized[(size_t(y) * w + x) * 4], &s.rgba[(size_t(y * s.height / h) * s.width + x * s.width / w) * 4], 4);
-      data = resized.data();
-    }
-    glTexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, GLint(layer), w, h, 1, GL_RGBA, GL_UNSIGNED_BYTE, data);
+    const Image s = stretch_nearest(sprites[layer], w, h);
+    glTexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, GLint(layer), w, h, 1, GL_RGBA, GL_UNSIGNED_BYTE, s.rgba.data());
   }
   // Mipmaps of an sRGB array are averaged in linear light (the driver decodes and encodes).
   glGenerateMipmap(GL_TEXTURE_2D_ARRAY);
@@ -182,6 +191,8 @@ int ParticlePass::draw(const ParticleBatch& batch, const ShaderPrograms& program
   glBindTexture(GL_TEXTURE_2D, frame.depth_copy);
   glActiveTexture(GL_TEXTURE2);
   glBindTexture(GL_TEXTURE_BUFFER, tbo_);
+  glActiveTexture(GL_TEXTURE3);
+  glBindTexture(GL_TEXTURE_2D, trim_tex_);
   glActiveTexture(GL_TEXTURE0);
   glBindVertexArray(vao_);
   if (count_fragments_) {
@@ -199,7 +210,7 @@ int ParticlePass::draw(const ParticleBatch& batch, const ShaderPrograms& program
       glUseProgram(particle.id);
       current = particle.id;
       if (std::find(ready.begin(), ready.end(), current) == ready.end()) {
-        set_uniforms(particle, rs, frame);
+        set_uniforms(particle, rs, frame, trim_);
         ready.push_back(current);
       }
     }

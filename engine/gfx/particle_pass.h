@@ -24,6 +24,7 @@
 #include "gfx/particle_batch.h"
 #include "gfx/render_settings.h"
 #include "gfx/shader_programs.h"
+#include "gfx/sprite_trim.h"
 #include "gfx/view_projection.h"
 
 namespace arc {
@@ -56,6 +57,8 @@ class ParticlePass {
   void set_sprites(const std::vector<Image>& sprites, RenderSettings::Filter filter);
   void set_texture_filter(RenderSettings::Filter filter);
   size_t max_particles_per_draw() const { return max_particles_per_draw_; }
+  // The sprites' trim boxes (sprite_trim.h), for the batch's blended-area estimate.
+  const SpriteTrim& trim() const { return trim_; }
 
   void upload(const std::vector<ParticleInstance>& particles);
   // Draws what upload() received into the bound framebuffer, one draw per run of the batch,
@@ -81,6 +84,8 @@ class ParticlePass {
   GLuint sprite_tex_ = 0;             // RGBA8, premultiplied display values
   GLuint sprite_tex_linear_ = 0;      // SRGB8_ALPHA8, premultiplied in linear light; 0 until needed
   int sprite_w_ = 1, sprite_h_ = 1;
+  SpriteTrim trim_;                   // each sprite's box at each mip level
+  GLuint trim_tex_ = 0;               // the same boxes, RGBA32F texels (level, sprite)
   bool count_fragments_ = false;
   GLuint fragment_query_ = 0;
   bool query_pending_ = false;

@@ -33,6 +33,9 @@ struct RenderSettings {
   // particles are shrunk, faded and dropped (overdraw_budget.h); 0: no budget.
   float overdraw_budget = 0.0f;
   float overdraw_near = 40.0f;  // m: beyond this the budget's reductions weaken with distance squared
+  // Particle quads cut to where their sprite can be non-zero (sprite_trim.h). The picture is
+  // the same either way; off only to measure what it saves.
+  bool sprite_trim = true;
   int max_particle_draws = 24;  // runs the particle batch may be split into (particle_runs.h); ≥ 1
   // Particles drawn at half resolution, then put over the scene (particle_target.h): Full never,
   // Half always, Auto when a frame's particles blend more than kHalfResAbove screen layers

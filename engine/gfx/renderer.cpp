@@ -247,6 +247,13 @@ void Renderer::Impl::draw_particles(const RenderView& v, const ViewProjection& v
   options.overdraw = {rs.overdraw_budget, rs.overdraw_near};
   options.size_clamp = rs.size_clamp;
   options.max_runs = std::max(1, rs.max_particle_draws);
+  options.trim = &particles.trim();
+  options.trim_mode = trim_mode(rs);
+  // The sampler's level of detail follows the target: the half-resolution one when it is set
+  // or was chosen last frame (the choice for this one follows from the estimate).
+  using Res = RenderSettings::ParticleResolution;
+  const bool likely_half = rs.particle_resolution == Res::Half || (rs.particle_resolution == Res::Auto && half_res);
+  options.trim_height = likely_half ? std::max(1, targets.scene_height() / 2) : targets.scene_height();
   // Layers are shares of the screen whichever target the particles blend into.
   options.width = targets.scene_width();
   options.height = targets.scene_height();
@@ -262,7 +269,6 @@ void Renderer::Impl::draw_particles(const RenderView& v, const ViewProjection& v
   stats.sorted = batch.sorted;
   stats.soft_shaded = batch.soft_shaded;
   stats.particle_prep_ms = ms_since(t0);
-  using Res = RenderSettings::ParticleResolution;
   if (rs.particle_resolution != Res::Auto) half_res = rs.particle_resolution == Res::Half;
   else if (batch.overdraw.budgeted_layers > RenderSettings::kHalfResAbove) half_res = true;
   else if (batch.overdraw.budgeted_layers < RenderSettings::kHalfResBelow) half_res = false;

@@ -120,6 +120,9 @@ struct CameraRun {
   const char* name = "";
   CameraMode mode = CameraMode::Chase;
   std::unique_ptr<Renderer> main, twin, no_budget, soft_off;  // twin: the main one again, for the faster of two
+  std::unique_ptr<Renderer> untrimmed;  // the main one with whole particle quads (render.sprite_trim off), every frame
+  std::vector<double> trim_ratio, trim_pixels;  // trimmed ÷ whole quads: frame time (compared frames), blended pixels
+  double trim_psnr_min = std::numeric_limits<double>::infinity();
   std::vector<ModelId> models;
   std::vector<double> ms, single_ms, layers, estimate_ratio, soft_ratio, budget_ratio, psnr;
   double mse_sum = 0;  // over the compared frames the budget reduced
@@ -179,9 +182,13 @@ double twin_render(CameraRun& c, const RenderView& view) {
 void sample(CameraRun& c, const RenderView& view, bool compare, bool reverse, std::FILE* csv, uint64_t tick) {
   const bool twin_first = c.samples % 2 == 1;
   const double twin_before = twin_first ? twin_render(c, view) : 0.0;
+  const double whole_before = twin_first ? timed_render(*c.untrimmed, view) : 0.0;
   const double single_ms = timed_render(*c.main, view);
   const FrameStats st = c.main->last_stats();
+  const double whole_ms = twin_first ? whole_before : timed_render(*c.untrimmed, view);
+  const FrameStats whole = c.untrimmed->last_stats();
   const double ms = std::min(single_ms, twin_first ? twin_before : twin_render(c, view));
+  if (whole.particle_fragments > 0) c.trim_pixels.push_back(double(st.particle_fragments) / double(whole.particle_fragments));
   c.single_ms.push_back(single_ms);
   const std::array<double, kStages> split = stage_split(st, single_ms);  // the main draw's own stats
   if (csv) {
@@ -209,6 +216,10 @@ void sample(CameraRun& c, const RenderView& view, bool compare, bool reverse, st
   }
   if (!compare) return;
   const Image budgeted = c.main->read_pixels();
+  if (whole.particles_drawn > 0) {
+    c.trim_ratio.push_back(single_ms / whole_ms);
+    c.trim_psnr_min = std::min(c.trim_psnr_min, psnr_db(budgeted, c.untrimmed->read_pixels()));
+  }
   // The soft-off frame and the budget-off frame in alternating order around each other.
   double off_ms = 0, nb_ms = 0;
   if (reverse) {
@@ -256,6 +267,12 @@ void report(CameraRun& c) {
   bench::report_metric("combat_estimate_over_measured_" + n, bench::median(c.estimate_ratio));
   bench::report_metric("combat_particle_draws_max_" + n, c.draws_max);
   bench::report_metric("soft_edge_cost_ratio_combat_" + n, bench::median(c.soft_ratio));
+  std::printf("  %-7s sprite trimming: blended pixels x%.3f (median; p99 frame x%.3f), frame time x%.3f (median of %zu pairs),"
+              " PSNR against whole quads worst %.1f dB\n", c.name, bench::median(c.trim_pixels), percentile(c.trim_pixels, 0.99),
+              bench::median(c.trim_ratio), c.trim_ratio.size(), std::isinf(c.trim_psnr_min) ? 99.0 : c.trim_psnr_min);
+  bench::report_metric("combat_trim_pixel_ratio_" + n, bench::median(c.trim_pixels));
+  bench::report_metric("combat_trim_time_ratio_" + n, bench::median(c.trim_ratio));
+  bench::report_metric("combat_trim_psnr_min_db_" + n, std::isinf(c.trim_psnr_min) ? 99.0 : c.trim_psnr_min);
   // Where the slowest 1 % of frames spend their time: each stage's mean over the frames at or
   // above the 99th percentile (past the first frames, which compile shader variants).
   std::array<double, kStages> slow{};
@@ -313,6 +330,10 @@ ARCFIRE_SCENE(combat_view) {
     c.twin = make_renderer(root, settings, nullptr, nullptr, game.world(), nullptr);
     c.no_budget = make_renderer(root, settings, "render.overdraw_budget", "0", game.world(), nullptr);
     c.soft_off = make_renderer(root, settings, "render.soft_edges", "off", game.world(), nullptr);
+    c.untrimmed = make_renderer(root, settings, nullptr, nullptr, game.world(), nullptr);
+    RenderSettings whole = c.untrimmed->render_settings();
+    whole.sprite_trim = false;
+    c.untrimmed->set_render_settings(whole);
   }
   const uint64_t end = script.end_tick.value_or(1800);
   RenderView view;

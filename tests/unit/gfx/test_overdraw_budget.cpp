@@ -142,7 +142,9 @@ TEST(OverdrawBudget, IsSmoothInDistance) {
     b.apply(ps, areas, frame(), {.budget_layers = 2.0f});
     const float drawn = std::min(ps.back().size, 0.5f * -z * std::tan(0.45f));  // particle.vert's size clamp
     const float px = drawn * 0.5f * kH / (-z * std::tan(0.45f));
-    if (last >= 0) EXPECT_LT(std::abs(px - last), 0.05f * std::max(px, last) + 1.0f) << "z " << z;
+    if (last >= 0) {
+      EXPECT_LT(std::abs(px - last), 0.05f * std::max(px, last) + 1.0f) << "z " << z;
+    }
     last = px;
   }
 }

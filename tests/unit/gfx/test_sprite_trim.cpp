@@ -1,0 +1,198 @@
+// Sprite trimming (gfx/sprite_trim.h): outside each level's box a bilinear sample of that level
+// of box-filtered mipmaps is exactly zero, the boxes grow with the level, and they are tight
+// (within a texel and a half of the non-zero texels); headless through EGL, trimmed quads draw
+// the picture of whole ones with fewer blended pixels, under every texture filter.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "assets/image.h"
+#include "core/rng.h"
+#include "gfx/image_compare.h"
+#include "gfx/sprite_trim.h"
+#include "gfx_test_util.h"
+
+namespace arc {
+namespace {
+
+Image blank(int w, int h) {
+  Image img;
+  img.width = w;
+  img.height = h;
+  img.rgba.assign(size_t(w) * size_t(h) * 4, 0);
+  img.premultiplied = true;
+  return img;
+}
+
+void set_texel(Image& img, int x, int y, uint8_t a) {
+  uint8_t* t = &img.rgba[(size_t(y) * size_t(img.width) + size_t(x)) * 4];
+  t[0] = t[1] = t[2] = uint8_t(a / 2);
+  t[3] = a;
+}
+
+// Alpha of each mip level as glGenerateMipmap makes it for power-of-two sizes: each texel the
+// mean of the 2 × 2 below it.
+std::vector<std::vector<float>> alpha_mips(const Image& img) {
+  std::vector<std::vector<float>> levels(1);
+  for (size_t i = 0; i < size_t(img.width) * size_t(img.height); ++i) levels[0].push_back(float(img.rgba[i * 4 + 3]));
+  for (int w = img.width, h = img.height; w > 1 || h > 1;) {
+    const int nw = std::max(1, w / 2), nh = std::max(1, h / 2);
+    std::vector<float> next(size_t(nw) * size_t(nh));
+    const std::vector<float>& prev = levels.back();
+    for (int y = 0; y < nh; ++y)
+      for (int x = 0; x < nw; ++x) {
+        float sum = 0;
+        for (int dy = 0; dy < 2; ++dy)
+          for (int dx = 0; dx < 2; ++dx) sum += prev[size_t(std::min(h - 1, 2 * y + dy)) * size_t(w) + size_t(std::min(w - 1, 2 * x + dx))];
+        next[size_t(y) * size_t(nw) + size_t(x)] = sum / 4.0f;
+      }
+    levels.push_back(std::move(next));
+    w = nw, h = nh;
+  }
+  return levels;
+}
+
+// A bilinear, clamp-to-edge sample of a level at (u, v).
+float bilinear(const std::vector<float>& level, int w, int h, float u, float v) {
+  const float x = u * float(w) - 0.5f, y = v * float(h) - 0.5f;
+  const int x0 = int(std::floor(x)), y0 = int(std::floor(y));
+  const float fx = x - float(x0), fy = y - float(y0);
+  auto at = [&](int xi, int yi) { return level[size_t(std::clamp(yi, 0, h - 1)) * size_t(w) + size_t(std::clamp(xi, 0, w - 1))]; };
+  return (at(x0, y0) * (1 - fx) + at(x0 + 1, y0) * fx) * (1 - fy) + (at(x0, y0 + 1) * (1 - fx) + at(x0 + 1, y0 + 1) * fx) * fy;
+}
+
+TEST(SpriteTrim, MipLevelsGoDownToOneTexel) {
+  EXPECT_EQ(mip_levels(1, 1), 1);
+  EXPECT_EQ(mip_levels(128, 128), 8);
+  EXPECT_EQ(mip_levels(128, 32), 8);
+  EXPECT_EQ(mip_levels(3, 5), 3);
+}
+
+TEST(SpriteTrim, OneTexelGivesItsBilinearReachAtEachLevel) {
+  Image img = blank(16, 16);
+  set_texel(img, 5, 9, 200);
+  const std::vector<TrimBox> b = trim_boxes({img});
+  ASSERT_EQ(b.size(), 5u);
+  EXPECT_FLOAT_EQ(b[0].u0, 4.5f / 16);
+  EXPECT_FLOAT_EQ(b[0].u1, 6.5f / 16);
+  EXPECT_FLOAT_EQ(b[0].v0, 8.5f / 16);
+  EXPECT_FLOAT_EQ(b[0].v1, 10.5f / 16);
+  EXPECT_FLOAT_EQ(b[1].u0, 1.5f / 8);
+  EXPECT_FLOAT_EQ(b[1].u1, 3.5f / 8);  // texel (2, 4) of 8 × 8
+  EXPECT_FLOAT_EQ(b[4].u0, 0.0f);
+  EXPECT_FLOAT_EQ(b[4].u1, 1.0f);          // the 1 × 1 level: everywhere
+}
+
+TEST(SpriteTrim, AnEmptySpriteHasAnEmptyBox) {
+  const std::vector<TrimBox> b = trim_boxes({blank(8, 8)});
+  for (const TrimBox& t : b) EXPECT_TRUE(t.u0 == t.u1 && t.v0 == t.v1);
+}
+
+TEST(SpriteTrim, ASmallerLayerIsTrimmedAsTheArrayStretchesIt) {
+  Image small = blank(4, 4);
+  set_texel(small, 3, 0, 255);
+  const Image big = stretch_nearest(small, 16, 16);
+  ASSERT_EQ(big.width, 16);
+  const std::vector<TrimBox> b = trim_boxes({big});
+  EXPECT_FLOAT_EQ(b[0].u0, 11.5f / 16);
+  EXPECT_FLOAT_EQ(b[0].v1, 4.5f / 16);
+}
+
+// Random sparse sprites: every sample outside a level's box is exactly zero, a coarser level's
+// box holds a finer one's, and each box reaches at most 1.5 texels past the non-zero texels of
+// its level.
+TEST(SpriteTrim, SamplesOutsideTheBoxAreZeroAndTheBoxIsTight) {
+  const Rng rng{11, 3, 0};
+  for (uint64_t k = 0; k < 40; ++k) {
+    Image img = blank(32, 32);
+    const int cx = int(rng.range(k * 8, 4, 28)), cy = int(rng.range(k * 8 + 1, 4, 28));
+    const int rx = int(rng.range(k * 8 + 2, 0, 6)), ry = int(rng.range(k * 8 + 3, 0, 6));
+    for (int y = std::max(0, cy - ry); y <= std::min(31, cy + ry); ++y)
+      for (int x = std::max(0, cx - rx); x <= std::min(31, cx + rx); ++x)
+        if (rng.uniform(k * 4096 + uint64_t(y * 32 + x)) < 0.5) set_texel(img, x, y, uint8_t(1 + (x * 7 + y) % 250));
+    set_texel(img, cx, cy, 9);
+    const std::vector<TrimBox> boxes = trim_boxes({img});
+    const std::vector<std::vector<float>> mips = alpha_mips(img);
+    ASSERT_EQ(boxes.size(), mips.size());
+    for (size_t m = 0; m < mips.size(); ++m) {
+      const int n = std::max(1, 32 >> m);
+      const TrimBox& b = boxes[m];
+      if (m > 0) {
+        EXPECT_LE(b.u0, boxes[m - 1].u0);
+  EXPECT_GE(b.u1, boxes[m - 1].u1);
+        EXPECT_LE(b.v0, boxes[m - 1].v0);
+  EXPECT_GE(b.v1, boxes[m - 1].v1);
+      }
+      int lo = n, hi = -1;
+      for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x)
+          if (mips[m][size_t(y) * size_t(n) + size_t(x)] > 0) lo = std::min(lo, x), hi = std::max(hi, x);
+      ASSERT_GE(hi, 0);
+      EXPECT_GE(b.u0, std::max(0.0f, (float(lo) - 0.5f) / float(n)) - 1e-6f) << "sprite " << k << " level " << m;
+      EXPECT_LE(b.u1, std::min(1.0f, (float(hi) + 1.5f) / float(n)) + 1e-6f) << "sprite " << k << " level " << m;
+      for (int s = 0; s < 400; ++s) {
+        const float u = float(rng.uniform(k * 100000 + m * 1000 + uint64_t(s) * 2));
+        const float v = float(rng.uniform(k * 100000 + m * 1000 + uint64_t(s) * 2 + 1));
+        if (u >= b.u0 && u <= b.u1 && v >= b.v0 && v <= b.v1) continue;
+        ASSERT_EQ(bilinear(mips[m], n, n, u, v), 0.0f) << "sprite " << k << " level " << m << " at " << u << ", " << v;
+      }
+    }
+  }
+}
+
+// Big and small particles of every sprite, near and far, camera-facing (turned) and axis-locked
+// streaks: trimmed quads blend fewer pixels and draw the same picture as whole ones.
+TEST(SpriteTrim, TrimmedQuadsDrawTheWholeQuadsPicture) {
+  REQUIRE_CONTEXT();
+  Renderer r(RendererDesc{.offscreen = true});
+  std::vector<Image> sprites;
+  for (const char* name : {"blob", "glow", "spark", "flare", "smoke", "shield"})
+    sprites.push_back(load_sprite(std::string(ARCFIRE_SOURCE_DIR) + "/assets/textures/sprite_" + name + ".png"));
+  r.set_sprites(sprites);
+  RenderView v = test::dark_view();
+  for (int i = 0; i < 90; ++i) {
+    const float depth = 3.0f + 2.5f * float(i % 9);
+    ParticleInstance p = scenes::particle({-6.0f + 0.14f * float(i), float(i % 5) - 2.0f, -depth}, 0.2f + 0.12f * float(i % 7),
+                                          glm::vec3(0.9f, 0.6f, 0.3f), 0.6f, i % 2 ? 1.0f : 0.0f, SoftEdge::Off);
+    p.sprite = uint8_t(i % 6);
+    p.rotation = 0.37f * float(i);
+    if (i % 6 == 2) {
+      p.billboard = uint8_t(Billboard::AxisLocked);
+      p.axis[0] = 0.8f * std::cos(0.5f * float(i)), p.axis[1] = 1.5f * std::sin(0.5f * float(i)), p.axis[2] = -0.7f;
+      p.size *= 0.3f;
+    }
+    v.particles.push_back(p);
+  }
+  for (auto filter : {RenderSettings::Filter::MipmapNearest, RenderSettings::Filter::Mipmap, RenderSettings::Filter::Linear}) {
+    RenderSettings s = test::plain_settings();
+    s.filter = filter;
+    s.sprite_trim = false;
+    r.set_render_settings(s);
+    r.count_particle_fragments(true);
+    r.render(v, 480, 270);
+    const Image whole = r.read_pixels();
+    const long long whole_px = r.last_stats().particle_fragments;
+    const double whole_estimate = r.last_stats().overdraw_estimated_layers * 480 * 270;
+    s.sprite_trim = true;
+    r.set_render_settings(s);
+    r.render(v, 480, 270);
+    const Image trimmed = r.read_pixels();
+    const long long trimmed_px = r.last_stats().particle_fragments;
+    const double trimmed_estimate = r.last_stats().overdraw_estimated_layers * 480 * 270;
+    // The budget's estimate follows the trimmed quads (within the rounding of edges to pixels).
+    EXPECT_NEAR(whole_estimate / double(whole_px), 1.0, 0.1) << "filter " << int(filter);
+    EXPECT_NEAR(trimmed_estimate / double(trimmed_px), 1.0, 0.1) << "filter " << int(filter);
+    test::dump_if_asked("sprite_trim_" + std::to_string(int(filter)), trimmed);
+    EXPECT_LT(double(trimmed_px), 0.9 * double(whole_px)) << "filter " << int(filter);
+    // The same texels at the same pixels; only the interpolated texture coordinate may round
+    // differently in its last bit.
+    const ImageDiff d = compare_images(whole, trimmed);
+    EXPECT_LE(d.max_diff, 2) << "filter " << int(filter);
+    EXPECT_GE(psnr_db(whole, trimmed), 55.0) << "filter " << int(filter);
+  }
+}
+
+}  // namespace
+}  // namespace arc
