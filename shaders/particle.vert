@@ -76,11 +76,12 @@ void main() {
     right = vec3(cs, sn, 0.0);
     up = vec3(-sn, cs, 0.0);
   }
-  // The quad faces the view ray (both axes are across it), so no part of it shows smaller than
-  // its centre would at the depth of its farthest point: the sampler's level of detail is at
-  // most log2(texels per pixel there) across its narrower side (size ≤ half_long).
-  float far_depth = max(-c.z + sqrt(size * size + half_long * half_long), u_near);
-  float lod = log2(max(u_lod_scale * far_depth / size, 1e-30));
+  // The quad is square to the view ray (both its axes are across it), so at its distance R it
+  // shows no part smaller than a fronto-parallel one would at view depth R + radius²/R: the
+  // sampler's level of detail is at most log2(texels per pixel there) across its narrower side
+  // (size ≤ half_long). gfx/sprite_trim.h derives it.
+  float r_eye = max(len_c, u_near);
+  float lod = log2(max(u_lod_scale * (r_eye + (size * size + half_long * half_long) / r_eye) / size, 1e-30));
   int levels = textureSize(u_trim, 0).x;
   int level = u_trim_mode == 0 ? 0 : int(floor(lod + (u_trim_mode == 1 ? 0.55 : 1.05)));
   vec4 box = u_trim_mode < 0 ? vec4(0.0, 0.0, 1.0, 1.0) : texelFetch(u_trim, ivec2(clamp(level, 0, levels - 1), int(i_sprite)), 0);

@@ -139,7 +139,7 @@ double OverdrawBudget::estimate(const std::vector<ParticleInstance>& particles, 
     f.trim_across = f.trim_along = 1.0f;
     if (frame.trim && frame.trim_mode != TrimMode::Off) {
       const float lod_scale = frame.trim->lod_scale(tan_y, frame.trim_height);
-      const TrimBox b = frame.trim->box(frame.trim_mode, p.sprite, lod_scale, f.size, len / ppu, -c.z, frame.near);
+      const TrimBox b = frame.trim->box(frame.trim_mode, p.sprite, lod_scale, f.size, len / ppu, glm::length(c), frame.near);
       f.trim_across = b.u1 - b.u0;
       f.trim_along = b.v1 - b.v0;
     }

@@ -143,7 +143,8 @@ TEST(SpriteTrim, SamplesOutsideTheBoxAreZeroAndTheBoxIsTight) {
 }
 
 // Big and small particles of every sprite, near and far, camera-facing (turned) and axis-locked
-// streaks: trimmed quads blend fewer pixels and draw the same picture as whole ones.
+// streaks, some larger than their distance from the eye: trimmed quads blend fewer pixels and
+// draw the same picture as whole ones.
 TEST(SpriteTrim, TrimmedQuadsDrawTheWholeQuadsPicture) {
   REQUIRE_CONTEXT();
   Renderer r(RendererDesc{.offscreen = true});
@@ -163,6 +164,16 @@ TEST(SpriteTrim, TrimmedQuadsDrawTheWholeQuadsPicture) {
       p.axis[0] = 0.8f * std::cos(0.5f * float(i)), p.axis[1] = 1.5f * std::sin(0.5f * float(i)), p.axis[2] = -0.7f;
       p.size *= 0.3f;
     }
+    v.particles.push_back(p);
+  }
+  // Quads larger than their distance, off the view axis: their far corners show smaller than
+  // their centre, the case the level's bound (R + radius²/R) is for.
+  for (int i = 0; i < 12; ++i) {
+    const float a = 0.52f * float(i);
+    ParticleInstance p = scenes::particle({1.6f * std::cos(a), 0.9f * std::sin(a), -1.5f - 0.25f * float(i)}, 1.2f + 0.15f * float(i),
+                                          glm::vec3(0.3f, 0.5f, 0.9f), 0.25f, 1.0f, SoftEdge::Off);
+    p.sprite = uint8_t(i % 6);
+    p.rotation = 0.8f * float(i);
     v.particles.push_back(p);
   }
   for (auto filter : {RenderSettings::Filter::MipmapNearest, RenderSettings::Filter::Mipmap, RenderSettings::Filter::Linear}) {
