@@ -1,6 +1,8 @@
 // gfx/sky_pass.h — the background at infinity: nebula and starfield, keyed by the level's seed.
 //
-// First pass of a frame, into the cleared scene buffer with depth off. The nebula is either
+// First pass of a frame, with depth off, into a scene buffer whose colour is not cleared: it
+// writes every pixel's colour and an alpha of 1 (the grid's cells and the full-screen triangle
+// cover the screen), which the renderer relies on. The nebula is either
 // looked up in a cube map baked once per seed, resolution and shader build (render.sky =
 // baked) or evaluated per pixel (exact, the reference); the stars are points blended on top.
 // The baked map is looked up at every pixel (render.sky_grid = 0) or at the corners of a

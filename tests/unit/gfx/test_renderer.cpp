@@ -738,5 +738,35 @@ TEST(Renderer, GridSkyMatchesThePerPixelLookup) {
   EXPECT_GT(coarse, 2.0f * fine) << "a coarser grid is measurably less exact";
 }
 
+// The scene's colour is not cleared (the sky writes every pixel), so nothing of one frame may
+// show in the next: a frame after a screen-filling white one equals the same frame drawn by a
+// fresh renderer, for every sky mode, odd sizes (cells cut at the edges), MSAA and HDR.
+TEST(Renderer, NoPixelOfTheLastFrameShowsThroughTheSky) {
+  REQUIRE_CONTEXT();
+  RenderView white = test::dark_view();
+  for (int i = 0; i < 6; ++i) {
+    ParticleInstance p = scenes::particle({0.0f, 0.0f, -1.0f - 0.1f * float(i)}, 3.0f, glm::vec3(1.0f), 1.0f, 1.0f, SoftEdge::Off);
+    white.particles.push_back(p);
+  }
+  const RenderView calm = test::dark_view();
+  for (int mode = 0; mode < 5; ++mode) {
+    RenderSettings s = test::plain_settings();
+    s.size_clamp = 4.0f;
+    s.sky_exact = mode == 1;
+    s.sky_grid = mode == 2 ? 32 : mode == 3 ? 7 : 0;
+    if (mode == 4) s.hdr = true, s.antialias = RenderSettings::Antialias::Msaa4;
+    Renderer used(RendererDesc{.offscreen = true}), fresh(RendererDesc{.offscreen = true});
+    used.set_render_settings(s);
+    fresh.set_render_settings(s);
+    used.render(white, 333, 197);
+    const Image lit = used.read_pixels();
+    EXPECT_GT(test::channel(lit, 166, 98, 0), 0.9f) << "mode " << mode << ": the white frame";
+    used.render(calm, 333, 197);
+    fresh.render(calm, 333, 197);
+    const ImageDiff d = compare_images(fresh.read_pixels(), used.read_pixels());
+    EXPECT_EQ(d.max_diff, 0) << "mode " << mode;
+  }
+}
+
 }  // namespace
 }  // namespace arc
