@@ -66,7 +66,8 @@ void main() {
   vec3 a = (u_view * vec4(i_axis_rot.xyz, 0.0)).xyz;
   vec3 a_screen = a - dot(a, to_p) * to_p;  // the part of the segment seen across the view
   float a_len = length(a_screen);
-  if (axis_locked && a_len > kEps * max(1.0, length(a))) {
+  bool segment = axis_locked && a_len > kEps * max(1.0, length(a));
+  if (segment) {
     up = a_screen / a_len;
     right = normalize(cross(up, to_p));
     half_long = 0.5 * a_len + size;
@@ -76,12 +77,13 @@ void main() {
     right = vec3(cs, sn, 0.0);
     up = vec3(-sn, cs, 0.0);
   }
-  // The quad is square to the view ray (both its axes are across it), so at its distance R it
-  // shows no part smaller than a fronto-parallel one would at view depth R + radius²/R: the
-  // sampler's level of detail is at most log2(texels per pixel there) across its narrower side
-  // (size ≤ half_long). gfx/sprite_trim.h derives it.
+  // The sampler's level of detail across the quad's narrower side (size ≤ half_long) is at most
+  // log2(texels per pixel) of a fronto-parallel quad at depth D: a camera-facing quad is one,
+  // at its centre's view depth; a segment's quad is square to the view ray at distance R and
+  // shows no part smaller than one at R + radius²/R (gfx/sprite_trim.h derives it).
   float r_eye = max(len_c, u_near);
-  float lod = log2(max(u_lod_scale * (r_eye + (size * size + half_long * half_long) / r_eye) / size, 1e-30));
+  float depth = segment ? r_eye + (size * size + half_long * half_long) / r_eye : max(-c.z, u_near);
+  float lod = log2(max(u_lod_scale * depth / size, 1e-30));
   int levels = textureSize(u_trim, 0).x;
   int level = u_trim_mode == 0 ? 0 : int(floor(lod + (u_trim_mode == 1 ? 0.55 : 1.05)));
   vec4 box = u_trim_mode < 0 ? vec4(0.0, 0.0, 1.0, 1.0) : texelFetch(u_trim, ivec2(clamp(level, 0, levels - 1), int(i_sprite)), 0);

@@ -139,7 +139,9 @@ double OverdrawBudget::estimate(const std::vector<ParticleInstance>& particles, 
     f.trim_across = f.trim_along = 1.0f;
     if (frame.trim && frame.trim_mode != TrimMode::Off) {
       const float lod_scale = frame.trim->lod_scale(tan_y, frame.trim_height);
-      const TrimBox b = frame.trim->box(frame.trim_mode, p.sprite, lod_scale, f.size, len / ppu, glm::length(c), frame.near);
+      const float depth = f.half_axis_px > 0.0f ? SpriteTrim::segment_depth(glm::length(c), f.size, len / ppu, frame.near)
+                                                : SpriteTrim::facing_depth(-c.z, frame.near);
+      const TrimBox b = frame.trim->box(frame.trim_mode, p.sprite, lod_scale, f.size, depth);
       f.trim_across = b.u1 - b.u0;
       f.trim_along = b.v1 - b.v0;
     }

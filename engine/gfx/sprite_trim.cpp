@@ -74,19 +74,24 @@ std::vector<TrimBox> trim_boxes(const std::vector<Image>& layers) {
   return boxes;
 }
 
-int SpriteTrim::level(TrimMode mode, float lod_scale, float size, float half_long, float distance, float near, int levels) {
-  if (mode == TrimMode::Off || mode == TrimMode::BaseLevel) return 0;
+float SpriteTrim::facing_depth(float view_depth, float near) { return std::max(view_depth, near); }
+
+float SpriteTrim::segment_depth(float distance, float size, float half_long, float near) {
   const float r = std::max(distance, near);
-  const float depth = r + (size * size + half_long * half_long) / r;
+  return r + (size * size + half_long * half_long) / r;
+}
+
+int SpriteTrim::level(TrimMode mode, float lod_scale, float size, float depth, int levels) {
+  if (mode == TrimMode::Off || mode == TrimMode::BaseLevel) return 0;
   const float lod = std::log2(std::max(lod_scale * depth / std::max(size, 1e-6f), 1e-30f));
   const int l = int(std::floor(lod + (mode == TrimMode::NearestLevel ? 0.55f : 1.05f)));
   return std::clamp(l, 0, std::max(levels - 1, 0));
 }
 
-TrimBox SpriteTrim::box(TrimMode mode, int sprite, float lod_scale, float size, float half_long, float distance, float near) const {
+TrimBox SpriteTrim::box(TrimMode mode, int sprite, float lod_scale, float size, float depth) const {
   const size_t at = size_t(sprite) * size_t(levels);
   if (mode == TrimMode::Off || at + size_t(levels) > boxes.size()) return TrimBox{};
-  return boxes[at + size_t(level(mode, lod_scale, size, half_long, distance, near, levels))];
+  return boxes[at + size_t(level(mode, lod_scale, size, depth, levels))];
 }
 
 TrimMode trim_mode(const RenderSettings& s) {

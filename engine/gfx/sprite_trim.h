@@ -51,26 +51,33 @@ std::vector<TrimBox> trim_boxes(const std::vector<Image>& layers);
 enum class TrimMode : int { Off = -1, BaseLevel = 0, NearestLevel = 1, Trilinear = 2 };
 
 // The boxes of a sprite array and the rule particle.vert picks a particle's box by, for the
-// CPU's blended-area estimate (overdraw_budget.h). A camera-facing or axis-locked quad lies in
-// the plane square to the view ray through its centre, at distance R from the eye. Projecting
-// that plane to the screen scales its area by P²·R/Z³ at a point of view depth Z (P: pixels
-// per unit at depth 1) and no direction by more than P·|q|/Z², so no direction by less than
-// P·R/(Z·|q|) ≥ P·R/(R² + radius²): every part of the quad shows at least as large as a
-// fronto-parallel one at depth R + radius²/R (radius² = size² + half_long², the farthest
-// corner). Across its narrower side (size) the sampler's level of detail is then at most
-//   lod = log2(texels · tan(fov_y/2) / height_px · (R + radius²/R) / size)
-// and the coarsest level it can read is floor(lod + 0.55) (nearest: the level is lod rounded,
-// with 0.05 for rounding) or floor(lod + 1.05) (trilinear: the next one up too).
+// CPU's blended-area estimate (overdraw_budget.h). The sampler's level of detail across a
+// quad's narrower side (its half-width `size`; the long side of a segment is longer) is at
+// most that of a fronto-parallel quad at some depth D:
+//   lod = log2(texels · tan(fov_y/2) / height_px · D / size).
+// A camera-facing quad is fronto-parallel (particle.vert turns it in the view plane), D its
+// centre's view depth. An axis-locked segment's quad lies square to the view ray through its
+// centre, at distance R from the eye. Projecting that plane to the screen scales its area by
+// P²·R/Z³ at a point of view depth Z (P: pixels per unit at depth 1) and no direction by more
+// than P·|q|/Z², so no direction by less than P·R/(Z·|q|) ≥ P·R/(R² + radius²): every part of
+// it shows at least as large as a fronto-parallel quad at D = R + radius²/R (radius² = size² +
+// half_long², the farthest corner). The coarsest level the sampler can read is then
+// floor(lod + 0.55) (nearest: the level is lod rounded, with 0.05 for rounding) or
+// floor(lod + 1.05) (trilinear: the next one up too).
 struct SpriteTrim {
   std::vector<TrimBox> boxes;  // trim_boxes() of the array
   int levels = 1;              // mip levels of each layer
   int texels = 1;              // the larger side of a layer
 
-  // The level a particle takes (see above): `lod_scale` = texels · tan(fov_y/2) / height_px,
-  // `distance` from the eye to its centre.
-  static int level(TrimMode mode, float lod_scale, float size, float half_long, float distance, float near, int levels);
+  // D (see above) of a camera-facing quad at view depth `view_depth`, and of a segment's quad
+  // at `distance` from the eye; both at least the near plane's distance.
+  static float facing_depth(float view_depth, float near);
+  static float segment_depth(float distance, float size, float half_long, float near);
+  // The level a quad of half-width `size` at D = `depth` takes: `lod_scale` = texels ·
+  // tan(fov_y/2) / height_px.
+  static int level(TrimMode mode, float lod_scale, float size, float depth, int levels);
   // Its box: the whole quad when off or the sprite has no boxes.
-  TrimBox box(TrimMode mode, int sprite, float lod_scale, float size, float half_long, float distance, float near) const;
+  TrimBox box(TrimMode mode, int sprite, float lod_scale, float size, float depth) const;
   // texels · tan(fov_y/2) / height_px, the shader's u_lod_scale.
   float lod_scale(float tan_half_y, int height_px) const { return float(texels) * tan_half_y / float(height_px > 0 ? height_px : 1); }
 };
