@@ -64,12 +64,18 @@ double OverdrawBudget::log_cap_of(uint32_t cluster) const {
 
 // A camera-facing quad lies in the view plane at its centre's depth (particle.vert turns it
 // there), so its screen box is exact: the centre projected, half-widths grown by the rotation's
-// |cos| + |sin|.
+// |cos| + |sin|; the trimmed quad's box the same for its part of the quad, off centre.
 void OverdrawBudget::set_facing_box(Footprint& f, const glm::vec3& c, float rotation, float ppu, const OverdrawFrame& frame) {
-  const float turn = std::abs(std::cos(rotation)) + std::abs(std::sin(rotation));
+  const float cs = std::cos(rotation), sn = std::sin(rotation);
   f.x = 0.5f * float(frame.width) + c.x * ppu;
   f.y = 0.5f * float(frame.height) + c.y * ppu;
-  f.hx = f.hy = f.w_px * turn;
+  f.hx = f.hy = f.w_px * (std::abs(cs) + std::abs(sn));
+  const float ma = 0.5f * (f.trim_a0 + f.trim_a1) * f.w_px, mb = 0.5f * (f.trim_b0 + f.trim_b1) * f.w_px;
+  const float ha = 0.5f * (f.trim_a1 - f.trim_a0) * f.w_px, hb = 0.5f * (f.trim_b1 - f.trim_b0) * f.w_px;
+  f.tx = f.x + ma * cs - mb * sn;
+  f.ty = f.y + ma * sn + mb * cs;
+  f.thx = std::abs(cs) * ha + std::abs(sn) * hb;
+  f.thy = std::abs(sn) * ha + std::abs(cs) * hb;
   f.past_near = false;
 }
 
@@ -83,21 +89,26 @@ void OverdrawBudget::set_segment_box(Footprint& f, const glm::vec3& c, const glm
   const glm::vec3 right = glm::normalize(glm::cross(up, to_p));
   const float half_long = 0.5f * a_len + f.size;
   const float focal = 0.5f * float(frame.height) / std::max(frame.tan_half_y, 1e-6f);
-  float x0 = 1e30f, x1 = -1e30f, y0 = 1e30f, y1 = -1e30f;
   f.past_near = false;
-  for (int k = 0; k < 4; ++k) {
-    const glm::vec3 q = c + right * ((k & 1) ? f.size : -f.size) + up * ((k & 2) ? half_long : -half_long);
-    if (!(-q.z > frame.near)) f.past_near = true;
-    const float s = focal / std::max(-q.z, 1e-6f);
-    x0 = std::min(x0, q.x * s);
-    x1 = std::max(x1, q.x * s);
-    y0 = std::min(y0, q.y * s);
-    y1 = std::max(y1, q.y * s);
-  }
-  f.x = 0.5f * float(frame.width) + 0.5f * (x0 + x1);
-  f.y = 0.5f * float(frame.height) + 0.5f * (y0 + y1);
-  f.hx = 0.5f * (x1 - x0);
-  f.hy = 0.5f * (y1 - y0);
+  // The box of the quad's part [a0, a1] across × [b0, b1] along (in [−1, 1]).
+  auto box = [&](float a0, float a1, float b0, float b1, float& x, float& y, float& hx, float& hy) {
+    float x0 = 1e30f, x1 = -1e30f, y0 = 1e30f, y1 = -1e30f;
+    for (int k = 0; k < 4; ++k) {
+      const glm::vec3 q = c + right * (((k & 1) ? a1 : a0) * f.size) + up * (((k & 2) ? b1 : b0) * half_long);
+      if (!(-q.z > frame.near)) f.past_near = true;
+      const float s = focal / std::max(-q.z, 1e-6f);
+      x0 = std::min(x0, q.x * s);
+      x1 = std::max(x1, q.x * s);
+      y0 = std::min(y0, q.y * s);
+      y1 = std::max(y1, q.y * s);
+    }
+    x = 0.5f * float(frame.width) + 0.5f * (x0 + x1);
+    y = 0.5f * float(frame.height) + 0.5f * (y0 + y1);
+    hx = 0.5f * (x1 - x0);
+    hy = 0.5f * (y1 - y0);
+  };
+  box(-1.0f, 1.0f, -1.0f, 1.0f, f.x, f.y, f.hx, f.hy);
+  box(f.trim_a0, f.trim_a1, f.trim_b0, f.trim_b1, f.tx, f.ty, f.thx, f.thy);
 }
 
 // The footprint of every particle (fp_), the candidates whose cap can bind, and the area of
@@ -137,6 +148,9 @@ double OverdrawBudget::estimate(const std::vector<ParticleInstance>& particles, 
     }
     const float len = f.half_axis_px + f.w_px;
     f.trim_across = f.trim_along = 1.0f;
+    f.trim_a0 = f.trim_b0 = -1.0f;
+    f.trim_a1 = f.trim_b1 = 1.0f;
+    f.reduced = false;
     if (frame.trim && frame.trim_mode != TrimMode::Off) {
       const float lod_scale = frame.trim->lod_scale(tan_y, frame.trim_height);
       const float depth = f.half_axis_px > 0.0f ? SpriteTrim::segment_depth(glm::length(c), f.size, len / ppu, frame.near)
@@ -144,6 +158,9 @@ double OverdrawBudget::estimate(const std::vector<ParticleInstance>& particles, 
       const TrimBox b = frame.trim->box(frame.trim_mode, p.sprite, lod_scale, f.size, depth);
       f.trim_across = b.u1 - b.u0;
       f.trim_along = b.v1 - b.v0;
+      // particle.vert: corner (2u − 1, 1 − 2v) along (right, up).
+      f.trim_a0 = 2.0f * b.u0 - 1.0f, f.trim_a1 = 2.0f * b.u1 - 1.0f;
+      f.trim_b0 = 1.0f - 2.0f * b.v1, f.trim_b1 = 1.0f - 2.0f * b.v0;
     }
     const float hx = std::abs(dir.x) * len + std::abs(dir.y) * f.w_px;
     const float hy = std::abs(dir.y) * len + std::abs(dir.x) * f.w_px;
@@ -210,7 +227,7 @@ OverdrawStats OverdrawBudget::apply(std::vector<ParticleInstance>& particles, st
   double k = k_none;
   for (size_t i = 0; i < particles.size(); ++i) {
     ParticleInstance p = particles[i];
-    const Footprint& f = fp_[i];
+    Footprint& f = fp_[i];
     float area = f.area;
     if (i == 0 || p.cluster != cluster) {  // a cluster's particles come together: one look-up each
       cluster = p.cluster;
@@ -220,6 +237,7 @@ OverdrawStats OverdrawBudget::apply(std::vector<ParticleInstance>& particles, st
       const float r = float(k / double(f.threshold));
       const float fade = std::pow(r, kOverdrawFadeGamma[std::min<int>(p.screen_priority, 2)]);
       ++s.reduced;
+      f.reduced = true;
       if (fade < kDropFade) {
         ++s.dropped;
         continue;
@@ -230,9 +248,12 @@ OverdrawStats OverdrawBudget::apply(std::vector<ParticleInstance>& particles, st
     }
     s.budgeted_layers += area;
     if (boxes && f.past_near) boxes->push_back({-inf, -inf, inf, inf});
-    else if (boxes)
-      boxes->push_back({(f.x - f.hx - 1.0f) * to_x - 1.0f, (f.y - f.hy - 1.0f) * to_y - 1.0f,
-                        (f.x + f.hx + 1.0f) * to_x - 1.0f, (f.y + f.hy + 1.0f) * to_y - 1.0f});
+    else if (boxes) {
+      const float x = f.reduced ? f.x : f.tx, y = f.reduced ? f.y : f.ty;
+      const float hx = f.reduced ? f.hx : f.thx, hy = f.reduced ? f.hy : f.thy;
+      boxes->push_back({(x - hx - 1.0f) * to_x - 1.0f, (y - hy - 1.0f) * to_y - 1.0f, (x + hx + 1.0f) * to_x - 1.0f,
+                        (y + hy + 1.0f) * to_y - 1.0f});
+    }
     areas[kept] = area;
     particles[kept++] = p;
   }
@@ -245,7 +266,8 @@ OverdrawStats OverdrawBudget::apply(std::vector<ParticleInstance>& particles, st
 void OverdrawBudget::mark_coverage(ParticleCoverage& coverage) const {
   for (const Footprint& f : fp_) {
     if (f.past_near) coverage.add_whole_screen();
-    else coverage.add_box(f.x, f.y, f.hx, f.hy);
+    else if (f.reduced) coverage.add_box(f.x, f.y, f.hx, f.hy);
+    else coverage.add_box(f.tx, f.ty, f.thx, f.thy);
   }
 }
 

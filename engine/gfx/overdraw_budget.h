@@ -81,11 +81,13 @@ class OverdrawBudget {
  public:
   // Estimates, and reduces in place when over budget; `areas` gets each remaining particle's
   // estimated blended pixels, in the order of `particles` (dropped ones are erased from both),
-  // and `boxes`, when given, each one's screen box before any reduction (which only shrinks).
+  // and `boxes`, when given, each one's screen box: its quad cut to its trim box, or for one the
+  // budget reduced the whole quad before the reduction (which only shrinks it).
   OverdrawStats apply(std::vector<ParticleInstance>& particles, std::vector<float>& areas, const OverdrawFrame& frame,
                       const OverdrawOptions& options, std::vector<ScreenBox>* boxes = nullptr);
-  // Marks the screen box of every particle the last apply() was given (before any reduction,
-  // which only shrinks them): the tiles the frame's particles can touch.
+  // Marks the screen box of every particle the last apply() was given (its quad cut to its trim
+  // box, or the whole quad before any reduction when the budget reduced it): the tiles the
+  // frame's particles can touch.
   void mark_coverage(ParticleCoverage& coverage) const;
   // Forgets the smoothing (the next frame starts from its own solution).
   void reset() { has_state_ = false; }
@@ -101,6 +103,12 @@ class OverdrawBudget {
     float threshold;     // the k below which its cap binds
     float area;          // blended pixels unreduced
     float x, y, hx, hy;  // screen box: centre (GL window pixels, y up) and half-extents, unreduced
+    // The trim box in the quad's own axes (across, along), each in [−1, 1], and the screen box of
+    // the quad cut to it: what is drawn when the budget leaves the particle as it is. A reduced
+    // one is smaller but may take a coarser level's box, so it keeps the whole quad's box.
+    float trim_a0, trim_a1, trim_b0, trim_b1;
+    float tx, ty, thx, thy;
+    bool reduced;        // shrunk, faded or dropped this frame
     bool past_near;      // axis-locked and may reach past the near plane: its projection is unbounded
   };
   static void set_facing_box(Footprint& f, const glm::vec3& c, float rotation, float ppu, const OverdrawFrame& frame);

@@ -11,6 +11,7 @@
 #include "assets/image.h"
 #include "core/rng.h"
 #include "gfx/image_compare.h"
+#include "gfx/particle_batch.h"
 #include "gfx/sprite_trim.h"
 #include "gfx_test_util.h"
 
@@ -237,6 +238,77 @@ TEST(SpriteTrim, TrimmedQuadsDrawTheWholeQuadsPicture) {
     EXPECT_LE(d.max_diff, 1) << "filter " << int(filter);
     EXPECT_GE(d.fraction_within, 0.9995) << "filter " << int(filter);
     EXPECT_GE(psnr_db(whole, trimmed), 80.0) << "filter " << int(filter);
+  }
+}
+
+// The tiles the half-resolution composite, the runs and the depth copy use are the trimmed
+// quads' boxes (a reduced particle keeps its whole quad's): every pixel the particles change
+// lies in them, and they cover less than the whole quads' boxes.
+TEST(SpriteTrim, TrimmedBoxesHoldEveryLitPixel) {
+  REQUIRE_CONTEXT();
+  std::vector<Image> sprites;
+  for (const char* name : {"blob", "glow", "spark", "flare", "smoke", "shield"})
+    sprites.push_back(load_sprite(std::string(ARCFIRE_SOURCE_DIR) + "/assets/textures/sprite_" + name + ".png"));
+  Renderer r(RendererDesc{.offscreen = true});
+  r.set_sprites(sprites);
+  RenderView v = test::dark_view();
+  v.starfield_seed = 0;
+  const Rng rng{5, 9, 0};
+  for (int i = 0; i < 48; ++i) {
+    const glm::vec3 pos(float(rng.uniform(uint64_t(i) * 5) * 16.0 - 8.0), float(rng.uniform(uint64_t(i) * 5 + 1) * 9.0 - 4.5),
+                        -float(2.0 + rng.uniform(uint64_t(i) * 5 + 2) * 18.0));
+    ParticleInstance p = scenes::particle(pos, 0.6f, glm::vec3(1.0f, 0.8f, 0.5f), 1.0f, 1.0f, SoftEdge::Off);
+    p.sprite = uint8_t(i % 6);
+    p.rotation = float(rng.uniform(uint64_t(i) * 5 + 3) * 6.283);
+    if (i % 6 == 2) {
+      p.billboard = uint8_t(Billboard::AxisLocked);
+      const float t = float(rng.uniform(uint64_t(i) * 5 + 4) * 6.283);
+      p.axis[0] = 6.0f * std::cos(t), p.axis[1] = 3.6f * std::sin(t), p.axis[2] = 2.5f;
+      p.size = 0.2f;
+    }
+    v.particles.push_back(p);
+  }
+  const int w = 320, h = 180;
+  for (auto filter : {RenderSettings::Filter::MipmapNearest, RenderSettings::Filter::Mipmap}) {
+    RenderSettings s = test::plain_settings();
+    s.filter = filter;
+    s.particle_resolution = RenderSettings::ParticleResolution::Full;
+    r.set_render_settings(s);
+    RenderView empty = v;
+    empty.particles.clear();
+    r.render(empty, w, h);
+    const Image background = r.read_pixels();
+    r.render(v, w, h);
+    const Image lit = r.read_pixels();
+    SpriteTrim trim;
+    trim.boxes = trim_boxes(sprites);
+    trim.levels = mip_levels(sprites[0].width, sprites[0].height);
+    trim.texels = sprites[0].width;
+    ParticleBatchOptions o;
+    o.width = w, o.height = h, o.size_clamp = s.size_clamp;
+    o.trim = &trim;
+    o.trim_height = h;
+    const ViewProjection vp = make_view_projection(v.camera, double(w) / double(h), s.reversed_z, s.infinite_far);
+    ParticleBatch whole, trimmed;
+    whole.prepare(v, vp, {}, o);
+    o.trim_mode = trim_mode(s);
+    trimmed.prepare(v, vp, {}, o);
+    std::vector<PixelRect> rects;
+    trimmed.coverage.rects(rects);
+    int changed = 0, outside = 0;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const size_t k = (size_t(h - 1 - y) * size_t(w) + size_t(x)) * 4;  // read_pixels: top row first
+        const bool differs = lit.rgba[k] != background.rgba[k] || lit.rgba[k + 1] != background.rgba[k + 1] ||
+                             lit.rgba[k + 2] != background.rgba[k + 2];
+        bool in = false;
+        for (const PixelRect& q : rects) in = in || (x >= q.x0 && x < q.x1 && y >= q.y0 && y < q.y1);
+        changed += differs;
+        outside += differs && !in;
+      }
+    EXPECT_GT(changed, 2000) << "filter " << int(filter);
+    EXPECT_EQ(outside, 0) << "filter " << int(filter);
+    EXPECT_LT(trimmed.coverage.share(), whole.coverage.share()) << "filter " << int(filter);
   }
 }
 
