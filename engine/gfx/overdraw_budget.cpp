@@ -36,7 +36,8 @@ double step_toward(double log_k, double log_target, double dt) {
 double OverdrawBudget::area_at(uint32_t i, double k) const {
   const Footprint& f = fp_[i];
   const float r = float(std::min(1.0, k / double(f.threshold)));
-  return double(f.frac) * 4.0 * double(r * f.w_px * f.trim_across) * double((f.half_axis_px + r * f.w_px) * f.trim_along);
+  return double(f.frac) * double(r * f.w_px * (f.trim_a1 - f.trim_a0)) *
+         double((f.half_axis_px + r * f.w_px) * (f.trim_b1 - f.trim_b0));
 }
 
 double OverdrawBudget::total_area(const std::vector<uint32_t>& set, double k) const {
@@ -147,7 +148,6 @@ double OverdrawBudget::estimate(const std::vector<ParticleInstance>& particles, 
       }
     }
     const float len = f.half_axis_px + f.w_px;
-    f.trim_across = f.trim_along = 1.0f;
     f.trim_a0 = f.trim_b0 = -1.0f;
     f.trim_a1 = f.trim_b1 = 1.0f;
     f.reduced = false;
@@ -156,8 +156,6 @@ double OverdrawBudget::estimate(const std::vector<ParticleInstance>& particles, 
       const float depth = f.half_axis_px > 0.0f ? SpriteTrim::segment_depth(glm::length(c), f.size, len / ppu, frame.near)
                                                 : SpriteTrim::facing_depth(-c.z, frame.near);
       const TrimBox b = frame.trim->box(frame.trim_mode, p.sprite, lod_scale, f.size, depth);
-      f.trim_across = b.u1 - b.u0;
-      f.trim_along = b.v1 - b.v0;
       // particle.vert: corner (2u − 1, 1 − 2v) along (right, up).
       f.trim_a0 = 2.0f * b.u0 - 1.0f, f.trim_a1 = 2.0f * b.u1 - 1.0f;
       f.trim_b0 = 1.0f - 2.0f * b.v1, f.trim_b1 = 1.0f - 2.0f * b.v0;
@@ -169,7 +167,7 @@ double OverdrawBudget::estimate(const std::vector<ParticleInstance>& particles, 
     const float sx = 0.5f * W + c.x * ppu, sy = 0.5f * H - c.y * ppu;
     const float box = std::max(4.0f * hx * hy, 1e-12f);
     f.frac = std::min(1.0f, overlap(sx, hx, W) * overlap(sy, hy, H) / box);
-    f.area = float(std::min(double(f.frac) * 4.0 * double(f.w_px * f.trim_across) * double(len * f.trim_along), screen));
+    f.area = float(std::min(double(f.frac) * double(f.w_px * (f.trim_a1 - f.trim_a0)) * double(len * (f.trim_b1 - f.trim_b0)), screen));
     const int prio = std::min<int>(p.screen_priority, 2);
     const float g = std::max(1.0f, (d / near_m) * (d / near_m));
     // What the particle does to a pixel: the light it adds (rgb is premultiplied) or the

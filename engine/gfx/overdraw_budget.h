@@ -96,16 +96,15 @@ class OverdrawBudget {
   struct Footprint {
     float size;          // half-width, m, after particle.vert's size clamp
     float w_px;          // half-width on screen, pixels
-    float trim_across;   // share of the width the sprite's trim box keeps (1: whole quad)
-    float trim_along;    // share of the length it keeps
     float half_axis_px;  // half the axis-locked segment's on-screen length, pixels (0: square)
     float frac;          // share of the quad's bounding box on screen
     float threshold;     // the k below which its cap binds
     float area;          // blended pixels unreduced
     float x, y, hx, hy;  // screen box: centre (GL window pixels, y up) and half-extents, unreduced
-    // The trim box in the quad's own axes (across, along), each in [−1, 1], and the screen box of
-    // the quad cut to it: what is drawn when the budget leaves the particle as it is. A reduced
-    // one is smaller but may take a coarser level's box, so it keeps the whole quad's box.
+    // The trim box in the quad's own axes (across, along), each in [−1, 1]: it keeps
+    // (trim_a1 − trim_a0)/2 of the width and (trim_b1 − trim_b0)/2 of the length. Then the screen
+    // box of the quad cut to it: what is drawn when the budget leaves the particle as it is. A
+    // reduced one is smaller but may take a coarser level's box, so it keeps the whole quad's box.
     float trim_a0, trim_a1, trim_b0, trim_b1;
     float tx, ty, thx, thy;
     bool reduced;        // shrunk, faded or dropped this frame

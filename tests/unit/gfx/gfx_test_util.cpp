@@ -46,4 +46,20 @@ float channel(const Image& img, int x, int y, int c) {
   return img.rgba[(size_t(y) * img.width + x) * 4 + c] / 255.0f;
 }
 
+ChangedPixels changed_pixels(const Image& before, const Image& after, const std::vector<PixelRect>& rects) {
+  ChangedPixels n;
+  const int w = after.width, h = after.height;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const size_t k = (size_t(h - 1 - y) * size_t(w) + size_t(x)) * 4;  // row h − 1 − y from the top
+      if (after.rgba[k] == before.rgba[k] && after.rgba[k + 1] == before.rgba[k + 1] && after.rgba[k + 2] == before.rgba[k + 2])
+        continue;
+      ++n.changed;
+      bool in = false;
+      for (const PixelRect& r : rects) in = in || (x >= r.x0 && x < r.x1 && y >= r.y0 && y < r.y1);
+      n.outside += !in;
+    }
+  return n;
+}
+
 }  // namespace arc::test

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "assets/model.h"
+#include "gfx/particle_coverage.h"
 #include "gfx/renderer.h"
 #include "platform/platform.h"
 #include "scene_models.h"
@@ -21,6 +22,13 @@ RenderSettings plain_settings();  // no near fade, full sort, given depth mode d
 RenderView dark_view();
 void dump_if_asked(const std::string& name, const Image& img);  // $ARCFIRE_GFX_DUMP/<name>.png
 float channel(const Image& img, int x, int y, int c);  // 0..1
+
+// Pixels whose colour (RGB) differs between two frames of one size, and how many of those lie
+// outside every rectangle (GL window pixels, y up; the images' rows run top to bottom).
+struct ChangedPixels {
+  int changed = 0, outside = 0;
+};
+ChangedPixels changed_pixels(const Image& before, const Image& after, const std::vector<PixelRect>& rects);
 
 }  // namespace arc::test
 

@@ -12,12 +12,6 @@
 namespace arc {
 namespace {
 
-bool inside(const std::vector<PixelRect>& rects, int x, int y) {
-  for (const PixelRect& r : rects)
-    if (x >= r.x0 && x < r.x1 && y >= r.y0 && y < r.y1) return true;
-  return false;
-}
-
 TEST(ParticleCoverage, MarksTheTilesABoxReachesAndNoOthers) {
   ParticleCoverage c;
   c.reset(320, 180);  // 10 × 6 tiles, the last row 20 pixels tall
@@ -112,17 +106,9 @@ TEST(ParticleCoverage, EveryLitPixelLiesInTheMarkedTiles) {
   batch.prepare(v, make_view_projection(v.camera, double(w) / double(h), s.reversed_z, s.infinite_far), {}, o);
   std::vector<PixelRect> rects;
   batch.coverage.rects(rects);
-  int changed = 0, outside = 0;
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const size_t k = (size_t(h - 1 - y) * size_t(w) + size_t(x)) * 4;  // read_pixels: top row first
-      const bool differs = lit.rgba[k] != background.rgba[k] || lit.rgba[k + 1] != background.rgba[k + 1] ||
-                           lit.rgba[k + 2] != background.rgba[k + 2];
-      changed += differs;
-      outside += differs && !inside(rects, x, y);
-    }
-  EXPECT_GT(changed, 500);
-  EXPECT_EQ(outside, 0);
+  const test::ChangedPixels px = test::changed_pixels(background, lit, rects);
+  EXPECT_GT(px.changed, 500);
+  EXPECT_EQ(px.outside, 0);
   EXPECT_LT(batch.coverage.share(), 0.8);
   EXPECT_FALSE(batch.coverage.whole_screen());
 }

@@ -295,19 +295,9 @@ TEST(SpriteTrim, TrimmedBoxesHoldEveryLitPixel) {
     trimmed.prepare(v, vp, {}, o);
     std::vector<PixelRect> rects;
     trimmed.coverage.rects(rects);
-    int changed = 0, outside = 0;
-    for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x) {
-        const size_t k = (size_t(h - 1 - y) * size_t(w) + size_t(x)) * 4;  // read_pixels: top row first
-        const bool differs = lit.rgba[k] != background.rgba[k] || lit.rgba[k + 1] != background.rgba[k + 1] ||
-                             lit.rgba[k + 2] != background.rgba[k + 2];
-        bool in = false;
-        for (const PixelRect& q : rects) in = in || (x >= q.x0 && x < q.x1 && y >= q.y0 && y < q.y1);
-        changed += differs;
-        outside += differs && !in;
-      }
-    EXPECT_GT(changed, 2000) << "filter " << int(filter);
-    EXPECT_EQ(outside, 0) << "filter " << int(filter);
+    const test::ChangedPixels px = test::changed_pixels(background, lit, rects);
+    EXPECT_GT(px.changed, 2000) << "filter " << int(filter);
+    EXPECT_EQ(px.outside, 0) << "filter " << int(filter);
     EXPECT_LT(trimmed.coverage.share(), whole.coverage.share()) << "filter " << int(filter);
   }
 }
