@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config
-  libglfw3-dev libglm-dev libtinygltf-dev libopenimageio-dev libegl-dev libepoxy-dev
+  libglfw3-dev libglm-dev libtinygltf-dev libstb-dev libopenimageio-dev libegl-dev libepoxy-dev
   nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev libimgui-dev
   libegl-mesa0 libgl1-mesa-dri libgbm1
   libopenal-dev
