@@ -188,7 +188,9 @@ void OverdrawBudget::update_caps(const std::vector<ParticleInstance>& particles,
   const double dt = time_seconds - last_time_;
   const bool continuing = has_state_ && dt >= 0.0 && dt <= kRestartSeconds;
   next_caps_.clear();
-  for (const ParticleInstance& p : particles) next_caps_.emplace_back(p.cluster, 0.0);
+  // A cluster's particles mostly come together: one entry per stretch, then sorted and unique.
+  for (const ParticleInstance& p : particles)
+    if (next_caps_.empty() || next_caps_.back().first != p.cluster) next_caps_.emplace_back(p.cluster, 0.0);
   std::sort(next_caps_.begin(), next_caps_.end());
   next_caps_.erase(std::unique(next_caps_.begin(), next_caps_.end(), [](auto& a, auto& b) { return a.first == b.first; }),
                    next_caps_.end());

@@ -41,8 +41,13 @@ uint32_t sortable_bits(float f) {
 
 void radix_sort_back_to_front(const std::vector<uint32_t>& keys, std::vector<uint32_t>& order) {
   // Descending keys = ascending of the complement.
+  // The scratch keys are kept from call to call (per thread): fresh buffers of a large batch
+  // would be mapped and faulted in every frame.
   size_t n = keys.size();
-  std::vector<uint32_t> k(n), k2(n), o2(n);
+  thread_local std::vector<uint32_t> k, k2, o2;
+  k.resize(n);
+  k2.resize(n);
+  o2.resize(n);
   order.resize(n);
   for (size_t i = 0; i < n; ++i) {
     k[i] = ~keys[i];
