@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # tools/gpu/measure.sh OUT_DIR [SECONDS] — README's GPU rows on a machine with a GPU, with the
 # bench packed by tools/gpu/pack.sh: the gallery (soft_edge_cost_ratio, burn_blend_cost_ratio,
-# particle_fill_efficiency and its GL_TIME_ELAPSED twin), combat_view (combat p50 / p99 from
-# both cameras; the slowest frames saved as PNGs) and particle_scale (particles within 4 ms at
-# 1920x1080). Then the gallery and combat_view again, while SECONDS (default 420) allow, for
+# particle_fill_efficiency and their GL_TIME_ELAPSED twins), combat_view (combat p50 / p99 from
+# both cameras; the slowest frames saved as PNGs), particle_scale (particles within 4 ms at
+# 1920x1080) and particle_prep (the CPU's share per particle). Then the gallery and combat_view again, while SECONDS (default 420) allow, for
 # ranges over runs. Everything goes to OUT_DIR/bench.log as it is printed.
 set -uo pipefail
 out="${1:?usage: tools/gpu/measure.sh OUT_DIR [SECONDS]}"
@@ -26,6 +26,7 @@ scene() {  # scene NAME LIMIT_S [ENV...]
 scene render_particle_gallery 150
 scene combat_view 200 ARCFIRE_GFX_DUMP="$out"
 scene particle_scale 150
+scene particle_prep 60
 for run in 2 3; do
   [ "$SECONDS" -lt $((budget - 120)) ] || break
   scene render_particle_gallery 100
