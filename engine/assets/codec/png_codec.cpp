@@ -8,7 +8,7 @@
 // (tests/unit/assets/test_png_codec.cpp compares them): 8-bit samples as stored, straight
 // alpha kept, 16-bit samples rounded to nearest (OpenImageIO's conversion, not stb's >> 8).
 // Any other format is refused with a message naming what this module reads. As with the other
-// module, no exception crosses the interface: nothing here allocates but with malloc.
+// module, no exception crosses the interface: nothing here throws (malloc, nothrow new).
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
