@@ -20,6 +20,10 @@ module="$build/libarcfire_image_codec_png.so"
 for f in "$bench" "$module"; do
   [ -x "$f" ] || [ -f "$f" ] || { echo "tools/gpu/pack.sh: $f: missing; build first (cmake --build build)" >&2; exit 2; }
 done
+for f in "$bench" "$module"; do
+  missing="$(ldd "$f" | awk '/not found/ {print $1}' | tr '\n' ' ')"
+  [ -z "$missing" ] || { echo "tools/gpu/pack.sh: $f: needs libraries this machine lacks: $missing(tools/install-deps.sh)" >&2; exit 2; }
+done
 out="$root/.gpu"
 rm -rf "$out"
 mkdir -p "$out/bin" "$out/lib" "$out/runtime" "$out/glvnd"
