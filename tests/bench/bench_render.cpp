@@ -164,6 +164,8 @@ Figures measure(Renderer& r, const RenderView& view, const BenchEnv& env) {
   const size_t kAlpha = add("burn forced 0", &alpha_only, with_soft(0));
   const size_t kSoft = configs.size();  // linear, contrast, average density, density extent
   for (int m = 1; m < 5; ++m) add(names[m], &view, with_soft(m));
+  // The configuration of soft-edge method names[m] (0: off).
+  auto soft_config = [&](int m) { return m == 0 ? size_t(0) : kSoft + size_t(m - 1); };
   const size_t kEmpty = add("no particles", &no_particles, base);
   RenderSettings exact_sky = base;
   exact_sky.sky_exact = true;
@@ -204,7 +206,7 @@ Figures measure(Renderer& r, const RenderView& view, const BenchEnv& env) {
 
   Figures f;
   for (int m = 0; m < 5; ++m) {
-    size_t i = m == 0 ? 0 : kSoft + size_t(m - 1);
+    const size_t i = soft_config(m);
     r.set_render_settings(configs[i].settings);
     r.render(view, kWidth, kHeight);
     double ratio = m == 0 ? 1.0 : paired(i, 0);
@@ -240,7 +242,7 @@ Figures measure(Renderer& r, const RenderView& view, const BenchEnv& env) {
   // timer does not cover rasterisation (llvmpipe gave 0.13 ms for the 40 full-screen quads
   // that take 54 ms by the clock).
   const std::string gl = r.gl_version();
-  const bool software = gl.find("llvmpipe") != std::string::npos || gl.find("softpipe") != std::string::npos;
+  const bool software = bench::software_rasteriser(gl);
   r.time_gpu_passes(!software);
   // Each soft-edge method's particle pass (the depth copy and the draws) is timed the same way.
   double soft_gpu_ms[5] = {1e30, 1e30, 1e30, 1e30, 1e30};
@@ -252,7 +254,7 @@ Figures measure(Renderer& r, const RenderView& view, const BenchEnv& env) {
     if (p > 0) f.particle_gpu_ms = f.particle_gpu_ms < 0 ? p : std::min(f.particle_gpu_ms, p);
     if (q > 0) f.fill_gpu_ms = f.fill_gpu_ms < 0 ? q : std::min(f.fill_gpu_ms, q);
     for (int m = 0; m < 5; ++m) {
-      r.set_render_settings(configs[m == 0 ? 0 : kSoft + size_t(m - 1)].settings);
+      r.set_render_settings(configs[soft_config(m)].settings);
       r.render(view, kWidth, kHeight);
       r.finish();
       const double g = r.last_stats().particle_pass_gpu_ms;

@@ -99,7 +99,7 @@ ARCFIRE_SCENE(particle_scale) {
   RenderView empty = battle;
   empty.particles.clear();
   const std::string gl = ctx->description();
-  const bool software = gl.find("llvmpipe") != std::string::npos || gl.find("softpipe") != std::string::npos;
+  const bool software = bench::software_rasteriser(gl);
   r.time_gpu_passes(!software);
   fastest_frame(r, empty, 2);  // warm-up
   const double base = fastest_frame(r, empty, 5).ms;

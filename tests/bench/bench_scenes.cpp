@@ -33,6 +33,10 @@ std::unique_ptr<HeadlessContext> context_or_skip() {
   }
 }
 
+bool software_rasteriser(const std::string& gl) {
+  return gl.find("llvmpipe") != std::string::npos || gl.find("softpipe") != std::string::npos;
+}
+
 int rounds_from_env(int fallback) {
   const char* v = std::getenv("ARCFIRE_BENCH_ROUNDS");
   if (!v) return fallback;

@@ -19,6 +19,10 @@ RenderView level_view(Renderer& r, const std::string& level, int ticks, int widt
 // without EGL runs the other scenes).
 std::unique_ptr<HeadlessContext> context_or_skip();
 
+// Whether a GL renderer string names one of Mesa's software rasterisers (llvmpipe, softpipe),
+// whose GL_TIME_ELAPSED does not cover rasterisation.
+bool software_rasteriser(const std::string& gl);
+
 // ARCFIRE_BENCH_ROUNDS (1..10000) when set, else `fallback`; a bad value prints one line naming
 // it and what is allowed, and exits 2.
 int rounds_from_env(int fallback);

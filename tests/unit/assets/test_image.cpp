@@ -7,25 +7,13 @@
 #include <gtest/gtest.h>
 #include "assets/image.h"
 #include "core/error.h"
+#include "oiio_write.h"
 #include "test_util.h"
 
 namespace arc {
 namespace {
 
-// Writes raw pixel data with OpenImageIO directly, so the loader is tested against files it
-// did not write itself.
-template <typename T>
-std::string write_raw(const std::filesystem::path& path, int w, int h, int channels, OIIO::TypeDesc type,
-                      const std::vector<T>& pixels) {
-  auto out = OIIO::ImageOutput::create(path.string());
-  EXPECT_TRUE(out);
-  OIIO::ImageSpec spec(w, h, channels, type);
-  spec.attribute("oiio:UnassociatedAlpha", 1);
-  EXPECT_TRUE(out->open(path.string(), spec)) << out->geterror();
-  EXPECT_TRUE(out->write_image(type, pixels.data())) << out->geterror();
-  EXPECT_TRUE(out->close());
-  return path.string();
-}
+using test::write_raw;
 
 std::vector<uint8_t> pixel(const Image& img, int x, int y) {
   const size_t at = (size_t(y) * size_t(img.width) + size_t(x)) * 4;

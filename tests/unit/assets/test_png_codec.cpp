@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "assets/codec/image_codec_abi.h"
+#include "oiio_write.h"
 #include "test_util.h"
 
 namespace arc {
@@ -82,14 +83,7 @@ std::string file_bytes(const std::filesystem::path& p) {
 template <typename T>
 std::string write_png(const std::filesystem::path& path, int w, int h, int channels, OIIO::TypeDesc type,
                       const std::vector<T>& pixels) {
-  auto out = OIIO::ImageOutput::create(path.string());
-  EXPECT_TRUE(out);
-  OIIO::ImageSpec spec(w, h, channels, type);
-  spec.attribute("oiio:UnassociatedAlpha", 1);
-  EXPECT_TRUE(out->open(path.string(), spec)) << out->geterror();
-  EXPECT_TRUE(out->write_image(type, pixels.data())) << out->geterror();
-  EXPECT_TRUE(out->close());
-  return file_bytes(path);
+  return file_bytes(test::write_raw(path, w, h, channels, type, pixels));
 }
 
 void expect_same_decoding(const std::string& bytes, const std::string& name) {

@@ -46,6 +46,17 @@ float channel(const Image& img, int x, int y, int c) {
   return img.rgba[(size_t(y) * img.width + x) * 4 + c] / 255.0f;
 }
 
+ParticleFrames render_without_and_with_particles(Renderer& r, const RenderView& v, int w, int h) {
+  RenderView empty = v;
+  empty.particles.clear();
+  ParticleFrames f;
+  r.render(empty, w, h);
+  f.background = r.read_pixels();
+  r.render(v, w, h);
+  f.lit = r.read_pixels();
+  return f;
+}
+
 ChangedPixels changed_pixels(const Image& before, const Image& after, const std::vector<PixelRect>& rects) {
   ChangedPixels n;
   const int w = after.width, h = after.height;

@@ -23,6 +23,12 @@ RenderView dark_view();
 void dump_if_asked(const std::string& name, const Image& img);  // $ARCFIRE_GFX_DUMP/<name>.png
 float channel(const Image& img, int x, int y, int c);  // 0..1
 
+// The view rendered without its particles, then with them, at w×h: what the particles change.
+struct ParticleFrames {
+  Image background, lit;
+};
+ParticleFrames render_without_and_with_particles(Renderer& r, const RenderView& v, int w, int h);
+
 // Pixels whose colour (RGB) differs between two frames of one size, and how many of those lie
 // outside every rectangle (GL window pixels, y up; the images' rows run top to bottom).
 struct ChangedPixels {

@@ -90,12 +90,7 @@ TEST(ParticleCoverage, EveryLitPixelLiesInTheMarkedTiles) {
   s.particle_resolution = RenderSettings::ParticleResolution::Full;
   r.set_render_settings(s);
   const int w = 320, h = 180;
-  RenderView empty = v;
-  empty.particles.clear();
-  r.render(empty, w, h);
-  const Image background = r.read_pixels();
-  r.render(v, w, h);
-  const Image lit = r.read_pixels();
+  const auto [background, lit] = test::render_without_and_with_particles(r, v, w, h);
   test::dump_if_asked("particle_coverage", lit);
 
   ParticleBatch batch;

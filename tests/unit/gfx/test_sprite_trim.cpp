@@ -274,12 +274,7 @@ TEST(SpriteTrim, TrimmedBoxesHoldEveryLitPixel) {
     s.filter = filter;
     s.particle_resolution = RenderSettings::ParticleResolution::Full;
     r.set_render_settings(s);
-    RenderView empty = v;
-    empty.particles.clear();
-    r.render(empty, w, h);
-    const Image background = r.read_pixels();
-    r.render(v, w, h);
-    const Image lit = r.read_pixels();
+    const auto [background, lit] = test::render_without_and_with_particles(r, v, w, h);
     SpriteTrim trim;
     trim.boxes = trim_boxes(sprites);
     trim.levels = mip_levels(sprites[0].width, sprites[0].height);
