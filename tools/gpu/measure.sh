@@ -6,8 +6,13 @@
 # 1920x1080) and particle_prep (the CPU's share per particle). Then the gallery and combat_view again, while SECONDS (default 420) allow, for
 # ranges over runs. Everything goes to OUT_DIR/bench.log as it is printed.
 set -uo pipefail
-out="${1:?usage: tools/gpu/measure.sh OUT_DIR [SECONDS]}"
+if [ $# -lt 1 ] || [ $# -gt 2 ]; then
+  echo "tools/gpu/measure.sh: usage: tools/gpu/measure.sh OUT_DIR [SECONDS]" >&2
+  exit 2
+fi
+out="$1"
 budget="${2:-420}"
+[[ "$budget" =~ ^[0-9]+$ ]] || { echo "tools/gpu/measure.sh: SECONDS: '$budget' is not a whole number of seconds" >&2; exit 2; }
 here="$(cd "$(dirname "$0")" && pwd)"
 mkdir -p "$out"
 log="$out/bench.log"
