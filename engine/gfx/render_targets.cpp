@@ -9,6 +9,14 @@
 
 namespace arc {
 
+void flip_rows(std::vector<PixelRect>& rects, int height) {
+  for (PixelRect& r : rects) {
+    const int y0 = height - r.y1, y1 = height - r.y0;
+    r.y0 = y0;
+    r.y1 = y1;
+  }
+}
+
 RenderTargets::RenderTargets(bool offscreen, bool float_scene) : offscreen_(offscreen), float_scene_(float_scene) {}
 
 RenderTargets::~RenderTargets() {
@@ -49,8 +57,14 @@ void RenderTargets::allocate_scene(int sw, int sh) {
                                                                : GL_R11F_G11F_B10F;
   const bool is_float = scene_internal_ != GL_RGBA8;
   glBindTexture(GL_TEXTURE_2D, scene_color_);
-  glTexImage2D(GL_TEXTURE_2D, 0, GLint(scene_internal_), sw, sh, 0, is_float ? GL_RGB : GL_RGBA,
-               is_float ? GL_FLOAT : GL_UNSIGNED_BYTE, nullptr);
+  // A top-down 8-bit scene in BGRA order: the unsized internal format lets Mesa take the
+  // order of the (BGRA) data as its storage, the X window's (scene_internal_ stays RGBA8: the
+  // same channels and precision for everything that asks).
+  if (format_.top_down && !is_float)
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, sw, sh, 0, GL_BGRA, GL_UNSIGNED_BYTE, nullptr);
+  else
+    glTexImage2D(GL_TEXTURE_2D, 0, GLint(scene_internal_), sw, sh, 0, is_float ? GL_RGB : GL_RGBA,
+                 is_float ? GL_FLOAT : GL_UNSIGNED_BYTE, nullptr);
   set_target_sampling(GL_TEXTURE_2D, GL_LINEAR);
   // Float depth in both modes: reversed-Z needs it, and the copy must match the format. A
   // texture, so that particles drawn into another target (half resolution) sample it as it is.
@@ -179,7 +193,8 @@ void RenderTargets::resolve(int width, int height) const {
   GLuint dst = offscreen_ ? target_fbo_ : 0;
   glBindFramebuffer(GL_READ_FRAMEBUFFER, scene_fbo_);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, dst);
-  glBlitFramebuffer(0, 0, scene_w_, scene_h_, 0, 0, width, height, GL_COLOR_BUFFER_BIT,
+  const int y0 = format_.top_down ? scene_h_ : 0, y1 = format_.top_down ? 0 : scene_h_;
+  glBlitFramebuffer(0, y0, scene_w_, y1, 0, 0, width, height, GL_COLOR_BUFFER_BIT,
                     (scene_w_ == width && scene_h_ == height) ? GL_NEAREST : GL_LINEAR);
   glBindFramebuffer(GL_FRAMEBUFFER, dst);
   glViewport(0, 0, width, height);
@@ -209,6 +224,7 @@ std::vector<float> RenderTargets::read_pixels_float() const {
   glBindFramebuffer(GL_READ_FRAMEBUFFER, scene_fbo_);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, scene_w_, scene_h_, GL_RGBA, GL_FLOAT, px.data());
+  if (format_.top_down) return px;  // already top row first
   std::vector<float> out(px.size());
   size_t row = size_t(scene_w_) * 4;
   for (int y = 0; y < scene_h_; ++y)

@@ -36,8 +36,19 @@ struct SceneFormat {
   bool hdr = false;
   HdrFormat hdr_format = HdrFormat::Rgba16f;
   int samples = 0;
-  bool operator==(const SceneFormat& o) const { return hdr == o.hdr && hdr_format == o.hdr_format && samples == o.samples; }
+  // The scene stored top row first, as a window system stores the window (gfx/renderer.h):
+  // the passes draw it with clip control's upper-left origin, the resolve flips it back, and
+  // an 8-bit scene is allocated as BGRA, the X window's own order, so that the resolve into
+  // the window is a copy of rows instead of a draw.
+  bool top_down = false;
+  bool operator==(const SceneFormat& o) const {
+    return hdr == o.hdr && hdr_format == o.hdr_format && samples == o.samples && top_down == o.top_down;
+  }
 };
+
+// Rectangles of scene pixels counted from the bottom row (GL's window coordinates) as rows of
+// a scene stored top row first: y → height − y.
+void flip_rows(std::vector<PixelRect>& rects, int height);
 
 class RenderTargets {
  public:
@@ -58,6 +69,7 @@ class RenderTargets {
   GLuint scene_fbo() const { return scene_fbo_; }
   GLenum scene_internal_format() const { return scene_internal_; }
   int samples() const { return samples_; }  // of the opaque target as allocated (0: no MSAA)
+  bool top_down() const { return format_.top_down; }  // the scene's rows are stored top first
 
   // Binds the scene framebuffer with a viewport over all of it.
   void bind_scene() const;
@@ -77,7 +89,11 @@ class RenderTargets {
   // sample it directly, with no copy, since it is not attached where they draw.
   GLuint scene_depth() const { return scene_depth_; }
   // Scales the scene colour into the window or the offscreen target (linear filtering unless
-  // the sizes match) and leaves that bound with a width × height viewport.
+  // the sizes match) and leaves that bound with a width × height viewport. A top-down scene
+  // (SceneFormat::top_down) is read with its rows reversed, which puts it upright: into a
+  // window, whose rows the driver also keeps top first, the two reversals cancel and Mesa
+  // copies the rows (0.4 ms at 1280x720 on llvmpipe under Xvfb, against 3.3 ms for the
+  // converting draw a bottom-up RGBA scene takes).
   void resolve(int width, int height) const;
   // Binds the window or the offscreen target with a width × height viewport.
   void bind_output(int width, int height) const;

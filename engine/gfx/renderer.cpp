@@ -24,6 +24,14 @@
 // is a float buffer in linear light (colours decoded from sRGB as they enter), tone-mapped
 // once by the post pass; without it the scene is 8-bit display values, drawn exactly as before
 // HDR existed. GPU timers bracket the depth copy + particles.
+//
+// Row order. In a window whose post pass is a plain resolve (8-bit scene, no FXAA or MSAA) the
+// scene is stored top row first, as the window system stores the window (RendererDesc::
+// top_down_scene): clear, sky, meshes and particles draw with clip control's upper-left origin,
+// the rectangles of the depth copy and of the half-resolution composite (counted from the
+// bottom, as the particle batch computes them) are turned into stored rows, the sky's cube map
+// is baked lower-left as always, and the resolve reads the rows reversed, which Mesa then does
+// as a copy. The post pass and the HUD draw lower-left into the output.
 #include "gfx/renderer.h"
 
 #include <epoxy/gl.h>
@@ -95,6 +103,7 @@ struct Renderer::Impl {
   FrameStats stats;
 
   SceneFormat scene_format() const;
+  void set_origin(bool upper_left) const;
   void clear_scene();
   void draw_particles(const RenderView& v, const ViewProjection& vp);
   void warm_up_particles(const RenderView& v, const ViewProjection& vp);
@@ -205,6 +214,7 @@ void Renderer::render(const RenderView& v, int width, int height) {
   m.stats.msaa_samples = m.targets.samples();
   m.stats.opaque_cpu_ms = ms_since(t);
   m.draw_particles(v, vp);
+  m.set_origin(false);  // the post pass and the HUD draw into the output as GL stores it
   t = std::chrono::steady_clock::now();
   m.post_process(width, height);
   m.stats.post_cpu_ms = ms_since(t);
@@ -223,11 +233,21 @@ SceneFormat Renderer::Impl::scene_format() const {
   f.samples = rs.antialias == RenderSettings::Antialias::Msaa4   ? 4
               : rs.antialias == RenderSettings::Antialias::Msaa2 ? 2
                                                                   : 0;
+  using TopDown = RendererDesc::TopDownScene;
+  const bool wanted = desc.top_down_scene == TopDown::On || (desc.top_down_scene == TopDown::Auto && !desc.offscreen);
+  f.top_down = wanted && clip_control && !rs.hdr && !desc.float_scene && rs.antialias == RenderSettings::Antialias::Off;
   return f;
 }
 
+// Clip control's origin: upper left draws the scene top row first (a top-down scene), lower
+// left as GL stores a framebuffer. The depth mode follows render.depth_mode either way.
+void Renderer::Impl::set_origin(bool upper_left) const {
+  if (clip_control)
+    glClipControl(upper_left ? GL_UPPER_LEFT : GL_LOWER_LEFT, rs.reversed_z ? GL_ZERO_TO_ONE : GL_NEGATIVE_ONE_TO_ONE);
+}
+
 void Renderer::Impl::clear_scene() {
-  if (clip_control) glClipControl(GL_LOWER_LEFT, rs.reversed_z ? GL_ZERO_TO_ONE : GL_NEGATIVE_ONE_TO_ONE);
+  set_origin(targets.top_down());
   targets.bind_opaque();
   glDepthMask(GL_TRUE);
   glClearDepth(rs.reversed_z ? 0.0 : 1.0);
@@ -286,6 +306,7 @@ void Renderer::Impl::draw_particles(const RenderView& v, const ViewProjection& v
   auto t = std::chrono::steady_clock::now();
   if (batch.any_soft && !half_res) {
     batch.depth_reads.rects(depth_rects);
+    if (targets.top_down()) flip_rows(depth_rects, targets.scene_height());
     targets.copy_depth(depth_rects);
     stats.depth_copied = true;
   }
@@ -299,6 +320,12 @@ void Renderer::Impl::draw_particles(const RenderView& v, const ViewProjection& v
   if (half_res) {
     t = std::chrono::steady_clock::now();
     batch.coverage.rects(composite_rects);
+    // The composite maps its rectangles to rows of the target as they are stored (lower-left
+    // origin), and both the scene and the half-resolution target are top-down when the scene is.
+    if (targets.top_down()) {
+      flip_rows(composite_rects, targets.scene_height());
+      set_origin(false);
+    }
     half_particles.composite(programs.particle_composite, targets.scene_fbo(), targets.scene_width(),
                              targets.scene_height(), composite_rects);
     stats.composite_share = batch.coverage.share();

@@ -105,6 +105,15 @@ void SkyPass::bake(const ShaderPrograms& programs, int resolution, bool linear) 
   GLint fbo = 0, vp[4];
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &fbo);
   glGetIntegerv(GL_VIEWPORT, vp);
+  // The faces are baked as GL stores a cube map's faces, whatever origin the scene is drawn
+  // with (a top-down scene's upper-left origin would mirror every face).
+  static const bool clip_control = epoxy_gl_version() >= 45 || epoxy_has_gl_extension("GL_ARB_clip_control");
+  GLint origin = GL_LOWER_LEFT, depth_mode = GL_NEGATIVE_ONE_TO_ONE;
+  if (clip_control) {
+    glGetIntegerv(GL_CLIP_ORIGIN, &origin);
+    glGetIntegerv(GL_CLIP_DEPTH_MODE, &depth_mode);
+    glClipControl(GL_LOWER_LEFT, GLenum(depth_mode));
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, cube_fbo_);
   glViewport(0, 0, n, n);
   glUseProgram(programs.sky_exact.id);
@@ -120,6 +129,7 @@ void SkyPass::bake(const ShaderPrograms& programs, int resolution, bool linear) 
   }
   glBindFramebuffer(GL_FRAMEBUFFER, GLuint(fbo));
   glViewport(vp[0], vp[1], vp[2], vp[3]);
+  if (clip_control) glClipControl(GLenum(origin), GLenum(depth_mode));
   cube.size = n;
   cube.seed = star_seed_;
   cube.shader_generation = programs.generation();
