@@ -11,6 +11,7 @@
 
 #include "assets/image.h"
 #include "assets/model.h"
+#include "assets/screenshot_writer.h"
 #include "core/error.h"
 #include "core/json.h"
 #include "game/workbench/effect_document.h"
@@ -42,16 +43,6 @@ std::vector<std::string> effect_files(const std::string& root) {
 }
 
 // The ship models (the "model" of each assets/ships/*.json) and the wall, into the renderer.
-// out/screenshots/workbench_NNNN.png in the working folder, the first number not taken.
-std::string screenshot_path() {
-  fs::create_directories("out/screenshots");
-  for (int i = 1;; ++i) {
-    char name[64];
-    std::snprintf(name, sizeof name, "out/screenshots/workbench_%04d.png", i);
-    if (!fs::exists(name)) return name;
-  }
-}
-
 std::string sprite_path(const std::string& root, std::string_view name) {
   return (fs::path(root) / ("assets/textures/sprite_" + std::string(name) + ".png")).string();
 }
@@ -93,6 +84,7 @@ struct PendingLeave {
 class WorkbenchSession {
  public:
   explicit WorkbenchSession(const WorkbenchOptions& o) : options_(o) {}
+  ~WorkbenchSession() { report_screenshots(screenshots_.wait()); }
   void setup();
   bool open() const { return !window_->should_close(); }
   double time() const { return window_->time_seconds(); }
@@ -110,6 +102,7 @@ class WorkbenchSession {
   void draw_file_section();
   void draw_leave_prompt();
   void draw_stats(int width, int height);
+  void report_screenshots(const std::vector<ScreenshotWriter::Done>& shots);
 
   const WorkbenchOptions& options_;
   WorkbenchStage stage_;
@@ -133,7 +126,21 @@ class WorkbenchSession {
   RenderView view_;
   bool orbiting_ = false, panning_ = false;
   bool want_screenshot_ = false;  // F12: the next frame, panel included
+  ScreenshotWriter screenshots_{"out/screenshots", "workbench"};  // written in the background
 };
+
+// A written screenshot is one line on stdout; a failed one goes to the panel's error line.
+void WorkbenchSession::report_screenshots(const std::vector<ScreenshotWriter::Done>& shots) {
+  for (const ScreenshotWriter::Done& shot : shots) {
+    if (!shot.error.empty()) {
+      std::fprintf(stderr, "arcfire: %s\n", shot.error.c_str());
+      error_ = shot.error;
+      continue;
+    }
+    std::printf("arcfire: screenshot %s\n", shot.path.c_str());
+    std::fflush(stdout);
+  }
+}
 
 void WorkbenchSession::setup() {
   files_ = effect_files(options_.root_dir);
@@ -413,13 +420,10 @@ void WorkbenchSession::frame(double frame_seconds) {
     renderer_->render(view_, width, height);
   }
   ui_->end_frame();
-  if (want_screenshot_ && width > 0 && height > 0) {
-    const std::string path = screenshot_path();  // read before the swap leaves the back buffer undefined
-    save_image(path, read_window_pixels(width, height));
-    std::printf("arcfire: screenshot %s\n", path.c_str());
-    std::fflush(stdout);
-    want_screenshot_ = false;
-  }
+  // Read before the swap leaves the back buffer undefined; encoded and written by a worker.
+  if (want_screenshot_ && width > 0 && height > 0) screenshots_.save(read_window_pixels(width, height));
+  want_screenshot_ = false;
+  report_screenshots(screenshots_.finished());
   window_->swap();
 }
 
