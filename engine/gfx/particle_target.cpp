@@ -1,5 +1,6 @@
 // gfx/particle_target.cpp — the half-resolution particle target and its composite.
 #include "gfx/particle_target.h"
+#include "gfx/render_targets.h"
 #include "gfx/texture_filter.h"
 
 #include <algorithm>
@@ -33,9 +34,10 @@ void ParticleTarget::allocate(int w, int h, GLenum color_format) {
   format_ = color_format;
   const bool is_float = color_format != GL_RGBA8;
   glBindTexture(GL_TEXTURE_2D, color_);
-  // Alpha holds the transmittance: a format with an alpha channel even when the scene's has none.
-  const GLenum internal = is_float ? GL_RGBA16F : GL_RGBA8;
-  glTexImage2D(GL_TEXTURE_2D, 0, GLint(internal), w, h, 0, GL_RGBA, is_float ? GL_FLOAT : GL_UNSIGNED_BYTE, nullptr);
+  // Alpha holds the transmittance: a format with an alpha channel even when the scene's has
+  // none. 8-bit in BGRA order, as the scene: the composite then takes llvmpipe's linear path.
+  if (is_float) glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, w, h, 0, GL_RGBA, GL_FLOAT, nullptr);
+  else allocate_rgba8(w, h);
   set_target_sampling(GL_TEXTURE_2D, GL_LINEAR);
   glBindRenderbuffer(GL_RENDERBUFFER, depth_);
   glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, w, h);

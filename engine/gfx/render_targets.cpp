@@ -24,8 +24,8 @@ RenderTargets::~RenderTargets() {
   glDeleteTextures(5, tex);
   glDeleteRenderbuffers(1, &ms_depth_);
   glDeleteVertexArrays(1, &resolve_vao_);
-  GLuint fbos[] = {scene_fbo_, copy_fbo_, target_fbo_, ms_fbo_};
-  glDeleteFramebuffers(4, fbos);
+  GLuint fbos[] = {scene_fbo_, scene_color_fbo_, copy_fbo_, target_fbo_, ms_fbo_};
+  glDeleteFramebuffers(5, fbos);
 }
 
 void RenderTargets::ensure(int w, int h, double scale, const SceneFormat& format) {
@@ -36,7 +36,7 @@ void RenderTargets::ensure(int w, int h, double scale, const SceneFormat& format
     allocate_scene(sw, sh);
     allocate_multisampled(sw, sh);
   }
-  if (offscreen_ && (w != target_w_ || h != target_h_ || !target_fbo_)) allocate_target(w, h);
+  if (offscreen_ && (w != target_w_ || h != target_h_ || !target_fbo_ || target_bgra_ != scene_bgra_)) allocate_target(w, h);
 }
 
 void RenderTargets::allocate_scene(int sw, int sh) {
@@ -44,6 +44,7 @@ void RenderTargets::allocate_scene(int sw, int sh) {
   scene_h_ = sh;
   if (!scene_fbo_) {
     glGenFramebuffers(1, &scene_fbo_);
+    glGenFramebuffers(1, &scene_color_fbo_);
     glGenFramebuffers(1, &copy_fbo_);
     glGenTextures(1, &scene_color_);
     glGenTextures(1, &scene_depth_);
@@ -56,12 +57,12 @@ void RenderTargets::allocate_scene(int sw, int sh) {
                     : format_.hdr_format == HdrFormat::Rgba16f ? GL_RGBA16F
                                                                : GL_R11F_G11F_B10F;
   const bool is_float = scene_internal_ != GL_RGBA8;
+  // An 8-bit scene is stored in BGRA order (allocate_rgba8), except under MSAA, whose resolving
+  // blit wants the multisampled colour's format.
+  scene_bgra_ = !is_float && format_.samples <= 1;
   glBindTexture(GL_TEXTURE_2D, scene_color_);
-  // A top-down 8-bit scene in BGRA order: the unsized internal format lets Mesa take the
-  // order of the (BGRA) data as its storage, the X window's (scene_internal_ stays RGBA8: the
-  // same channels and precision for everything that asks).
-  if (format_.top_down && !is_float)
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, sw, sh, 0, GL_BGRA, GL_UNSIGNED_BYTE, nullptr);
+  if (scene_bgra_)
+    allocate_rgba8(sw, sh);
   else
     glTexImage2D(GL_TEXTURE_2D, 0, GLint(scene_internal_), sw, sh, 0, is_float ? GL_RGB : GL_RGBA,
                  is_float ? GL_FLOAT : GL_UNSIGNED_BYTE, nullptr);
@@ -76,6 +77,10 @@ void RenderTargets::allocate_scene(int sw, int sh) {
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, scene_depth_, 0);
   if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
     throw std::runtime_error("scene framebuffer incomplete");
+  glBindFramebuffer(GL_FRAMEBUFFER, scene_color_fbo_);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, scene_color_, 0);
+  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    throw std::runtime_error("scene colour framebuffer incomplete");
   glBindTexture(GL_TEXTURE_2D, copy_depth_);
   glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT32F, sw, sh, 0, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
   set_target_sampling(GL_TEXTURE_2D, GL_NEAREST);
@@ -123,11 +128,24 @@ void RenderTargets::allocate_target(int w, int h) {
     glGenTextures(1, &target_color_);
   }
   glBindTexture(GL_TEXTURE_2D, target_color_);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  // The scene's channel order, so that the resolve into it is a copy of rows.
+  target_bgra_ = scene_bgra_;
+  if (target_bgra_) allocate_rgba8(w, h);
+  else glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
   glBindFramebuffer(GL_FRAMEBUFFER, target_fbo_);
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target_color_, 0);
   if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
     throw std::runtime_error("offscreen target framebuffer incomplete");
+}
+
+// RGBA8 storage in BGRA order for the bound 2-D texture. The unsized internal format lets Mesa
+// take the order of the (BGRA) data as its storage, as an X window stores its pixels. On
+// llvmpipe that order is what its linear rasteriser takes: the half-resolution composite into a
+// colour-only BGRA framebuffer ran about twice as fast as into RGBA8 in a standalone test (2.0
+// against 3.3–4.3 ms for 45 % of a 1280x720 screen; combat_view's heavy chase frames 1.0–1.4 ms
+// faster, the same bytes), and a copy into the window is a copy of rows.
+void allocate_rgba8(int w, int h) {
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, w, h, 0, GL_BGRA, GL_UNSIGNED_BYTE, nullptr);
 }
 
 void RenderTargets::bind_scene() const {

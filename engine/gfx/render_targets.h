@@ -37,14 +37,17 @@ struct SceneFormat {
   HdrFormat hdr_format = HdrFormat::Rgba16f;
   int samples = 0;
   // The scene stored top row first, as a window system stores the window (gfx/renderer.h):
-  // the passes draw it with clip control's upper-left origin, the resolve flips it back, and
-  // an 8-bit scene is allocated as BGRA, the X window's own order, so that the resolve into
-  // the window is a copy of rows instead of a draw.
+  // the passes draw it with clip control's upper-left origin and the resolve flips it back.
+  // With the 8-bit scene's BGRA order (the X window's own), the resolve into the window is
+  // then a copy of rows instead of a draw.
   bool top_down = false;
   bool operator==(const SceneFormat& o) const {
     return hdr == o.hdr && hdr_format == o.hdr_format && samples == o.samples && top_down == o.top_down;
   }
 };
+
+// RGBA8 storage in BGRA order for the bound 2-D texture (render_targets.cpp says why).
+void allocate_rgba8(int w, int h);
 
 // Rectangles of scene pixels counted from the bottom row (GL's window coordinates) as rows of
 // a scene stored top row first: y → height − y.
@@ -67,6 +70,9 @@ class RenderTargets {
   bool has_scene() const { return scene_fbo_ != 0; }
   GLuint scene_color() const { return scene_color_; }  // for the post passes
   GLuint scene_fbo() const { return scene_fbo_; }
+  // The scene colour alone, no depth attached: what the half-resolution composite blends into
+  // (llvmpipe takes its faster linear rasteriser only into a framebuffer without depth).
+  GLuint scene_color_fbo() const { return scene_color_fbo_; }
   GLenum scene_internal_format() const { return scene_internal_; }
   int samples() const { return samples_; }  // of the opaque target as allocated (0: no MSAA)
   bool top_down() const { return format_.top_down; }  // the scene's rows are stored top first
@@ -108,7 +114,8 @@ class RenderTargets {
   bool offscreen_, float_scene_;
   SceneFormat format_;
   GLenum scene_internal_ = GL_RGBA8;
-  GLuint scene_fbo_ = 0, scene_color_ = 0, scene_depth_ = 0;
+  GLuint scene_fbo_ = 0, scene_color_fbo_ = 0, scene_color_ = 0, scene_depth_ = 0;
+  bool scene_bgra_ = false, target_bgra_ = false;  // 8-bit colour stored in BGRA order (allocate_rgba8)
   GLuint ms_fbo_ = 0, ms_color_ = 0, ms_depth_ = 0;  // ms_color_: a multisample texture
   GLuint resolve_vao_ = 0;
   int samples_ = 0;

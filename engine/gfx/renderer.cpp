@@ -326,8 +326,9 @@ void Renderer::Impl::draw_particles(const RenderView& v, const ViewProjection& v
       flip_rows(composite_rects, targets.scene_height());
       set_origin(false);
     }
-    half_particles.composite(programs.particle_composite, targets.scene_fbo(), targets.scene_width(),
+    half_particles.composite(programs.particle_composite, targets.scene_color_fbo(), targets.scene_width(),
                              targets.scene_height(), composite_rects);
+    targets.bind_scene();
     stats.composite_share = batch.coverage.share();
     stats.particle_composite_cpu_ms = ms_since(t);
     ++draws;
