@@ -16,7 +16,7 @@
 //   ParticleTarget half;
 //   half.begin(targets.scene_fbo(), scene_w, scene_h, targets.scene_internal_format());
 //   ... particle draws with ParticleFrame::transmittance_alpha = true ...
-//   half.composite(programs.particle_composite, targets.scene_fbo(), scene_w, scene_h, rects);
+//   half.composite(programs.particle_composite, targets.scene_color_fbo(), scene_w, scene_h, rects);
 #pragma once
 #include <epoxy/gl.h>
 
@@ -39,8 +39,9 @@ class ParticleTarget {
   void begin(GLuint scene_fbo, int scene_w, int scene_h, GLenum color_format);
   int width() const { return w_; }
   int height() const { return h_; }
-  // Puts the target over the scene (S + T·scene) inside `rects` (scene pixels) and leaves the
-  // scene bound.
+  // Puts the target over the scene (S + T·scene) inside `rects` (scene pixels) and leaves
+  // `scene_fbo` bound: the scene colour's framebuffer, best without depth attached
+  // (RenderTargets::scene_color_fbo: llvmpipe's linear rasteriser then takes the composite).
   void composite(const Program& program, GLuint scene_fbo, int scene_w, int scene_h, const std::vector<PixelRect>& rects);
 
  private:

@@ -1,5 +1,6 @@
 // gfx/render_targets.cpp — scene buffer, depth copy, offscreen target and read-back.
 #include "gfx/render_targets.h"
+#include "gfx/gl_features.h"
 #include "gfx/texture_filter.h"
 
 #include <algorithm>
@@ -186,10 +187,9 @@ void RenderTargets::copy_depth() const { copy_depth({PixelRect{0, 0, scene_w_, s
 
 void RenderTargets::copy_depth(const std::vector<PixelRect>& rects) const {
   // This frame's depth, never last frame's (Ribeiro: a stale copy flickers as the camera moves).
-  // Same format and size on both sides, so where GL 4.3's image copy exists (or
-  // ARB_copy_image: NVIDIA's driver makes the 3.3 core context asked for and lists it) it is a
+  // Same format and size on both sides, so where image copy exists (gl_features.h) it is a
   // plain copy of texels (a memcpy on llvmpipe); a depth blit runs a draw through the blitter.
-  static const bool image_copy = epoxy_gl_version() >= 43 || epoxy_has_gl_extension("GL_ARB_copy_image");
+  const bool image_copy = has_copy_image();
   if (!image_copy) {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, scene_fbo_);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, copy_fbo_);

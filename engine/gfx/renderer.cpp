@@ -42,6 +42,7 @@
 #include <stdexcept>
 
 #include "gfx/bloom_pass.h"
+#include "gfx/gl_features.h"
 #include "gfx/gpu_timers.h"
 #include "gfx/hud_pass.h"
 #include "gfx/mesh_pass.h"
@@ -69,10 +70,10 @@ std::string describe_context() {
 }  // namespace
 
 struct Renderer::Impl {
-  Impl(const RendererDesc& d, int gl_version)
+  explicit Impl(const RendererDesc& d)
       : desc(d),
         version(describe_context()),
-        clip_control(gl_version >= 45 || epoxy_has_gl_extension("GL_ARB_clip_control")),
+        clip_control(arc::has_clip_control()),
         programs(d.shader_dir),
         targets(d.offscreen, d.float_scene),
         particles(d.max_particles_per_draw) {}
@@ -122,7 +123,7 @@ std::string describe_particle_stats(const FrameStats& s) {
 Renderer::Renderer(const RendererDesc& desc) {
   int ver = epoxy_gl_version();
   if (ver < 33) throw std::runtime_error("OpenGL 3.3 or newer is needed, the context has " + std::to_string(ver / 10) + "." + std::to_string(ver % 10));
-  impl_ = std::make_unique<Impl>(desc, ver);
+  impl_ = std::make_unique<Impl>(desc);
 }
 
 Renderer::~Renderer() = default;

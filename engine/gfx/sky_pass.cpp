@@ -1,5 +1,6 @@
 // gfx/sky_pass.cpp — seeded starfield, nebula cube-map bake, and the sky draw.
 #include "gfx/sky_pass.h"
+#include "gfx/gl_features.h"
 
 #include <algorithm>
 #include <cmath>
@@ -107,7 +108,7 @@ void SkyPass::bake(const ShaderPrograms& programs, int resolution, bool linear) 
   glGetIntegerv(GL_VIEWPORT, vp);
   // The faces are baked as GL stores a cube map's faces, whatever origin the scene is drawn
   // with (a top-down scene's upper-left origin would mirror every face).
-  static const bool clip_control = epoxy_gl_version() >= 45 || epoxy_has_gl_extension("GL_ARB_clip_control");
+  const bool clip_control = has_clip_control();
   GLint origin = GL_LOWER_LEFT, depth_mode = GL_NEGATIVE_ONE_TO_ONE;
   if (clip_control) {
     glGetIntegerv(GL_CLIP_ORIGIN, &origin);
