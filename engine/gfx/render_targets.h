@@ -74,6 +74,7 @@ class RenderTargets {
   // (llvmpipe takes its faster linear rasteriser only into a framebuffer without depth).
   GLuint scene_color_fbo() const { return scene_color_fbo_; }
   GLenum scene_internal_format() const { return scene_internal_; }
+  bool scene_bgra() const { return scene_bgra_; }  // 8-bit colour in BGRA order (allocate_rgba8)
   int samples() const { return samples_; }  // of the opaque target as allocated (0: no MSAA)
   bool top_down() const { return format_.top_down; }  // the scene's rows are stored top first
 

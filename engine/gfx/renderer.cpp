@@ -4,8 +4,10 @@
 //
 //   pass            reads                                  writes
 //   ─────────────── ────────────────────────────────────── ─────────────────────────────────
-//   clear           —                                      opaque colour = black, depth = far
-//   sky             view seed, camera; baked nebula cube   opaque colour (depth off)
+//   nebula          view seed, camera; baked nebula cube   opaque colour (depth off; an 8-bit
+//                   (corner texture: 8-bit scene, grid)    scene: its colour-only framebuffer)
+//   clear           —                                      depth = far (the colour is the sky's)
+//   stars           view seed, camera                      opaque colour (blended, depth off)
 //   mesh (opaque)   view meshes, model GPU buffers         opaque colour + depth
 //   MSAA resolve    opaque target (msaa2/msaa4 only)       scene colour (averaged) + scene depth
 //                                                          (one sample)
@@ -27,7 +29,7 @@
 //
 // Row order. In a window whose post pass is a plain resolve (8-bit scene, no FXAA or MSAA) the
 // scene is stored top row first, as the window system stores the window (RendererDesc::
-// top_down_scene): clear, sky, meshes and particles draw with clip control's upper-left origin,
+// top_down_scene): sky, meshes and particles draw with clip control's upper-left origin,
 // the rectangles of the depth copy and of the half-resolution composite (counted from the
 // bottom, as the particle batch computes them) are turned into stored rows, the sky's cube map
 // is baked lower-left as always, and the resolve reads the rows reversed, which Mesa then does
@@ -208,8 +210,14 @@ void Renderer::render(const RenderView& v, int width, int height) {
 
   if (std::find(m.warm_keys.begin(), m.warm_keys.end(), m.warm_key()) == m.warm_keys.end()) m.warm_up_particles(v, vp);
   auto t = std::chrono::steady_clock::now();
-  m.clear_scene();
-  m.stats.draw_calls += m.sky.draw(v, m.programs, vp, m.rs, scene_h);
+  // An 8-bit BGRA scene takes the nebula into its colour alone (gfx/sky_pass.h); the depth
+  // is cleared after it, with the stars and meshes.
+  const GLuint sky_fbo = m.targets.scene_bgra() ? m.targets.scene_color_fbo() : 0;
+  if (sky_fbo) m.set_origin(m.targets.top_down());
+  else m.clear_scene();
+  m.stats.draw_calls += m.sky.draw_nebula(v, m.programs, vp, m.rs, scene_w, scene_h, sky_fbo);
+  if (sky_fbo) m.clear_scene();
+  m.stats.draw_calls += m.sky.draw_stars(v, m.programs, vp, m.rs, scene_h);
   m.stats.draw_calls += m.meshes.draw(v, m.programs.mesh, vp.view_proj, m.rs.reversed_z, m.rs.hdr);
   m.targets.resolve_opaque(m.programs.msaa_resolve);
   m.stats.msaa_samples = m.targets.samples();
@@ -252,8 +260,9 @@ void Renderer::Impl::clear_scene() {
   targets.bind_opaque();
   glDepthMask(GL_TRUE);
   glClearDepth(rs.reversed_z ? 0.0 : 1.0);
-  // Depth only: the sky pass writes every pixel's colour and an alpha of 1 next, so clearing
-  // the colour too would fill the frame twice (on llvmpipe about 0.3 ms of a 1280x720 frame).
+  // Depth only: the sky pass writes every pixel's colour and an alpha of 1 (just before or just
+  // after this), so clearing the colour too would fill the frame twice (on llvmpipe about
+  // 0.3 ms of a 1280x720 frame).
   glClear(GL_DEPTH_BUFFER_BIT);
 }
 

@@ -114,6 +114,8 @@ void ShaderPrograms::build_all() {
   const Spec specs[] = {{&sky, "sky.vert", "sky.frag", ""},
                         {&sky_exact, "sky.vert", "sky_exact.frag", ""},
                         {&sky_grid, "sky_grid.vert", "sky_grid.frag", ""},
+                        {&sky_corners, "post.vert", "sky_corners.frag", ""},
+                        {&sky_cells, "sky_cells.vert", "sky_cells.frag", ""},
                         {&stars, "stars.vert", "stars.frag", ""},
                         {&mesh, "mesh.vert", "mesh.frag", ""},
                         {&particle_hard, "particle.vert", "particle.frag", "#define SOFT 0\n#define CONTRAST 0\n"},

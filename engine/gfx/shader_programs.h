@@ -34,7 +34,7 @@ class ShaderPrograms {
   std::string reload();
   int generation() const { return generation_; }
 
-  Program sky, sky_exact, sky_grid, stars, mesh, hud;
+  Program sky, sky_exact, sky_grid, sky_corners, sky_cells, stars, mesh, hud;
   // particle.vert + particle.frag with SOFT / CONTRAST / CONTRAST_SQUARE defined: hard edges,
   // linear soft edges, the general contrast curve, and the curve at power 2 (a square).
   Program particle_hard, particle_soft, particle_contrast, particle_square;

@@ -1,6 +1,7 @@
 // gfx/sky_pass.cpp — seeded starfield, nebula cube-map bake, and the sky draw.
 #include "gfx/sky_pass.h"
 #include "gfx/gl_features.h"
+#include "gfx/render_targets.h"
 
 #include <algorithm>
 #include <cmath>
@@ -40,7 +41,9 @@ SkyPass::~SkyPass() {
   glDeleteVertexArrays(2, vaos);
   glDeleteBuffers(1, &star_vbo_);
   for (BakedCube& c : cubes_) glDeleteTextures(1, &c.tex);
-  glDeleteFramebuffers(1, &cube_fbo_);
+  glDeleteTextures(1, &corner_tex_);
+  GLuint fbos[] = {cube_fbo_, corner_fbo_};
+  glDeleteFramebuffers(2, fbos);
 }
 
 void SkyPass::build_stars(uint64_t seed) {
@@ -136,8 +139,8 @@ void SkyPass::bake(const ShaderPrograms& programs, int resolution, bool linear) 
   cube.shader_generation = programs.generation();
 }
 
-int SkyPass::draw(const RenderView& v, const ShaderPrograms& programs, const ViewProjection& vp,
-                  const RenderSettings& rs, int scene_h) {
+int SkyPass::draw_nebula(const RenderView& v, const ShaderPrograms& programs, const ViewProjection& vp,
+                         const RenderSettings& rs, int scene_w, int scene_h, GLuint color_only_fbo) {
   if (star_seed_ != v.starfield_seed) build_stars(v.starfield_seed);
   glDisable(GL_DEPTH_TEST);
   glDepthMask(GL_FALSE);
@@ -147,25 +150,42 @@ int SkyPass::draw(const RenderView& v, const ShaderPrograms& programs, const Vie
                         cube.shader_generation != programs.generation()))
     bake(programs, rs.sky_resolution, rs.hdr);
   const bool grid = !rs.sky_exact && rs.sky_grid > 0;
-  const Program& p = rs.sky_exact ? programs.sky_exact : grid ? programs.sky_grid : programs.sky;
-  glUseProgram(p.id);
-  double ty = std::tan(v.camera.fov_y_radians * 0.5);
-  set_uniforms(p, vp.camera_basis, float(ty * vp.aspect), float(ty));
-  glUniform1i(p.loc("u_sky"), 0);
-  glUniform1i(p.loc("u_linear"), rs.hdr);
-  if (!rs.sky_exact) glUniform1f(p.loc("u_edge_scale"), float(cube.size - 1) / float(cube.size));
+  const float ty = float(std::tan(v.camera.fov_y_radians * 0.5)), tx = float(ty * vp.aspect);
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_CUBE_MAP, cube.tex);
   glBindVertexArray(empty_vao_);
-  if (grid) {
-    const int scene_w = std::max(1, int(std::lround(double(scene_h) * vp.aspect)));
-    const int cells_x = (scene_w + rs.sky_grid - 1) / rs.sky_grid, cells_y = (scene_h + rs.sky_grid - 1) / rs.sky_grid;
-    glUniform1i(p.loc("u_cells_x"), cells_x);
-    glUniform2f(p.loc("u_cell_ndc"), 2.0f * float(rs.sky_grid) / float(scene_w), 2.0f * float(rs.sky_grid) / float(scene_h));
-    glDrawArrays(GL_TRIANGLES, 0, cells_x * cells_y * 6);
-  } else {
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+  int draws = 1;
+  if (color_only_fbo) {
+    glBindFramebuffer(GL_FRAMEBUFFER, color_only_fbo);
+    glViewport(0, 0, scene_w, scene_h);
   }
+  if (grid && color_only_fbo && !rs.hdr) {
+    draw_corner_cells(programs, vp.camera_basis, tx, ty, rs.sky_grid, scene_w, scene_h, color_only_fbo);
+    draws = 2;
+  } else {
+    const Program& p = rs.sky_exact ? programs.sky_exact : grid ? programs.sky_grid : programs.sky;
+    glUseProgram(p.id);
+    set_uniforms(p, vp.camera_basis, tx, ty);
+    glUniform1i(p.loc("u_sky"), 0);
+    glUniform1i(p.loc("u_linear"), rs.hdr);
+    if (!rs.sky_exact) glUniform1f(p.loc("u_edge_scale"), float(cube.size - 1) / float(cube.size));
+    if (grid) {
+      const int cells_x = (scene_w + rs.sky_grid - 1) / rs.sky_grid, cells_y = (scene_h + rs.sky_grid - 1) / rs.sky_grid;
+      glUniform1i(p.loc("u_cells_x"), cells_x);
+      glUniform2f(p.loc("u_cell_ndc"), 2.0f * float(rs.sky_grid) / float(scene_w), 2.0f * float(rs.sky_grid) / float(scene_h));
+      glDrawArrays(GL_TRIANGLES, 0, cells_x * cells_y * 6);
+    } else {
+      glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+  }
+  return draws;
+}
+
+int SkyPass::draw_stars(const RenderView& v, const ShaderPrograms& programs, const ViewProjection& vp,
+                        const RenderSettings& rs, int scene_h) {
+  if (star_seed_ != v.starfield_seed) build_stars(v.starfield_seed);
+  glDisable(GL_DEPTH_TEST);
+  glDepthMask(GL_FALSE);
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE);
   glEnable(GL_PROGRAM_POINT_SIZE);
@@ -177,7 +197,54 @@ int SkyPass::draw(const RenderView& v, const ShaderPrograms& programs, const Vie
   glDrawArrays(GL_POINTS, 0, star_count_);
   glDisable(GL_PROGRAM_POINT_SIZE);
   glDisable(GL_BLEND);
-  return 2;
+  return 1;
+}
+
+// The grid through a texture of its corners (sky_pass.h): the corners' lookups into that
+// texture, then one rectangle over the scene's colour alone. The corner texture is indexed by
+// its own texels (gl_FragCoord), and the rectangle maps NDC to it, so the result is the same
+// under either clip origin. Leaves `color_only_fbo` bound with the scene's viewport.
+void SkyPass::draw_corner_cells(const ShaderPrograms& programs, const glm::mat3& basis, float tan_x, float tan_y,
+                                int grid, int scene_w, int scene_h, GLuint color_only_fbo) {
+  const int cells_x = (scene_w + grid - 1) / grid, cells_y = (scene_h + grid - 1) / grid;
+  if (!corner_fbo_) {
+    glGenFramebuffers(1, &corner_fbo_);
+    glGenTextures(1, &corner_tex_);
+  }
+  glBindTexture(GL_TEXTURE_2D, corner_tex_);
+  if (cells_x + 1 != corners_x_ || cells_y + 1 != corners_y_) {
+    corners_x_ = cells_x + 1;
+    corners_y_ = cells_y + 1;
+    allocate_rgba8(corners_x_, corners_y_);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, corner_fbo_);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, corner_tex_, 0);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+      throw std::runtime_error("sky corner framebuffer incomplete");
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, corner_fbo_);
+  glViewport(0, 0, corners_x_, corners_y_);
+  const Program& c = programs.sky_corners;
+  glUseProgram(c.id);
+  set_uniforms(c, basis, tan_x, tan_y);
+  glUniform1i(c.loc("u_sky"), 0);
+  glUniform1f(c.loc("u_edge_scale"), float(cubes_[0].size - 1) / float(cubes_[0].size));  // 8-bit scenes only
+  glUniform2f(c.loc("u_cell_ndc"), 2.0f * float(grid) / float(scene_w), 2.0f * float(grid) / float(scene_h));
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+
+  glBindFramebuffer(GL_FRAMEBUFFER, color_only_fbo);
+  glViewport(0, 0, scene_w, scene_h);
+  const Program& r = programs.sky_cells;
+  glUseProgram(r.id);
+  glUniform1i(r.loc("u_corners"), 0);
+  glUniform2f(r.loc("u_corner_scale"), float(scene_w) / float(grid * corners_x_), float(scene_h) / float(grid * corners_y_));
+  glUniform2f(r.loc("u_corner_offset"), 0.5f / float(corners_x_), 0.5f / float(corners_y_));
+  glBindTexture(GL_TEXTURE_2D, corner_tex_);
+  glDrawArrays(GL_TRIANGLES, 0, 6);
 }
 
 }  // namespace arc

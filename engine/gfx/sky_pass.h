@@ -1,20 +1,34 @@
 // gfx/sky_pass.h — the background at infinity: nebula and starfield, keyed by the level's seed.
 //
-// First pass of a frame, with depth off, into a scene buffer whose colour is not cleared: it
-// writes every pixel's colour and an alpha of 1 (the grid's cells and the full-screen triangle
+// First pass of a frame, with depth off, into a scene buffer whose colour is not cleared: the
+// nebula writes every pixel's colour and an alpha of 1 (the grid and the full-screen triangle
 // cover the screen), which the renderer relies on. The nebula is either
 // looked up in a cube map baked once per seed, resolution and shader build (render.sky =
 // baked) or evaluated per pixel (exact, the reference); the stars are points blended on top.
 // The baked map is looked up at every pixel (render.sky_grid = 0) or at the corners of a
-// screen grid of N-pixel cells and interpolated across them (16 by default: on llvmpipe the
-// per-pixel cube-map sample was 2.5 ms of a 1280×720 frame, the grid's 7200 triangles about a
-// quarter of that; 58–75 dB PSNR against the per-pixel lookup in every level).
+// screen grid of N-pixel cells and interpolated across them (on llvmpipe the per-pixel
+// cube-map sample was 2.5 ms of a 1280×720 frame; 58–75 dB PSNR against it in every level).
+// The grid is drawn one of two ways:
+//  - into an 8-bit BGRA scene without MSAA (the default settings), the corners are first
+//    looked up into a small texture of one texel per corner (sky_corners.frag), and one
+//    screen rectangle reads it with bilinear filtering into the scene's colour alone
+//    (`color_only_fbo`, no depth attached; sky_cells.*): a plain texture read that llvmpipe's
+//    linear rasteriser takes, 0.6–1.6 ms against 2.3–3.3 ms for the triangles below
+//    (a standalone program, 60 frames each; in combat_view the nebula, depth clear and stars
+//    take 2.6 ms a frame against 4.9);
+//  - otherwise (float or multisampled scenes) two Gouraud triangles a cell (sky_grid.*).
+// The two interpolate a cell differently (bilinear against two planes), and the linear
+// rasteriser interpolates in 8 bits, rounding down: against the per-pixel lookup over eight
+// views, 53.2 dB PSNR at 16-pixel cells (the triangles 59.9), 50.5 at 32, the default (53.8),
+// 55.4 at 8 (65.6), whose 14 600 corners cost the corner pass little; the faint lattice of
+// the cells shows only with the picture's gain turned up about four times.
 // Both follow RenderView::starfield_seed, which also orients the nebula's two lobes. Their
 // colours are display values; with HDR they are decoded to linear light as they are drawn
 // (the baked map is baked again in linear light).
 //
 //   SkyPass sky;
-//   int draw_calls = sky.draw(view, programs, make_view_projection(...), settings, scene_height);
+//   int draw_calls = sky.draw_nebula(view, programs, vp, settings, scene_w, scene_h);
+//   draw_calls += sky.draw_stars(view, programs, vp, settings, scene_h);
 #pragma once
 #include <epoxy/gl.h>
 
@@ -36,16 +50,27 @@ class SkyPass {
   SkyPass(const SkyPass&) = delete;
   SkyPass& operator=(const SkyPass&) = delete;
 
-  // Draws into the bound framebuffer; `scene_height` sizes the stars. Returns the draw calls.
-  int draw(const RenderView& view, const ShaderPrograms& programs, const ViewProjection& vp,
-           const RenderSettings& settings, int scene_height);
+  // The nebula, into the bound framebuffer: a scene of scene_width × scene_height. With
+  // `color_only_fbo` (the scene's colour alone, 8-bit BGRA, not multisampled) it binds that and
+  // draws there, and leaves it bound with a viewport over the scene. Returns the draw calls.
+  int draw_nebula(const RenderView& view, const ShaderPrograms& programs, const ViewProjection& vp,
+                  const RenderSettings& settings, int scene_width, int scene_height, GLuint color_only_fbo = 0);
+  // The stars blended over the nebula, in the bound framebuffer; `scene_height` sizes them.
+  // Not into the colour-only framebuffer: among the rectangle's tiles they cost llvmpipe its
+  // linear rasteriser there (the nebula and stars 4.9 ms a frame, against 2.6 + 0.7 apart).
+  int draw_stars(const RenderView& view, const ShaderPrograms& programs, const ViewProjection& vp,
+                 const RenderSettings& settings, int scene_height);
 
  private:
   void build_stars(uint64_t seed);
   void bake(const ShaderPrograms& programs, int resolution, bool linear);
   void set_uniforms(const Program& p, const glm::mat3& basis, float tan_x, float tan_y) const;
+  void draw_corner_cells(const ShaderPrograms& programs, const glm::mat3& basis, float tan_x, float tan_y,
+                         int grid, int scene_w, int scene_h, GLuint color_only_fbo);
 
   GLuint empty_vao_ = 0;  // the full-screen triangle is made in the vertex shader
+  GLuint corner_tex_ = 0, corner_fbo_ = 0;  // one BGRA texel per grid corner
+  int corners_x_ = 0, corners_y_ = 0;
   GLuint star_vao_ = 0, star_vbo_ = 0;
   int star_count_ = 0;
   uint64_t star_seed_ = ~0ull;
