@@ -155,14 +155,14 @@ int SkyPass::draw_nebula(const RenderView& v, const ShaderPrograms& programs, co
   glBindTexture(GL_TEXTURE_CUBE_MAP, cube.tex);
   glBindVertexArray(empty_vao_);
   int draws = 1;
-  if (color_only_fbo) {
-    glBindFramebuffer(GL_FRAMEBUFFER, color_only_fbo);
-    glViewport(0, 0, scene_w, scene_h);
-  }
   if (grid && color_only_fbo && !rs.hdr) {
-    draw_corner_cells(programs, vp.camera_basis, tx, ty, rs.sky_grid, scene_w, scene_h, color_only_fbo);
+    draw_corner_cells(programs, vp.camera_basis, tx, ty, rs.sky_grid, cube.size, scene_w, scene_h, color_only_fbo);
     draws = 2;
   } else {
+    if (color_only_fbo) {
+      glBindFramebuffer(GL_FRAMEBUFFER, color_only_fbo);
+      glViewport(0, 0, scene_w, scene_h);
+    }
     const Program& p = rs.sky_exact ? programs.sky_exact : grid ? programs.sky_grid : programs.sky;
     glUseProgram(p.id);
     set_uniforms(p, vp.camera_basis, tx, ty);
@@ -205,16 +205,16 @@ int SkyPass::draw_stars(const RenderView& v, const ShaderPrograms& programs, con
 // its own texels (gl_FragCoord), and the rectangle maps NDC to it, so the result is the same
 // under either clip origin. Leaves `color_only_fbo` bound with the scene's viewport.
 void SkyPass::draw_corner_cells(const ShaderPrograms& programs, const glm::mat3& basis, float tan_x, float tan_y,
-                                int grid, int scene_w, int scene_h, GLuint color_only_fbo) {
+                                int grid, int cube_size, int scene_w, int scene_h, GLuint color_only_fbo) {
   const int cells_x = (scene_w + grid - 1) / grid, cells_y = (scene_h + grid - 1) / grid;
   if (!corner_fbo_) {
     glGenFramebuffers(1, &corner_fbo_);
     glGenTextures(1, &corner_tex_);
   }
-  glBindTexture(GL_TEXTURE_2D, corner_tex_);
   if (cells_x + 1 != corners_x_ || cells_y + 1 != corners_y_) {
     corners_x_ = cells_x + 1;
     corners_y_ = cells_y + 1;
+    glBindTexture(GL_TEXTURE_2D, corner_tex_);
     allocate_rgba8(corners_x_, corners_y_);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -225,6 +225,7 @@ void SkyPass::draw_corner_cells(const ShaderPrograms& programs, const glm::mat3&
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, corner_tex_, 0);
     if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
       throw std::runtime_error("sky corner framebuffer incomplete");
+    glBindTexture(GL_TEXTURE_2D, 0);  // not bound while drawn into
   }
   glBindFramebuffer(GL_FRAMEBUFFER, corner_fbo_);
   glViewport(0, 0, corners_x_, corners_y_);
@@ -232,7 +233,7 @@ void SkyPass::draw_corner_cells(const ShaderPrograms& programs, const glm::mat3&
   glUseProgram(c.id);
   set_uniforms(c, basis, tan_x, tan_y);
   glUniform1i(c.loc("u_sky"), 0);
-  glUniform1f(c.loc("u_edge_scale"), float(cubes_[0].size - 1) / float(cubes_[0].size));  // 8-bit scenes only
+  glUniform1f(c.loc("u_edge_scale"), float(cube_size - 1) / float(cube_size));
   glUniform2f(c.loc("u_cell_ndc"), 2.0f * float(grid) / float(scene_w), 2.0f * float(grid) / float(scene_h));
   glDrawArrays(GL_TRIANGLES, 0, 3);
 

@@ -66,7 +66,7 @@ class SkyPass {
   void bake(const ShaderPrograms& programs, int resolution, bool linear);
   void set_uniforms(const Program& p, const glm::mat3& basis, float tan_x, float tan_y) const;
   void draw_corner_cells(const ShaderPrograms& programs, const glm::mat3& basis, float tan_x, float tan_y,
-                         int grid, int scene_w, int scene_h, GLuint color_only_fbo);
+                         int grid, int cube_size, int scene_w, int scene_h, GLuint color_only_fbo);
 
   GLuint empty_vao_ = 0;  // the full-screen triangle is made in the vertex shader
   GLuint corner_tex_ = 0, corner_fbo_ = 0;  // one BGRA texel per grid corner
