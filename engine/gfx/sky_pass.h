@@ -20,8 +20,9 @@
 // The two interpolate a cell differently (bilinear against two planes), and the linear
 // rasteriser interpolates in 8 bits, rounding down: against the per-pixel lookup over eight
 // views, 53.2 dB PSNR at 16-pixel cells (the triangles 59.9), 50.5 at 32, the default (53.8),
-// 55.4 at 8 (65.6), whose 14 600 corners cost the corner pass little; the faint lattice of
-// the cells shows only with the picture's gain turned up about four times.
+// 55.4 at 8 (65.6), whose 14 600 corners cost the corner pass little. In the darkest nebula
+// its 1/255 steps run along the cells' straight edges (the triangles' along polygons): a
+// faint lattice, plain with the picture's gain turned up four times.
 // Both follow RenderView::starfield_seed, which also orients the nebula's two lobes. Their
 // colours are display values; with HDR they are decoded to linear light as they are drawn
 // (the baked map is baked again in linear light).
@@ -57,7 +58,8 @@ class SkyPass {
                   const RenderSettings& settings, int scene_width, int scene_height, GLuint color_only_fbo = 0);
   // The stars blended over the nebula, in the bound framebuffer; `scene_height` sizes them.
   // Not into the colour-only framebuffer: among the rectangle's tiles they cost llvmpipe its
-  // linear rasteriser there (the nebula and stars 4.9 ms a frame, against 2.6 + 0.7 apart).
+  // linear rasteriser there (nebula, depth clear and stars 4.9 ms a frame that way, 2.6 with
+  // the stars in the scene's framebuffer).
   int draw_stars(const RenderView& view, const ShaderPrograms& programs, const ViewProjection& vp,
                  const RenderSettings& settings, int scene_height);
 
