@@ -246,6 +246,7 @@ void SkyPass::draw_corner_cells(const ShaderPrograms& programs, const glm::mat3&
   glUniform2f(r.loc("u_corner_offset"), 0.5f / float(corners_x_), 0.5f / float(corners_y_));
   glBindTexture(GL_TEXTURE_2D, corner_tex_);
   glDrawArrays(GL_TRIANGLES, 0, 6);
+  glBindTexture(GL_TEXTURE_2D, 0);  // nor bound when the next frame's corners are drawn
 }
 
 }  // namespace arc
