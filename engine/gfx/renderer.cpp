@@ -210,13 +210,13 @@ void Renderer::render(const RenderView& v, int width, int height) {
 
   if (std::find(m.warm_keys.begin(), m.warm_keys.end(), m.warm_key()) == m.warm_keys.end()) m.warm_up_particles(v, vp);
   auto t = std::chrono::steady_clock::now();
-  // An 8-bit BGRA scene takes the nebula into its colour alone (gfx/sky_pass.h); the depth
-  // is cleared after it, with the stars and meshes.
+  // The nebula first (an 8-bit BGRA scene takes it into its colour alone: gfx/sky_pass.h),
+  // then the depth cleared with the stars and meshes, in the opaque target.
+  m.set_origin(m.targets.top_down());
+  m.targets.bind_opaque();
   const GLuint sky_fbo = m.targets.scene_bgra() ? m.targets.scene_color_fbo() : 0;
-  if (sky_fbo) m.set_origin(m.targets.top_down());
-  else m.clear_scene();
   m.stats.draw_calls += m.sky.draw_nebula(v, m.programs, vp, m.rs, scene_w, scene_h, sky_fbo);
-  if (sky_fbo) m.clear_scene();
+  m.clear_scene();
   m.stats.draw_calls += m.sky.draw_stars(v, m.programs, vp, m.rs, scene_h);
   m.stats.draw_calls += m.meshes.draw(v, m.programs.mesh, vp.view_proj, m.rs.reversed_z, m.rs.hdr);
   m.targets.resolve_opaque(m.programs.msaa_resolve);
@@ -256,13 +256,11 @@ void Renderer::Impl::set_origin(bool upper_left) const {
 }
 
 void Renderer::Impl::clear_scene() {
-  set_origin(targets.top_down());
   targets.bind_opaque();
   glDepthMask(GL_TRUE);
   glClearDepth(rs.reversed_z ? 0.0 : 1.0);
-  // Depth only: the sky pass writes every pixel's colour and an alpha of 1 (just before or just
-  // after this), so clearing the colour too would fill the frame twice (on llvmpipe about
-  // 0.3 ms of a 1280x720 frame).
+  // Depth only: the nebula has written every pixel's colour and an alpha of 1, so clearing the
+  // colour too would fill the frame twice (on llvmpipe about 0.3 ms of a 1280x720 frame).
   glClear(GL_DEPTH_BUFFER_BIT);
 }
 

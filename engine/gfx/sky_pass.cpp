@@ -2,6 +2,7 @@
 #include "gfx/sky_pass.h"
 #include "gfx/gl_features.h"
 #include "gfx/render_targets.h"
+#include "gfx/texture_filter.h"
 
 #include <algorithm>
 #include <cmath>
@@ -139,6 +140,11 @@ void SkyPass::bake(const ShaderPrograms& programs, int resolution, bool linear) 
   cube.shader_generation = programs.generation();
 }
 
+SkyPass::SkyGrid SkyPass::sky_grid_of(int n, int scene_w, int scene_h) {
+  return {n, scene_w, scene_h, (scene_w + n - 1) / n, (scene_h + n - 1) / n, 2.0f * float(n) / float(scene_w),
+          2.0f * float(n) / float(scene_h)};
+}
+
 int SkyPass::draw_nebula(const RenderView& v, const ShaderPrograms& programs, const ViewProjection& vp,
                          const RenderSettings& rs, int scene_w, int scene_h, GLuint color_only_fbo) {
   if (star_seed_ != v.starfield_seed) build_stars(v.starfield_seed);
@@ -154,9 +160,10 @@ int SkyPass::draw_nebula(const RenderView& v, const ShaderPrograms& programs, co
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_CUBE_MAP, cube.tex);
   glBindVertexArray(empty_vao_);
+  const SkyGrid g = sky_grid_of(std::max(rs.sky_grid, 1), scene_w, scene_h);
   int draws = 1;
   if (grid && color_only_fbo && !rs.hdr) {
-    draw_corner_cells(programs, vp.camera_basis, tx, ty, rs.sky_grid, cube.size, scene_w, scene_h, color_only_fbo);
+    draw_corner_cells(programs, vp.camera_basis, tx, ty, cube.size, g, color_only_fbo);
     draws = 2;
   } else {
     if (color_only_fbo) {
@@ -170,10 +177,9 @@ int SkyPass::draw_nebula(const RenderView& v, const ShaderPrograms& programs, co
     glUniform1i(p.loc("u_linear"), rs.hdr);
     if (!rs.sky_exact) glUniform1f(p.loc("u_edge_scale"), float(cube.size - 1) / float(cube.size));
     if (grid) {
-      const int cells_x = (scene_w + rs.sky_grid - 1) / rs.sky_grid, cells_y = (scene_h + rs.sky_grid - 1) / rs.sky_grid;
-      glUniform1i(p.loc("u_cells_x"), cells_x);
-      glUniform2f(p.loc("u_cell_ndc"), 2.0f * float(rs.sky_grid) / float(scene_w), 2.0f * float(rs.sky_grid) / float(scene_h));
-      glDrawArrays(GL_TRIANGLES, 0, cells_x * cells_y * 6);
+      glUniform1i(p.loc("u_cells_x"), g.cells_x);
+      glUniform2f(p.loc("u_cell_ndc"), g.cell_ndc_x, g.cell_ndc_y);
+      glDrawArrays(GL_TRIANGLES, 0, g.cells_x * g.cells_y * 6);
     } else {
       glDrawArrays(GL_TRIANGLES, 0, 3);
     }
@@ -205,22 +211,17 @@ int SkyPass::draw_stars(const RenderView& v, const ShaderPrograms& programs, con
 // its own texels (gl_FragCoord), and the rectangle maps NDC to it, so the result is the same
 // under either clip origin. Leaves `color_only_fbo` bound with the scene's viewport.
 void SkyPass::draw_corner_cells(const ShaderPrograms& programs, const glm::mat3& basis, float tan_x, float tan_y,
-                                int grid, int cube_size, int scene_w, int scene_h, GLuint color_only_fbo) {
-  const int cells_x = (scene_w + grid - 1) / grid, cells_y = (scene_h + grid - 1) / grid;
+                                int cube_size, const SkyGrid& g, GLuint color_only_fbo) {
   if (!corner_fbo_) {
     glGenFramebuffers(1, &corner_fbo_);
     glGenTextures(1, &corner_tex_);
   }
-  if (cells_x + 1 != corners_x_ || cells_y + 1 != corners_y_) {
-    corners_x_ = cells_x + 1;
-    corners_y_ = cells_y + 1;
+  if (g.cells_x + 1 != corners_x_ || g.cells_y + 1 != corners_y_) {
+    corners_x_ = g.cells_x + 1;
+    corners_y_ = g.cells_y + 1;
     glBindTexture(GL_TEXTURE_2D, corner_tex_);
     allocate_rgba8(corners_x_, corners_y_);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    set_target_sampling(GL_TEXTURE_2D, GL_LINEAR);
     glBindFramebuffer(GL_FRAMEBUFFER, corner_fbo_);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, corner_tex_, 0);
     if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
@@ -234,15 +235,15 @@ void SkyPass::draw_corner_cells(const ShaderPrograms& programs, const glm::mat3&
   set_uniforms(c, basis, tan_x, tan_y);
   glUniform1i(c.loc("u_sky"), 0);
   glUniform1f(c.loc("u_edge_scale"), float(cube_size - 1) / float(cube_size));
-  glUniform2f(c.loc("u_cell_ndc"), 2.0f * float(grid) / float(scene_w), 2.0f * float(grid) / float(scene_h));
+  glUniform2f(c.loc("u_cell_ndc"), g.cell_ndc_x, g.cell_ndc_y);
   glDrawArrays(GL_TRIANGLES, 0, 3);
 
   glBindFramebuffer(GL_FRAMEBUFFER, color_only_fbo);
-  glViewport(0, 0, scene_w, scene_h);
+  glViewport(0, 0, g.scene_w, g.scene_h);
   const Program& r = programs.sky_cells;
   glUseProgram(r.id);
   glUniform1i(r.loc("u_corners"), 0);
-  glUniform2f(r.loc("u_corner_scale"), float(scene_w) / float(grid * corners_x_), float(scene_h) / float(grid * corners_y_));
+  glUniform2f(r.loc("u_corner_scale"), float(g.scene_w) / float(g.n * corners_x_), float(g.scene_h) / float(g.n * corners_y_));
   glUniform2f(r.loc("u_corner_offset"), 0.5f / float(corners_x_), 0.5f / float(corners_y_));
   glBindTexture(GL_TEXTURE_2D, corner_tex_);
   glDrawArrays(GL_TRIANGLES, 0, 6);

@@ -67,8 +67,14 @@ class SkyPass {
   void build_stars(uint64_t seed);
   void bake(const ShaderPrograms& programs, int resolution, bool linear);
   void set_uniforms(const Program& p, const glm::mat3& basis, float tan_x, float tan_y) const;
+  // The grid of N-pixel cells over a scene, the last row and column cut at its edge.
+  struct SkyGrid {
+    int n, scene_w, scene_h, cells_x, cells_y;
+    float cell_ndc_x, cell_ndc_y;  // a cell's size in normalised device coordinates
+  };
+  static SkyGrid sky_grid_of(int n, int scene_w, int scene_h);
   void draw_corner_cells(const ShaderPrograms& programs, const glm::mat3& basis, float tan_x, float tan_y,
-                         int grid, int cube_size, int scene_w, int scene_h, GLuint color_only_fbo);
+                         int cube_size, const SkyGrid& grid, GLuint color_only_fbo);
 
   GLuint empty_vao_ = 0;  // the full-screen triangle is made in the vertex shader
   GLuint corner_tex_ = 0, corner_fbo_ = 0;  // one BGRA texel per grid corner
