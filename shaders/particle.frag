@@ -2,11 +2,17 @@
 // Controlled-additive blending (Ilmonen 2006 §4): with premultiplied sprite tcola and colour
 // fgc = rgb·alpha the output is (fgc·tcola, alpha·talpha·(1 − burn)) under
 // glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA). Soft edges scale both (§3, Lorach, Krazanowski).
-// The renderer compiles variants (SOFT, CONTRAST, CONTRAST_SQUARE defined 0 or 1) and uses the
+// The renderer compiles variants (SOFT, CONTRAST, CONTRAST_SQUARE, FB_DEPTH defined 0 or 1) and uses the
 // soft one (depth texture read, linearisation) only in frames where a visible particle has soft
 // edges, the contrast one only when one uses the contrast curve, and the squaring one when the
 // contrast power is 2 (the default): a software rasteriser runs every instruction of a shader on
 // every pixel, branches included, and pow() is a log2 and an exp2 polynomial per pixel.
+#if SOFT && FB_DEPTH
+// The opaque depth under this fragment, read from the framebuffer drawn into (the scene's
+// depth, or the half-resolution target's): no copy, and on llvmpipe a load of the depth tile
+// the depth test has in hand instead of a texture fetch.
+#extension GL_ARM_shader_framebuffer_fetch_depth_stencil : require
+#endif
 in vec2 v_uv;
 in float v_depth;
 flat in vec4 v_color;  // (rgb·alpha, alpha·(1 − burn))
@@ -37,9 +43,13 @@ void main() {
   // the draw whatever the branch, so there the saving is the frames where no particle needs soft
   // edges at all (the renderer then picks the hard program and skips the depth copy).
   float d = 0.0;
+#if FB_DEPTH
+  d = gl_LastFragDepthARM;  // the value the copy would hold at this pixel
+#else
   // A nearest-filtered read at the texel centre (gl_FragCoord is one): the same texel as
   // texelFetch, about 8 % cheaper per pixel on llvmpipe, which bounds-checks texelFetch.
   if (v_soft.y != 0.0) d = textureLod(u_scene_depth, gl_FragCoord.xy * u_inv_depth_size, 0.0).r;
+#endif
   // (zb − z − offset)/extent + bias, zb the opaque view depth (huge where there is none).
   // Linear ramp (Ilmonen), average density (quad already at z − E/2), density extent (quad at
   // z − E, range scaled by 1/texture alpha and mapped from [−1, 1]).

@@ -20,4 +20,12 @@ inline bool has_copy_image() {
   return yes;
 }
 
+// gl_LastFragDepthARM: a fragment shader reads the depth stored at its own pixel of the
+// framebuffer it draws into. Mesa's llvmpipe offers it on desktop GL; soft particles then read
+// the opaque depth without a copy (renderer.h, RenderSettings::depth_fetch).
+inline bool has_depth_fetch() {
+  static const bool yes = epoxy_has_gl_extension("GL_ARM_shader_framebuffer_fetch_depth_stencil");
+  return yes;
+}
+
 }  // namespace arc

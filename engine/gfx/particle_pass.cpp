@@ -16,12 +16,12 @@ namespace {
 
 // Contrast power 2 (the default) squares instead of calling pow(); power 1 is the identity
 // curve, the plain soft program.
-const Program& choose_program(const ShaderPrograms& programs, const ParticleRun& run, float contrast_power) {
+const Program& choose_program(const ShaderPrograms& programs, const ParticleRun& run, float contrast_power, bool fetch) {
   if (!run.soft) return programs.particle_hard;
-  if (!run.contrast) return programs.particle_soft;
-  if (contrast_power == 2.0f) return programs.particle_square;
-  if (contrast_power == 1.0f) return programs.particle_soft;
-  return programs.particle_contrast;
+  const Program& soft = fetch ? programs.particle_soft_fetch : programs.particle_soft;
+  if (!run.contrast || contrast_power == 1.0f) return soft;
+  if (contrast_power == 2.0f) return fetch ? programs.particle_square_fetch : programs.particle_square;
+  return fetch ? programs.particle_contrast_fetch : programs.particle_contrast;
 }
 
 // The frame's uniforms of one particle program (each program the runs use, once a frame).
@@ -204,7 +204,7 @@ int ParticlePass::draw(const ParticleBatch& batch, const ShaderPrograms& program
   GLuint current = 0;
   int draws = 0;
   for (const ParticleRun& run : batch.runs) {
-    const Program& particle = choose_program(programs, run, rs.contrast_power);
+    const Program& particle = choose_program(programs, run, rs.contrast_power, frame.depth_fetch);
     if (particle.id != current) {
       glUseProgram(particle.id);
       current = particle.id;

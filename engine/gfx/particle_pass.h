@@ -38,6 +38,9 @@ struct ParticleFrame {
   int scene_width = 1, scene_height = 1;  // of the target drawn into (the depth copy is read in [0, 1])
   // Drawing into the half-resolution target (particle_target.h): alpha keeps the transmittance.
   bool transmittance_alpha = false;
+  // The soft programs read the depth of the framebuffer drawn into instead of depth_copy
+  // (gl_features.h, has_depth_fetch).
+  bool depth_fetch = false;
 };
 
 class ParticlePass {

@@ -36,6 +36,11 @@ struct RenderSettings {
   // Particle quads cut to where their sprite can be non-zero (sprite_trim.h). The picture is
   // the same either way; off only to measure what it saves.
   bool sprite_trim = true;
+  // Soft particles read the opaque depth from the framebuffer they draw into where the driver
+  // offers it (GL_ARM_shader_framebuffer_fetch_depth_stencil; llvmpipe does) instead of from a
+  // copy: the same depth values and picture, no copy, and on llvmpipe a cheaper read. Off only
+  // to measure what it saves, or where a driver gets it wrong.
+  bool depth_fetch = true;
   int max_particle_draws = 24;  // runs the particle batch may be split into (particle_runs.h); ≥ 1
   // Particles drawn at half resolution, then put over the scene (particle_target.h): Full never,
   // Half always, Auto when a frame's particles blend more than kHalfResAbove screen layers

@@ -99,6 +99,9 @@ struct Renderer::Impl {
   // direction, sprite filter and contrast program, packed as warm_key() makes them.
   std::vector<uint64_t> warm_keys;
   uint64_t warm_key() const;
+  // Soft particles read the depth of the framebuffer they draw into (RenderSettings::depth_fetch).
+  bool depth_fetch_usable() const { return rs.depth_fetch && has_depth_fetch(); }
+  ParticleBatchOptions batch_options() const;
   BloomPass bloom;
   PostPass post;
   HudPass hud;
@@ -264,11 +267,9 @@ void Renderer::Impl::clear_scene() {
   glClear(GL_DEPTH_BUFFER_BIT);
 }
 
-// The CPU batch (no GL), then upload, the depth copy when a drawn particle is soft, and one
-// draw; particle_prep_ms covers the batch, particle_cpu_ms all of it.
-void Renderer::Impl::draw_particles(const RenderView& v, const ViewProjection& vp) {
-  const auto t0 = std::chrono::steady_clock::now();
-  stats.particles_in = int(v.particles.size());
+// What the particle batch is prepared with this frame: the settings, the draw limit, and the
+// target's size and level of detail.
+ParticleBatchOptions Renderer::Impl::batch_options() const {
   ParticleBatchOptions options;
   options.soft_override = rs.soft_override;
   options.sorting = rs.sorting;
@@ -286,7 +287,16 @@ void Renderer::Impl::draw_particles(const RenderView& v, const ViewProjection& v
   // Layers are shares of the screen whichever target the particles blend into.
   options.width = targets.scene_width();
   options.height = targets.scene_height();
-  batch.prepare(v, vp, meshes.cover_boxes(), options);
+  return options;
+}
+
+// The CPU batch (no GL), then upload, the depth copy when a drawn particle is soft and the
+// depth cannot be fetched, and the runs' draws; particle_prep_ms covers the batch,
+// particle_cpu_ms all of it.
+void Renderer::Impl::draw_particles(const RenderView& v, const ViewProjection& vp) {
+  const auto t0 = std::chrono::steady_clock::now();
+  stats.particles_in = int(v.particles.size());
+  batch.prepare(v, vp, meshes.cover_boxes(), batch_options());
   stats.particles_drawn = batch.visible;
   stats.overdraw_estimated_layers = batch.overdraw.estimated_layers;
   stats.overdraw_budgeted_layers = batch.overdraw.budgeted_layers;
@@ -298,6 +308,7 @@ void Renderer::Impl::draw_particles(const RenderView& v, const ViewProjection& v
   stats.sorted = batch.sorted;
   stats.soft_shaded = batch.soft_shaded;
   stats.particle_prep_ms = ms_since(t0);
+  using Res = RenderSettings::ParticleResolution;
   if (rs.particle_resolution != Res::Auto) half_res = rs.particle_resolution == Res::Half;
   else if (batch.overdraw.budgeted_layers > RenderSettings::kHalfResAbove) half_res = true;
   else if (batch.overdraw.budgeted_layers < RenderSettings::kHalfResBelow) half_res = false;
@@ -308,11 +319,15 @@ void Renderer::Impl::draw_particles(const RenderView& v, const ViewProjection& v
   }
   particles.upload(batch.particles);
   timers.begin_particle_pass();
-  // Soft edges read this frame's opaque depth. Particles drawn at full resolution test against
-  // the scene's depth buffer, so they read a copy; at half resolution they test against the
-  // half target's own depth and read the scene's depth texture as it is.
+  // Soft edges read this frame's opaque depth. Where the driver lets a fragment read the depth
+  // of the framebuffer it draws into, they read that: the scene's depth at full resolution, the
+  // half target's (taken from the scene's) at half. Otherwise particles drawn at full
+  // resolution test against the scene's depth buffer, so they read a copy; at half resolution
+  // they test against the half target's own depth and read the scene's depth texture as it is.
   auto t = std::chrono::steady_clock::now();
-  if (batch.any_soft && !half_res) {
+  const bool fetch = depth_fetch_usable();
+  stats.depth_fetched = batch.any_soft && fetch;
+  if (batch.any_soft && !half_res && !fetch) {
     batch.depth_reads.rects(depth_rects);
     if (targets.top_down()) flip_rows(depth_rects, targets.scene_height());
     targets.copy_depth(depth_rects);
@@ -321,6 +336,7 @@ void Renderer::Impl::draw_particles(const RenderView& v, const ViewProjection& v
   ParticleFrame frame{vp, v.camera.fov_y_radians, float(v.camera.near_plane),
                       half_res ? targets.scene_depth() : targets.depth_copy(), targets.scene_width(),
                       targets.scene_height()};
+  frame.depth_fetch = fetch;
   if (half_res) begin_half_resolution(frame);
   if (half_res || stats.depth_copied) stats.particle_target_cpu_ms = ms_since(t);
   stats.particle_target_pixels = double(frame.scene_width) * double(frame.scene_height);
@@ -357,8 +373,8 @@ void Renderer::Impl::begin_half_resolution(ParticleFrame& frame) {
 
 uint64_t Renderer::Impl::warm_key() const {
   const uint64_t contrast = rs.contrast_power == 2.0f ? 0 : rs.contrast_power == 1.0f ? 1 : 2;
-  return uint64_t(targets.scene_internal_format()) << 16 | uint64_t(rs.reversed_z) << 8 | uint64_t(rs.filter) << 4 |
-         uint64_t(rs.hdr) << 2 | contrast;
+  return uint64_t(targets.scene_internal_format()) << 16 | uint64_t(depth_fetch_usable()) << 12 |
+         uint64_t(rs.reversed_z) << 8 | uint64_t(rs.filter) << 4 | uint64_t(rs.hdr) << 2 | contrast;
 }
 
 // A driver compiles a program's variant for each blend, depth and framebuffer state the first
@@ -387,6 +403,7 @@ void Renderer::Impl::warm_up_particles(const RenderView& v, const ViewProjection
   targets.copy_depth();
   ParticleFrame frame{vp, v.camera.fov_y_radians, float(v.camera.near_plane), targets.depth_copy(),
                       targets.scene_width(), targets.scene_height()};
+  frame.depth_fetch = depth_fetch_usable();
   particles.draw(warm, programs, rs, frame);
   frame.depth_copy = targets.scene_depth();
   begin_half_resolution(frame);

@@ -60,6 +60,8 @@ struct FrameStats {
   int sorted = 0;            // particles put in back-to-front order
   bool depth_copied = false; // the soft-edge depth copy ran this frame (full resolution only: at half
                              // resolution soft edges read the scene depth itself)
+  bool depth_fetched = false; // soft edges read the depth from the framebuffer instead (RenderSettings::depth_fetch)
+  bool reads_depth() const { return depth_copied || depth_fetched; }  // soft edges read the opaque depth
   int soft_shaded = 0;       // particles that read the depth copy: soft edges on and an opaque
                              // mesh within their reach (the others' soft factor is exactly 1)
   int draw_calls = 0;

@@ -1,6 +1,8 @@
 // gfx/shader_programs.cpp — compiling and linking the shader folder, all or nothing.
 #include "gfx/shader_programs.h"
 
+#include "gfx/gl_features.h"
+
 #include <algorithm>
 #include <fstream>
 #include <sstream>
@@ -90,7 +92,7 @@ ShaderPrograms::ShaderPrograms(std::string shader_dir) : dir_(std::move(shader_d
 
 ShaderPrograms::~ShaderPrograms() {
   for (Program* p : {&sky, &sky_exact, &sky_grid, &stars, &mesh, &hud, &particle_hard, &particle_soft, &particle_contrast,
-                     &particle_square, &bloom_prefilter, &bloom_down_karis, &bloom_down, &bloom_up, &tonemap, &tonemap_bloom, &fxaa, &msaa_resolve, &particle_composite})
+                     &particle_square, &particle_soft_fetch, &particle_contrast_fetch, &particle_square_fetch, &bloom_prefilter, &bloom_down_karis, &bloom_down, &bloom_up, &tonemap, &tonemap_bloom, &fxaa, &msaa_resolve, &particle_composite})
     glDeleteProgram(p->id);
 }
 
@@ -111,19 +113,19 @@ void ShaderPrograms::build_all() {
     const char* fs;
     const char* defines;
   };
-  const Spec specs[] = {{&sky, "sky.vert", "sky.frag", ""},
+  std::vector<Spec> specs = {{&sky, "sky.vert", "sky.frag", ""},
                         {&sky_exact, "sky.vert", "sky_exact.frag", ""},
                         {&sky_grid, "sky_grid.vert", "sky_grid.frag", ""},
                         {&sky_corners, "post.vert", "sky_corners.frag", ""},
                         {&sky_cells, "sky_cells.vert", "sky_cells.frag", ""},
                         {&stars, "stars.vert", "stars.frag", ""},
                         {&mesh, "mesh.vert", "mesh.frag", ""},
-                        {&particle_hard, "particle.vert", "particle.frag", "#define SOFT 0\n#define CONTRAST 0\n"},
-                        {&particle_soft, "particle.vert", "particle.frag", "#define SOFT 1\n#define CONTRAST 0\n"},
+                        {&particle_hard, "particle.vert", "particle.frag", "#define SOFT 0\n#define CONTRAST 0\n#define FB_DEPTH 0\n"},
+                        {&particle_soft, "particle.vert", "particle.frag", "#define SOFT 1\n#define CONTRAST 0\n#define FB_DEPTH 0\n"},
                         {&particle_contrast, "particle.vert", "particle.frag",
-                         "#define SOFT 1\n#define CONTRAST 1\n#define CONTRAST_SQUARE 0\n"},
+                         "#define SOFT 1\n#define CONTRAST 1\n#define CONTRAST_SQUARE 0\n#define FB_DEPTH 0\n"},
                         {&particle_square, "particle.vert", "particle.frag",
-                         "#define SOFT 1\n#define CONTRAST 1\n#define CONTRAST_SQUARE 1\n"},
+                         "#define SOFT 1\n#define CONTRAST 1\n#define CONTRAST_SQUARE 1\n#define FB_DEPTH 0\n"},
                         {&hud, "hud.vert", "hud.frag", ""},
                         {&bloom_prefilter, "post.vert", "bloom_down.frag", "#define PREFILTER 1\n#define KARIS 0\n"},
                         {&bloom_down_karis, "post.vert", "bloom_down.frag", "#define PREFILTER 0\n#define KARIS 1\n"},
@@ -134,6 +136,13 @@ void ShaderPrograms::build_all() {
                         {&fxaa, "post.vert", "fxaa.frag", ""},
                         {&msaa_resolve, "post.vert", "msaa_resolve.frag", ""},
                         {&particle_composite, "particle_composite.vert", "particle_composite.frag", ""}};
+  if (has_depth_fetch()) {
+    specs.push_back({&particle_soft_fetch, "particle.vert", "particle.frag", "#define SOFT 1\n#define CONTRAST 0\n#define FB_DEPTH 1\n"});
+    specs.push_back({&particle_contrast_fetch, "particle.vert", "particle.frag",
+                     "#define SOFT 1\n#define CONTRAST 1\n#define CONTRAST_SQUARE 0\n#define FB_DEPTH 1\n"});
+    specs.push_back({&particle_square_fetch, "particle.vert", "particle.frag",
+                     "#define SOFT 1\n#define CONTRAST 1\n#define CONTRAST_SQUARE 1\n#define FB_DEPTH 1\n"});
+  }
   std::vector<GLuint> built;
   for (auto& s : specs) built.push_back(build_program(dir_, s.vs, s.fs, s.defines, err));
   bool all = std::all_of(built.begin(), built.end(), [](GLuint id) { return id != 0; });

@@ -38,6 +38,9 @@ class ShaderPrograms {
   // particle.vert + particle.frag with SOFT / CONTRAST / CONTRAST_SQUARE defined: hard edges,
   // linear soft edges, the general contrast curve, and the curve at power 2 (a square).
   Program particle_hard, particle_soft, particle_contrast, particle_square;
+  // The three soft ones with FB_DEPTH: the depth read from the framebuffer (gl_features.h,
+  // has_depth_fetch); id 0 where the context cannot.
+  Program particle_soft_fetch, particle_contrast_fetch, particle_square_fetch;
   // Post passes over post.vert's full-screen triangle: the bloom chain's first step (threshold),
   // its first 13-tap step (Karis average), its other steps down and up, the tone map without
   // and with bloom, FXAA.

@@ -23,7 +23,9 @@
 // frame of each, ratios the median over rounds of the two frames' ratio within a round. The
 // soft-edge ratios come from rounds of their own, each method's frames side by side with soft
 // edges off (off, method, method, off, mirrored every other round), and a control of off
-// against itself the same way (soft_edge_cost_ratio_control, 1 when the timing is fair).
+// against itself the same way (soft_edge_cost_ratio_control, 1 when the timing is fair). Where
+// soft particles read the depth from the framebuffer (RenderSettings::depth_fetch), each method
+// is also timed so with the depth read from a copy (soft_edge_cost_ratio_copy, the worst).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -37,6 +39,7 @@
 #include "bench_registry.h"
 #include "bench_scenes.h"
 #include "core/rng.h"
+#include "gfx/gl_features.h"
 #include "gfx/renderer.h"
 #include "platform/platform.h"
 #include "scene_models.h"
@@ -113,6 +116,7 @@ struct Figures {
   double prep_ms = 0;                             // FrameStats::particle_prep_ms, fastest
   double worst_soft_ratio = 0, burn_ratio = 0, sky_ratio = 0;  // medians of same-round ratios
   double soft_control_ratio = 0;  // soft edges off against itself, side by side (worst_soft_ratio's method)
+  double worst_soft_copy_ratio = 0;  // the same as worst_soft_ratio with the depth read from a copy (0: not measured)
   double worst_soft_gpu_ratio = 0;  // the worst method's particle pass ÷ soft edges off, GL_TIME_ELAPSED (0: untimed)
   long long fragments = 0;  // blended by the particle draw, soft edges per effect
 };
@@ -168,8 +172,20 @@ Figures measure(Renderer& r, const RenderView& view, const BenchEnv& env) {
   const size_t kAlpha = add("burn forced 0", &alpha_only, with_soft(0));
   const size_t kSoft = configs.size();  // linear, contrast, average density, density extent
   for (int m = 1; m < 5; ++m) add(names[m], &view, with_soft(m));
-  // The configuration of soft-edge method names[m] (0: off).
-  auto soft_config = [&](int m) { return m == 0 ? size_t(0) : kSoft + size_t(m - 1); };
+  // Where soft particles read the depth from the framebuffer (RenderSettings::depth_fetch), each
+  // method again with the depth read from a copy: what the fetch saves, in the same rounds.
+  const bool fetch = has_depth_fetch();
+  const size_t kCopy = configs.size();
+  const int methods = fetch ? 9 : 5;
+  for (int m = 1; fetch && m < 5; ++m) {
+    RenderSettings s = with_soft(m);
+    s.depth_fetch = false;
+    add(names[m], &view, s);
+  }
+  // The configuration of soft-edge method names[m] (0: off; 5..8: methods 1..4 with the copy).
+  auto soft_config = [&](int m) {
+    return m == 0 ? size_t(0) : m < 5 ? kSoft + size_t(m - 1) : kCopy + size_t(m - 5);
+  };
   const size_t kEmpty = add("no particles", &no_particles, base);
   RenderSettings exact_sky = base;
   exact_sky.sky_exact = true;
@@ -209,7 +225,7 @@ Figures measure(Renderer& r, const RenderView& view, const BenchEnv& env) {
   // out 0.97–1.08 apart by their places in the list (the gallery, its wall and battle, three
   // runs), as much as the 10 % the ratio is meant to tell. Method 0 is the control: off against
   // itself, reported as soft_edge_cost_ratio_control.
-  std::vector<double> side_by_side[5];
+  std::vector<double> side_by_side[9];
   auto frame_ms = [&](size_t k) {
     r.set_render_settings(configs[k].settings);
     const double t0 = bench::now_seconds();
@@ -218,7 +234,7 @@ Figures measure(Renderer& r, const RenderView& view, const BenchEnv& env) {
     return (bench::now_seconds() - t0) * 1000.0;
   };
   for (int round = 0; round < rounds; ++round)
-    for (int m = 0; m < 5; ++m) {
+    for (int m = 0; m < methods; ++m) {
       const size_t off = 0, soft = soft_config(m);
       const bool soft_first = (round + m) % 2 == 1;
       const double t0 = frame_ms(soft_first ? soft : off), t1 = frame_ms(soft_first ? off : soft);
@@ -232,17 +248,19 @@ Figures measure(Renderer& r, const RenderView& view, const BenchEnv& env) {
   };
 
   Figures f;
-  for (int m = 0; m < 5; ++m) {
+  for (int m = 0; m < methods; ++m) {
     const size_t i = soft_config(m);
     r.set_render_settings(configs[i].settings);
     r.render(view, kWidth, kHeight);
     const double ratio = bench::median(side_by_side[m]);
-    std::printf("  soft %-16s %8.2f ms/frame, x%.3f, %d of %d particles read the depth copy; CPU: preparation %.2f ms,"
+    const FrameStats& st = r.last_stats();
+    std::printf("  soft %-16s %8.2f ms/frame, x%.3f, %d of %d particles read the depth %s; CPU: preparation %.2f ms,"
                 " depth copy %.2f ms\n",
-                names[m], configs[i].best_ms, ratio, r.last_stats().soft_shaded, r.last_stats().particles_drawn,
-                configs[i].prep_ms, configs[i].target_ms);
+                configs[i].name, configs[i].best_ms, ratio, st.soft_shaded, st.particles_drawn,
+                st.depth_fetched ? "from the framebuffer" : "from a copy", configs[i].prep_ms, configs[i].target_ms);
     if (m == 0) f.soft_control_ratio = ratio;
-    else f.worst_soft_ratio = std::max(f.worst_soft_ratio, ratio);
+    else if (m < 5) f.worst_soft_ratio = std::max(f.worst_soft_ratio, ratio);
+    else f.worst_soft_copy_ratio = std::max(f.worst_soft_copy_ratio, ratio);
   }
   f.burn_ratio = paired(0, kAlpha);
   f.sky_ratio = paired(kExactSky, kEmpty);
@@ -321,6 +339,7 @@ void report(const Figures& f, const std::string& suffix) {
   double big_s = std::max(1e-9, (f.big_ms - f.empty_ms) * 1e-3);
   bench::report_metric("soft_edge_cost_ratio" + suffix, f.worst_soft_ratio);
   bench::report_metric("soft_edge_cost_ratio_control" + suffix, f.soft_control_ratio);
+  if (f.worst_soft_copy_ratio > 0) bench::report_metric("soft_edge_cost_ratio_copy" + suffix, f.worst_soft_copy_ratio);
   bench::report_metric("burn_blend_cost_ratio" + suffix, f.burn_ratio);
   bench::report_metric("particle_fill_efficiency" + suffix, double(f.fragments) / particle_s / raw_px_per_s);
   bench::report_metric("particle_shader_fill_ratio" + suffix, quads_px / big_s / raw_px_per_s);

@@ -7,10 +7,11 @@
 //   particles evaluated / skipped with their clusters; drawn / culled off screen (quad wholly
 //             outside the frustum's sides, never uploaded)
 //   soft      particles that read the depth copy / drawn ones that skipped that read
-//   depth     whether the frame copied the opaque depth (only when a soft particle needs it)
+//   depth     how the frame's soft particles read the opaque depth (only when one needs it): from
+//             a copy, or from the framebuffer (RenderSettings::depth_fetch), or not at all
 // Metrics: scene_work_skipped_particle_share (particle evaluations skipped ÷ all live),
 // scene_work_offscreen_share (collected particles culled off screen), scene_work_depth_read_
-// skipped_share (drawn particles that did not read depth), scene_work_frames_without_depth_copy.
+// skipped_share (drawn particles that did not read depth), scene_work_frames_without_depth_read.
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -34,15 +35,16 @@ constexpr int kWidth = 1280, kHeight = 720;
 
 struct Totals {
   long long evaluated = 0, skipped = 0, collected = 0, offscreen = 0, drawn = 0, soft = 0;
-  int frames = 0, no_copy = 0, caught_up = 0;
+  int frames = 0, no_read = 0, caught_up = 0;
 };
 
 void print_frame(uint64_t tick, const ParticleStats& ps, uint32_t caught_up, const FrameStats& fs, Totals& t) {
   std::printf("  %4llu  clusters %3u animated %3u culled %2u caught up | particles %6u evaluated %6u skipped;"
-              " %6d drawn %6d off screen | soft %6d read depth %6d skipped it | depth copy %s\n",
+              " %6d drawn %6d off screen | soft %6d read depth %6d skipped it | depth read %s\n",
               static_cast<unsigned long long>(tick), ps.live_clusters - ps.skipped_clusters, ps.skipped_clusters,
               caught_up, ps.animated_particles, ps.skipped_particles, fs.particles_drawn,
-              fs.culled_offscreen, fs.soft_shaded, fs.particles_drawn - fs.soft_shaded, fs.depth_copied ? "yes" : "no");
+              fs.culled_offscreen, fs.soft_shaded, fs.particles_drawn - fs.soft_shaded,
+              fs.depth_copied ? "from a copy" : fs.depth_fetched ? "from the framebuffer" : "none");
   t.evaluated += ps.animated_particles;
   t.skipped += ps.skipped_particles;
   t.collected += fs.particles_in;
@@ -50,7 +52,7 @@ void print_frame(uint64_t tick, const ParticleStats& ps, uint32_t caught_up, con
   t.drawn += fs.particles_drawn;
   t.soft += fs.soft_shaded;
   t.caught_up += int(caught_up);
-  t.no_copy += fs.depth_copied ? 0 : 1;
+  t.no_read += fs.reads_depth() ? 0 : 1;
   ++t.frames;
 }
 
@@ -84,13 +86,13 @@ ARCFIRE_SCENE(scene_work) {
     caught_up = 0;
   }
   std::printf("  %d frames: %.1f %% of particle evaluations skipped, %d clusters caught up, %.1f %% of collected particles"
-              " culled off screen, %.1f %% of drawn particles skipped the depth read, %d frames without a depth copy\n",
+              " culled off screen, %.1f %% of drawn particles skipped the depth read, %d frames without a depth read\n",
               t.frames, 100 * share(t.skipped, t.skipped + t.evaluated), t.caught_up, 100 * share(t.offscreen, t.collected),
-              100 * share(t.drawn - t.soft, t.drawn), t.no_copy);
+              100 * share(t.drawn - t.soft, t.drawn), t.no_read);
   bench::report_metric("scene_work_skipped_particle_share", share(t.skipped, t.skipped + t.evaluated));
   bench::report_metric("scene_work_offscreen_share", share(t.offscreen, t.collected));
   bench::report_metric("scene_work_depth_read_skipped_share", share(t.drawn - t.soft, t.drawn));
-  bench::report_metric("scene_work_frames_without_depth_copy", t.no_copy);
+  bench::report_metric("scene_work_frames_without_depth_read", t.no_read);
   bench::report_metric("scene_work_clusters_caught_up", t.caught_up);
 }
 

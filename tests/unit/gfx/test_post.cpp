@@ -233,7 +233,7 @@ TEST(Antialias, MsaaKeepsSoftEdges) {
     v.particles = {particle({0, 0, -12}, 3.0f, glm::vec3(1.0f, 0.8f, 0.5f), 0.9f, 0.0f, soft)};
     r->set_render_settings(hdr_settings(0.0f, RenderSettings::Antialias::Msaa4));
     r->render(v, 200, 100);
-    EXPECT_EQ(r->last_stats().depth_copied, soft != SoftEdge::Off);
+    EXPECT_EQ(r->last_stats().reads_depth(), soft != SoftEdge::Off);
     Image img = r->read_pixels();
     float worst = 0;
     for (int x = 61; x < 138; ++x)
