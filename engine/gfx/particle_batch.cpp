@@ -106,8 +106,8 @@ void ParticleBatch::prepare(const RenderView& v, const ViewProjection& vp, const
   }
   // Runs by program, from the particles that are drawn; the depth copy only for a soft run.
   depth_reads.reset(options.width, options.height);
-  if (mixed_programs(particles)) mark_depth_reads(options.width, options.height);
-  else if (needs_depth(particles[0])) depth_reads.add_whole_screen();
+  if (options.depth_tiles && mixed_programs(particles)) mark_depth_reads(options.width, options.height);
+  else if (options.depth_tiles && needs_depth(particles[0])) depth_reads.add_whole_screen();
   group_runs(particles, areas, boxes_, options.max_runs, runs);
   for (const ParticleInstance& q : particles) soft_shaded += needs_depth(q);
   for (const ParticleRun& r : runs) {

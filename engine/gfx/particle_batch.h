@@ -38,6 +38,7 @@ struct ParticleBatchOptions {
   float size_clamp = 0.5f;   // RenderSettings::size_clamp, as particle.vert applies it
   int width = 1280, height = 720;  // scene pixels, for the blended-area estimate
   int max_runs = 24;         // draws the batch may be split into (particle_runs.h)
+  bool depth_tiles = true;   // mark depth_reads (the copy's tiles); not needed when the depth is fetched
   const SpriteTrim* trim = nullptr;  // the sprites' trim boxes, for the area estimate
   TrimMode trim_mode = TrimMode::Off;
   int trim_height = 720;  // pixel rows of the target drawn into: the half-resolution one's when it is likely
@@ -50,7 +51,7 @@ struct ParticleBatch {
   std::vector<float> areas;
   std::vector<ParticleRun> runs;  // spans of `particles`, one draw each
   ParticleCoverage coverage;      // the scene tiles the particles can touch (particle_coverage.h)
-  ParticleCoverage depth_reads;   // the scene tiles where a soft particle can read the depth copy
+  ParticleCoverage depth_reads;   // the scene tiles where a soft particle can read the depth copy (with depth_tiles)
   OverdrawStats overdraw;
   int visible = 0;           // kept before the draw limit (FrameStats::particles_drawn)
   int culled_offscreen = 0;  // quad wholly outside a side of the frustum

@@ -277,6 +277,7 @@ ParticleBatchOptions Renderer::Impl::batch_options() const {
   options.overdraw = {rs.overdraw_budget, rs.overdraw_near};
   options.size_clamp = rs.size_clamp;
   options.max_runs = std::max(1, rs.max_particle_draws);
+  options.depth_tiles = !depth_fetch_usable();
   options.trim = &particles.trim();
   options.trim_mode = trim_mode(rs);
   // The sampler's level of detail follows the target: the half-resolution one when it is set
