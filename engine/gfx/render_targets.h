@@ -6,7 +6,8 @@
 // into a multisampled twin instead, and resolve_opaque() blits its colour and depth down into
 // the scene buffer, so the particles and the depth copy see single-sample buffers. The depth
 // copy is a depth texture the particle pass samples for soft edges, filled from THIS frame's
-// depth by copy_depth(). resolve() scales the scene colour into the window (default
+// depth by copy_depth(), where the driver does not let the soft particles read the scene's
+// depth at their own pixel (gl_features.h, has_depth_fetch). resolve() scales the scene colour into the window (default
 // framebuffer) or, offscreen, into an RGBA8 target of the window size that read_pixels()
 // returns; with HDR or FXAA the post passes write there instead (bind_output()). The HUD then
 // draws there at full size.

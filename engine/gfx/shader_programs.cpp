@@ -1,13 +1,13 @@
 // gfx/shader_programs.cpp — compiling and linking the shader folder, all or nothing.
 #include "gfx/shader_programs.h"
 
-#include "gfx/gl_features.h"
-
 #include <algorithm>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
+
+#include "gfx/gl_features.h"
 
 namespace arc {
 namespace {
@@ -91,8 +91,10 @@ ShaderPrograms::ShaderPrograms(std::string shader_dir) : dir_(std::move(shader_d
 }
 
 ShaderPrograms::~ShaderPrograms() {
-  for (Program* p : {&sky, &sky_exact, &sky_grid, &stars, &mesh, &hud, &particle_hard, &particle_soft, &particle_contrast,
-                     &particle_square, &particle_soft_fetch, &particle_contrast_fetch, &particle_square_fetch, &bloom_prefilter, &bloom_down_karis, &bloom_down, &bloom_up, &tonemap, &tonemap_bloom, &fxaa, &msaa_resolve, &particle_composite})
+  for (Program* p : {&sky, &sky_exact, &sky_grid, &sky_corners, &sky_cells, &stars, &mesh, &hud, &particle_hard,
+                     &particle_soft, &particle_contrast, &particle_square, &particle_soft_fetch, &particle_contrast_fetch,
+                     &particle_square_fetch, &bloom_prefilter, &bloom_down_karis, &bloom_down, &bloom_up, &tonemap,
+                     &tonemap_bloom, &fxaa, &msaa_resolve, &particle_composite})
     glDeleteProgram(p->id);
 }
 
