@@ -3,12 +3,15 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "bench_registry.h"
+#include "core/error.h"
 
 namespace arc::bench {
 namespace {
@@ -53,7 +56,8 @@ SceneRegistrar::SceneRegistrar(const char* name, std::function<void()> fn, bool 
 // arcfire-bench [--scenes-only] [--scene NAME] [google benchmark flags]
 // No arguments: every micro-benchmark, then every headline scene, then the metric lines.
 // Scenes registered on request (the soak) run only when --scene names them. Exit 1 when a
-// scene reported a failure.
+// scene reported a failure; exit 2, with one line, for a scene name that does not exist, an
+// ARCFIRE_GFX_DUMP folder that does not, or a scene's input it cannot use.
 int main(int argc, char** argv) {
   bool scenes_only = false;
   bool filtered = false;  // --benchmark_filter: only those micro-benchmarks, no scenes
@@ -70,13 +74,35 @@ int main(int argc, char** argv) {
   int n = int(rest.size());
   benchmark::Initialize(&n, rest.data());
   if (benchmark::ReportUnrecognizedArguments(n, rest.data())) return 2;
+  if (!only_scene.empty()) {
+    std::string names;
+    bool known = false;
+    for (auto& scene : arc::bench::scenes()) {
+      known = known || scene.name == only_scene;
+      names += (names.empty() ? "" : ", ") + scene.name;
+    }
+    if (!known) {
+      std::fprintf(stderr, "arcfire-bench: --scene '%s' is not a scene; use one of %s\n", only_scene.c_str(), names.c_str());
+      return 2;
+    }
+  }
+  // Scenes save pictures there at their end: a folder that is not there would lose a run's work.
+  if (const char* dump = std::getenv("ARCFIRE_GFX_DUMP"); dump && !std::filesystem::is_directory(dump)) {
+    std::fprintf(stderr, "arcfire-bench: ARCFIRE_GFX_DUMP='%s' is not a folder; name one that exists\n", dump);
+    return 2;
+  }
   if (!scenes_only && only_scene.empty()) benchmark::RunSpecifiedBenchmarks();
   for (auto& [name, fn, on_request] : arc::bench::scenes()) {
     if (filtered && only_scene.empty()) break;
     if (only_scene.empty() ? on_request : name != only_scene) continue;
     std::printf("scene %s\n", name.c_str());
     std::fflush(stdout);
-    fn();
+    try {
+      fn();
+    } catch (const arc::InputError& e) {
+      std::fprintf(stderr, "arcfire-bench: scene %s: %s\n", name.c_str(), e.what());
+      return 2;
+    }
   }
   for (auto& [name, value] : arc::bench::metrics()) std::printf("metric %s %.6g\n", name.c_str(), value);
   benchmark::Shutdown();

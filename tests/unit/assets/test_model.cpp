@@ -83,7 +83,9 @@ TEST_P(GeneratedShip, HullHasPlatingAndRunningLights) {
   EXPECT_GT(light, texels / 2) << "plates";
   EXPECT_LT(hull.roughness, 0.8f);
   for (const auto& p : m.primitives)
-    if (p.material == 0) EXPECT_EQ(p.uvs.size(), p.positions.size());
+    if (p.material == 0) {
+      EXPECT_EQ(p.uvs.size(), p.positions.size());
+    }
   auto side_of = [&](auto is_colour) {
     double x = 0.0;
     size_t n = 0;

@@ -72,7 +72,9 @@ TEST(LevelFiles, RequiredLevelsHaveTheirShapes) {
     EXPECT_TRUE(labels.insert(e.label).second) << "label used twice: " << e.label;
   }
   for (const auto& e : std::filesystem::directory_iterator(kRoot + "/assets/effects"))
-    if (e.path().extension() == ".json") EXPECT_TRUE(effects.count(e.path().stem().string())) << e.path();
+    if (e.path().extension() == ".json") {
+      EXPECT_TRUE(effects.count(e.path().stem().string())) << e.path();
+    }
   bool wall = false;
   for (const PropDef& p : gallery.props) wall = wall || p.model == "assets/models/wall.glb";
   EXPECT_TRUE(wall);

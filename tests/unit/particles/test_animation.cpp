@@ -60,7 +60,9 @@ TEST(Drag, StepFormulaNeverFlipsOrDivergesAndMatchesClosedForm) {
         x = x + ak * h - (v - ak) * std::expm1(-k * h) / k;
         v = ak + (v - ak) * std::exp(-k * h);
       }
-      if (k > 0) EXPECT_GE(v, std::min(10.0, a / k) - 1e-9);
+      if (k > 0) {
+        EXPECT_GE(v, std::min(10.0, a / k) - 1e-9);
+      }
     }
     const double t = 120 * h;
     EXPECT_NEAR(x, 10.0 * drag_g(k, t) + a * drag_f(k, t), 1e-9 * (1 + std::fabs(x))) << kdt;
