@@ -113,7 +113,7 @@ void ShaderPrograms::build_all() {
     Program* p;
     const char* vs;
     const char* fs;
-    const char* defines;
+    std::string defines;
   };
   std::vector<Spec> specs = {
       {&sky, "sky.vert", "sky.frag", ""},
@@ -124,11 +124,6 @@ void ShaderPrograms::build_all() {
       {&stars, "stars.vert", "stars.frag", ""},
       {&mesh, "mesh.vert", "mesh.frag", ""},
       {&particle_hard, "particle.vert", "particle.frag", "#define SOFT 0\n#define CONTRAST 0\n#define FB_DEPTH 0\n"},
-      {&particle_soft, "particle.vert", "particle.frag", "#define SOFT 1\n#define CONTRAST 0\n#define FB_DEPTH 0\n"},
-      {&particle_contrast, "particle.vert", "particle.frag",
-       "#define SOFT 1\n#define CONTRAST 1\n#define CONTRAST_SQUARE 0\n#define FB_DEPTH 0\n"},
-      {&particle_square, "particle.vert", "particle.frag",
-       "#define SOFT 1\n#define CONTRAST 1\n#define CONTRAST_SQUARE 1\n#define FB_DEPTH 0\n"},
       {&hud, "hud.vert", "hud.frag", ""},
       {&bloom_prefilter, "post.vert", "bloom_down.frag", "#define PREFILTER 1\n#define KARIS 0\n"},
       {&bloom_down_karis, "post.vert", "bloom_down.frag", "#define PREFILTER 0\n#define KARIS 1\n"},
@@ -139,12 +134,16 @@ void ShaderPrograms::build_all() {
       {&fxaa, "post.vert", "fxaa.frag", ""},
       {&msaa_resolve, "post.vert", "msaa_resolve.frag", ""},
       {&particle_composite, "particle_composite.vert", "particle_composite.frag", ""}};
-  if (has_depth_fetch()) {
-    specs.push_back({&particle_soft_fetch, "particle.vert", "particle.frag", "#define SOFT 1\n#define CONTRAST 0\n#define FB_DEPTH 1\n"});
-    specs.push_back({&particle_contrast_fetch, "particle.vert", "particle.frag",
-                     "#define SOFT 1\n#define CONTRAST 1\n#define CONTRAST_SQUARE 0\n#define FB_DEPTH 1\n"});
-    specs.push_back({&particle_square_fetch, "particle.vert", "particle.frag",
-                     "#define SOFT 1\n#define CONTRAST 1\n#define CONTRAST_SQUARE 1\n#define FB_DEPTH 1\n"});
+  // The soft particle programs (linear, the contrast curve, the curve squared), each reading the
+  // depth from a copy and, where the context can, from the framebuffer (FB_DEPTH).
+  const char* curves[3] = {"#define CONTRAST 0\n", "#define CONTRAST 1\n#define CONTRAST_SQUARE 0\n",
+                           "#define CONTRAST 1\n#define CONTRAST_SQUARE 1\n"};
+  Program* copied[3] = {&particle_soft, &particle_contrast, &particle_square};
+  Program* fetched[3] = {&particle_soft_fetch, &particle_contrast_fetch, &particle_square_fetch};
+  for (int k = 0; k < 3; ++k) {
+    const std::string soft = std::string("#define SOFT 1\n") + curves[k];
+    specs.push_back({copied[k], "particle.vert", "particle.frag", soft + "#define FB_DEPTH 0\n"});
+    if (has_depth_fetch()) specs.push_back({fetched[k], "particle.vert", "particle.frag", soft + "#define FB_DEPTH 1\n"});
   }
   std::vector<GLuint> built;
   for (auto& s : specs) built.push_back(build_program(dir_, s.vs, s.fs, s.defines, err));

@@ -44,6 +44,7 @@ DepthReads gallery_depth_reads(const std::string& soft_edges) {
   no_hud.show_hud = false;
   RenderView view;
   DepthReads out;
+  const bool fetch = has_depth_fetch();
   for (int tick = 1; tick <= 120; ++tick) {
     game.step(InputFrame{});
     if (tick % 3) continue;
@@ -53,7 +54,6 @@ DepthReads gallery_depth_reads(const std::string& soft_edges) {
     ++out.frames;
     out.read += st.reads_depth();
     out.needed += st.soft_shaded > 0;
-    const bool fetch = has_depth_fetch();
     out.mismatched += st.depth_fetched != (st.soft_shaded > 0 && fetch);
     out.mismatched += st.depth_copied != (st.soft_shaded > 0 && !fetch && !st.particles_half_res);
   }
