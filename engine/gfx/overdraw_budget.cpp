@@ -13,9 +13,9 @@ namespace {
 
 constexpr double kMinCap = 1e-4;          // smallest k: a 0.07-pixel half-size at 720 lines
 constexpr double kAttackSeconds = 0.08;   // time constant toward more reduction
-constexpr double kReleaseSeconds = 0.3;   // and toward less
+constexpr double kReleaseSeconds = 0.12;  // and toward less
 constexpr double kAttackRate = 12.0;      // at most this many e-folds of k per second (about 18 %
-constexpr double kReleaseRate = 4.0;      // of a particle's size per 60 Hz frame) and back
+constexpr double kReleaseRate = 8.0;      // of a particle's size per 60 Hz frame) and back (14 %)
 constexpr double kRestartSeconds = 0.5;   // a longer step (or one back) starts afresh
 constexpr float kDropFade = 1.0f / 512.0f;
 
@@ -58,9 +58,9 @@ double OverdrawBudget::solve(const std::vector<uint32_t>& set, double budget_px,
   return std::exp(lo);
 }
 
-double OverdrawBudget::log_cap_of(uint32_t cluster) const {
-  auto it = std::lower_bound(caps_.begin(), caps_.end(), std::make_pair(cluster, -1e300));
-  return it != caps_.end() && it->first == cluster ? it->second : std::nan("");
+const OverdrawBudget::ClusterCap* OverdrawBudget::cap_of(uint32_t cluster) const {
+  auto it = std::lower_bound(caps_.begin(), caps_.end(), cluster, [](const ClusterCap& c, uint32_t id) { return c.cluster < id; });
+  return it != caps_.end() && it->cluster == cluster ? &*it : nullptr;
 }
 
 // A camera-facing quad lies in the view plane at its centre's depth (particle.vert turns it
@@ -183,21 +183,40 @@ double OverdrawBudget::estimate(const std::vector<ParticleInstance>& particles, 
 }
 
 // Each cluster drawn before moves its cap toward the frame's solution; a cluster new this
-// frame (nothing of it on screen to jump from) starts at the solution.
+// frame (nothing of it on screen to jump from) starts at the solution. Then a cap above every
+// threshold of the cluster's on-screen particles comes down to the largest of them (see the
+// header: the highest k that changes nothing).
 void OverdrawBudget::update_caps(const std::vector<ParticleInstance>& particles, double target, double time_seconds) {
   const double dt = time_seconds - last_time_;
   const bool continuing = has_state_ && dt >= 0.0 && dt <= kRestartSeconds;
   next_caps_.clear();
-  // A cluster's particles mostly come together: one entry per stretch, then sorted and unique.
-  for (const ParticleInstance& p : particles)
-    if (next_caps_.empty() || next_caps_.back().first != p.cluster) next_caps_.emplace_back(p.cluster, 0.0);
-  std::sort(next_caps_.begin(), next_caps_.end());
-  next_caps_.erase(std::unique(next_caps_.begin(), next_caps_.end(), [](auto& a, auto& b) { return a.first == b.first; }),
+  // A cluster's particles mostly come together: one entry per stretch, then sorted and merged,
+  // log_k holding the largest on-screen threshold until the step below.
+  for (size_t i = 0; i < particles.size(); ++i) {
+    const double top = fp_[i].area > 0.0f ? double(fp_[i].threshold) : 0.0;
+    if (next_caps_.empty() || next_caps_.back().cluster != particles[i].cluster)
+      next_caps_.push_back({particles[i].cluster, top, false});
+    else next_caps_.back().log_k = std::max(next_caps_.back().log_k, top);
+  }
+  std::sort(next_caps_.begin(), next_caps_.end(), [](const ClusterCap& a, const ClusterCap& b) {
+    return a.cluster < b.cluster || (a.cluster == b.cluster && a.log_k > b.log_k);
+  });
+  next_caps_.erase(std::unique(next_caps_.begin(), next_caps_.end(),
+                               [](const ClusterCap& a, const ClusterCap& b) { return a.cluster == b.cluster; }),
                    next_caps_.end());
   const double lt = std::log(target);
-  for (auto& [cluster, log_k] : next_caps_) {
-    const double before = continuing ? log_cap_of(cluster) : std::nan("");
-    log_k = std::isnan(before) ? lt : dt > 0.0 ? step_toward(before, lt, dt) : before;
+  for (ClusterCap& c : next_caps_) {
+    if (c.log_k <= 0.0) {  // nothing of it on screen: nothing seen to keep
+      c.log_k = lt;
+      c.free = true;
+      continue;
+    }
+    const double top = std::log(c.log_k) + 1e-6;  // just above the largest threshold, past float rounding
+    const ClusterCap* before = continuing ? cap_of(c.cluster) : nullptr;
+    if (!before || (before->free && lt >= before->log_k)) c.log_k = lt;
+    else c.log_k = dt > 0.0 ? step_toward(before->log_k, lt, dt) : before->log_k;
+    c.free = c.log_k >= top;
+    if (c.free) c.log_k = top;
   }
   caps_.swap(next_caps_);
   has_state_ = true;
@@ -231,7 +250,8 @@ OverdrawStats OverdrawBudget::apply(std::vector<ParticleInstance>& particles, st
     float area = f.area;
     if (i == 0 || p.cluster != cluster) {  // a cluster's particles come together: one look-up each
       cluster = p.cluster;
-      k = std::exp(log_cap_of(cluster));
+      const ClusterCap* c = cap_of(cluster);
+      k = c && !c->free ? std::exp(c->log_k) : k_none;  // a free cap binds nothing on screen, and off it nothing is seen
     }
     if (k < k_none * 0.999 && double(f.threshold) > k) {
       const float r = float(k / double(f.threshold));

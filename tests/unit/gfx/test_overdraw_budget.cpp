@@ -150,31 +150,83 @@ TEST(OverdrawBudget, IsSmoothInDistance) {
 }
 
 TEST(OverdrawBudget, IsSmoothInTime) {
-  // A crowd appears at once: the cap eases in over frames instead of snapping, every step
-  // shrinks a puff by a bounded factor, and within half a second the budget holds.
+  // A crowd seen whole, then the budget tightens at once (as when something else comes on
+  // screen): the cap eases in over frames instead of snapping, every step shrinks a puff by a
+  // bounded factor, and within half a second the budget holds.
   OverdrawBudget b;
-  std::vector<ParticleInstance> calm = {particle({0, 0, -50}, 0.5f, glm::vec3(1), 1.0f, 1.0f)};
   std::vector<float> areas;
-  b.apply(calm, areas, frame(0.0), {.budget_layers = 1.0f});
+  std::vector<ParticleInstance> ps = crowd();
+  b.apply(ps, areas, frame(0.0), {.budget_layers = 6.0f});
   const float clamp = 0.5f * 4.0f * std::tan(0.45f);  // particle.vert's size clamp at 4 m
   auto drawn = [&](const ParticleInstance& p) { return std::min(p.size, clamp); };
-  float last = drawn(crowd()[0]);
+  float last = drawn(ps[0]);
+  ASSERT_EQ(last, drawn(crowd()[0]));
   OverdrawStats s;
   for (int f = 1; f <= 30; ++f) {
-    std::vector<ParticleInstance> ps = crowd();
+    ps = crowd();
     s = b.apply(ps, areas, frame(f / 60.0), {.budget_layers = 1.0f});
     EXPECT_GE(drawn(ps[0]), 0.8f * last) << "frame " << f;
+    if (f == 1) {
+      EXPECT_LT(drawn(ps[0]), last) << "the reduction starts in the first frame over budget";
+    }
     last = drawn(ps[0]);
   }
   EXPECT_LT(last, 0.6f * clamp);
   EXPECT_NEAR(s.budgeted_layers, 1.0, 0.1);
-  // A frame that stands still keeps the cap; one half a second or more away starts afresh.
-  std::vector<ParticleInstance> ps = crowd();
+  // A frame that stands still keeps the cap.
+  ps = crowd();
   b.apply(ps, areas, frame(30 / 60.0), {.budget_layers = 6.0f});
   EXPECT_EQ(drawn(ps[0]), last);
+  // The budget loosens: the puffs grow back by a bounded factor a frame, whole within 0.4 s.
+  for (int f = 31; f <= 54; ++f) {
+    ps = crowd();
+    s = b.apply(ps, areas, frame(f / 60.0), {.budget_layers = 6.0f});
+    EXPECT_LE(drawn(ps[0]), 1.16f * last) << "frame " << f;
+    last = drawn(ps[0]);
+  }
+  EXPECT_EQ(s.reduced, 0);
+  EXPECT_EQ(last, drawn(crowd()[0]));
+  // A frame half a second or more away starts afresh.
+  b.apply(ps, areas, frame(1.0), {.budget_layers = 1.0f});
   ps = crowd();
   s = b.apply(ps, areas, frame(2.0), {.budget_layers = 6.0f});
   EXPECT_EQ(s.reduced, 0);
+}
+
+TEST(OverdrawBudget, AGrowingExplosionIsCappedWhereItsCapBites) {
+  // An explosion's puffs at 5 m grow by 10 % a frame, under the budget at first. A cap that
+  // binds none of them waits at their largest threshold, so the frame they pass the budget
+  // is the frame their reduction starts: the budget holds within a few frames of it, and no
+  // puff ever shrinks by more than the rate limit from one frame to the next.
+  auto explosion = [](int f) {
+    std::vector<ParticleInstance> ps;
+    const float size = 0.15f * std::pow(1.1f, float(f));
+    for (int i = 0; i < 12; ++i) ps.push_back(particle({float(i % 4) - 1.5f, float(i / 4) - 1.0f, -5.0f}, size, glm::vec3(0.6f), 0.6f, 0.5f));
+    return ps;
+  };
+  const float clamp = 0.5f * 5.0f * std::tan(0.45f);
+  OverdrawBudget b;
+  std::vector<float> areas;
+  std::vector<float> last(12, 0.0f);
+  int first_over = -1, over_after = 0;
+  double worst_after = 0;
+  for (int f = 0; f <= 40; ++f) {
+    std::vector<ParticleInstance> ps = explosion(f);
+    const OverdrawStats s = b.apply(ps, areas, frame(f / 60.0), {.budget_layers = 1.0f});
+    ASSERT_EQ(ps.size(), 12u);
+    if (first_over < 0 && s.estimated_layers > 1.0) first_over = f;
+    if (first_over >= 0 && f >= first_over + 3) {
+      worst_after = std::max(worst_after, s.budgeted_layers);
+      over_after += s.budgeted_layers > 1.05;
+    }
+    for (size_t i = 0; i < ps.size(); ++i) {
+      EXPECT_GE(std::min(ps[i].size, clamp), 0.8f * last[i]) << "puff " << i << " frame " << f;
+      last[i] = std::min(ps[i].size, clamp);
+    }
+  }
+  ASSERT_GT(first_over, 5) << "the test needs the explosion under budget at first";
+  ASSERT_LT(first_over, 30);
+  EXPECT_EQ(over_after, 0) << "worst " << worst_after << " layers from three frames after the first over budget";
 }
 
 TEST(OverdrawBudget, ANewClusterStartsAtTheFramesSolution) {
