@@ -59,7 +59,8 @@ double OverdrawBudget::solve(const std::vector<uint32_t>& set, double budget_px,
 }
 
 const OverdrawBudget::ClusterCap* OverdrawBudget::cap_of(uint32_t cluster) const {
-  auto it = std::lower_bound(caps_.begin(), caps_.end(), cluster, [](const ClusterCap& c, uint32_t id) { return c.cluster < id; });
+  auto it = std::lower_bound(caps_.begin(), caps_.end(), cluster,
+                             [](const ClusterCap& c, uint32_t id) { return c.cluster < id; });
   return it != caps_.end() && it->cluster == cluster ? &*it : nullptr;
 }
 
@@ -190,33 +191,32 @@ void OverdrawBudget::update_caps(const std::vector<ParticleInstance>& particles,
   const double dt = time_seconds - last_time_;
   const bool continuing = has_state_ && dt >= 0.0 && dt <= kRestartSeconds;
   next_caps_.clear();
-  // A cluster's particles mostly come together: one entry per stretch, then sorted and merged,
-  // log_k holding the largest on-screen threshold until the step below.
+  // A cluster's particles mostly come together: one entry per stretch, then sorted and merged.
   for (size_t i = 0; i < particles.size(); ++i) {
     const double top = fp_[i].area > 0.0f ? double(fp_[i].threshold) : 0.0;
     if (next_caps_.empty() || next_caps_.back().cluster != particles[i].cluster)
-      next_caps_.push_back({particles[i].cluster, top, false});
-    else next_caps_.back().log_k = std::max(next_caps_.back().log_k, top);
+      next_caps_.push_back({particles[i].cluster, 0.0, top, false});
+    else next_caps_.back().top = std::max(next_caps_.back().top, top);
   }
   std::sort(next_caps_.begin(), next_caps_.end(), [](const ClusterCap& a, const ClusterCap& b) {
-    return a.cluster < b.cluster || (a.cluster == b.cluster && a.log_k > b.log_k);
+    return a.cluster < b.cluster || (a.cluster == b.cluster && a.top > b.top);
   });
   next_caps_.erase(std::unique(next_caps_.begin(), next_caps_.end(),
                                [](const ClusterCap& a, const ClusterCap& b) { return a.cluster == b.cluster; }),
                    next_caps_.end());
   const double lt = std::log(target);
   for (ClusterCap& c : next_caps_) {
-    if (c.log_k <= 0.0) {  // nothing of it on screen: nothing seen to keep
+    if (!(c.top > 0.0)) {  // nothing of it on screen: nothing seen to keep
       c.log_k = lt;
       c.free = true;
       continue;
     }
-    const double top = std::log(c.log_k) + 1e-6;  // just above the largest threshold, past float rounding
+    const double log_top = std::log(c.top) + 1e-6;  // just above the largest threshold, past float rounding
     const ClusterCap* before = continuing ? cap_of(c.cluster) : nullptr;
     if (!before || (before->free && lt >= before->log_k)) c.log_k = lt;
     else c.log_k = dt > 0.0 ? step_toward(before->log_k, lt, dt) : before->log_k;
-    c.free = c.log_k >= top;
-    if (c.free) c.log_k = top;
+    c.free = c.log_k >= log_top;
+    if (c.free) c.log_k = log_top;
   }
   caps_.swap(next_caps_);
   has_state_ = true;
@@ -250,8 +250,9 @@ OverdrawStats OverdrawBudget::apply(std::vector<ParticleInstance>& particles, st
     float area = f.area;
     if (i == 0 || p.cluster != cluster) {  // a cluster's particles come together: one look-up each
       cluster = p.cluster;
+      // A free cap binds nothing on screen, and off it nothing is seen: the cluster is left whole.
       const ClusterCap* c = cap_of(cluster);
-      k = c && !c->free ? std::exp(c->log_k) : k_none;  // a free cap binds nothing on screen, and off it nothing is seen
+      k = c && !c->free ? std::exp(c->log_k) : k_none;
     }
     if (k < k_none * 0.999 && double(f.threshold) > k) {
       const float r = float(k / double(f.threshold));

@@ -27,17 +27,17 @@
 // and 8 toward less: at 60 Hz no particle shrinks by more than 18 % from one frame to the
 // next, nor grows back by more than 14 %), by the view's game time, so nothing pops. (The way
 // back was 0.3 s and 4 e-folds: after the victory explosion's peak, frames under budget stayed
-// reduced for a third of a second, at 32 dB against the unbudgeted picture; now 39 dB.) A cluster that was not drawn the frame
-// before (an explosion's first frame) has no size to jump from: it starts at the frame's
-// solution and then follows it like the rest. A cluster whose k binds none of its particles
-// keeps it at its largest on-screen particle's threshold, the highest k that changes nothing:
-// k above that is unseen, and walking it down at the rate limit would only delay the
-// reduction (from the no-budget k to a growing explosion's threshold took 13 frames) while
-// the frame runs over budget. From there the rate limit still bounds every particle's shrink
-// (one uncapped at threshold T keeps its size down to k = T, and k moves 18 % a frame at
-// most), and when the solution rises above it k follows at once, since nothing was capped to
-// grow back. A frame that stands still in time keeps the caps; one that jumps back or by more
-// than half a second starts every cluster from the solution.
+// reduced for a third of a second, at 32 dB against the unbudgeted picture; now 39 dB.)
+// A cluster that was not drawn the frame before (an explosion's first frame) has no size to
+// jump from: it starts at the frame's solution and then follows it like the rest. A cluster
+// whose k binds none of its particles keeps it at its largest on-screen particle's threshold,
+// the highest k that changes nothing: k above that is unseen, and walking it down at the rate
+// limit would only delay the reduction (from the no-budget k to a growing explosion's
+// threshold took 13 frames) while the frame runs over budget. From there the rate limit still
+// bounds every particle's shrink (one uncapped at threshold T keeps its size down to k = T,
+// and k moves 18 % a frame at most), and when the solution rises above it k follows at once,
+// since nothing was capped to grow back. A frame that stands still in time keeps the caps; one
+// that jumps back or by more than half a second starts every cluster from the solution.
 //
 //   OverdrawBudget budget;
 //   OverdrawStats s = budget.apply(particles, areas, frame, {.budget_layers = 3, .near = 40});
@@ -105,7 +105,8 @@ class OverdrawBudget {
   struct ClusterCap {
     uint32_t cluster;
     double log_k;
-    bool free;  // k binds none of the cluster's on-screen particles: it sits at their largest threshold
+    double top;  // the largest threshold of its particles on screen this frame (0: none there)
+    bool free;   // k binds none of them: it sits at that threshold
   };
   struct Footprint {
     float size;          // half-width, m, after particle.vert's size clamp
