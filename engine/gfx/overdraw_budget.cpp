@@ -17,7 +17,6 @@ constexpr double kReleaseSeconds = 0.12;  // and toward less
 constexpr double kAttackRate = 12.0;      // at most this many e-folds of k per second (about 18 %
 constexpr double kReleaseRate = 8.0;      // of a particle's size per 60 Hz frame) and back (14 %)
 constexpr double kRestartSeconds = 0.5;   // a longer step (or one back) starts afresh
-constexpr float kDropFade = 1.0f / 512.0f;
 
 float overlap(float centre, float half, float size) {
   return std::max(0.0f, std::min(centre + half, size) - std::max(centre - half, 0.0f));
@@ -256,10 +255,11 @@ OverdrawStats OverdrawBudget::apply(std::vector<ParticleInstance>& particles, st
     }
     if (k < k_none * 0.999 && double(f.threshold) > k) {
       const float r = float(k / double(f.threshold));
-      const float fade = std::pow(r, kOverdrawFadeGamma[std::min<int>(p.screen_priority, 2)]);
+      const int prio = std::min<int>(p.screen_priority, 2);
+      const float fade = std::pow(r, kOverdrawFadeGamma[prio]);
       ++s.reduced;
       f.reduced = true;
-      if (fade < kDropFade) {
+      if (p.screen_priority == uint8_t(ScreenPriority::Low) && r < kOverdrawDropRatio) {
         ++s.dropped;
         continue;
       }

@@ -12,13 +12,16 @@
 //
 // where each frame solves by bisection for the k at which the estimated total meets the
 // budget. A particle above its cap is shrunk to it (an axis-locked lightning segment is
-// thinned: its width shrinks, its length stays) and faded by (cap / size)^γ(priority); one
-// faded below 1/512 is dropped. Low priority (sparks, debris: γ 1) has the smallest weight
-// and fades with its size until it is dropped; normal (shields, smoke, trails: γ 1/4) shrinks
-// with a little fade; high (beams, fireballs: γ 0) has the largest weight and only shrinks.
-// So sparks go before shields and smoke, and those before beams. Shrinking with little fade
-// keeps the picture closest (the bench's PSNR of budgeted against unbudgeted frames): a near
-// particle's faint rim goes, its core stays. The distance term makes the reduction fall off
+// thinned: its width shrinks, its length stays) and faded by (cap / size)^γ(priority). Low
+// priority (sparks, debris) has the smallest weight and is dropped once shrunk below 1/512
+// of its size (less than a pixel: no pop); normal (shields, smoke, trails) has a middle
+// weight; both shrink with a little fade (γ 1/4). High (beams, fireballs: γ 0) has the
+// largest weight and only shrinks. So sparks go before shields and smoke, and those before
+// beams. Shrinking with little fade keeps the picture closest (the bench's PSNR of budgeted
+// against unbudgeted frames): a near particle's faint rim goes, its core stays. Fading
+// removes no pixel, so it buys no time: low priority faded with its size (γ 1) until
+// 2026-11-27, and that cost 0.5 / 0.6 dB over combat_view's changed frames (chase / cockpit),
+// the most at the victory explosion's arcs, for the same layers and the same drops. The distance term makes the reduction fall off
 // smoothly beyond `near` metres: it is the near-camera particles that shrink first. A faint
 // particle (little light added or blocked) is capped before a strong one.
 //
@@ -84,7 +87,8 @@ struct OverdrawStats {
 
 // Weights and fade exponents per ScreenPriority (Low, Normal, High).
 constexpr float kOverdrawWeight[3] = {0.5f, 0.75f, 1.0f};
-constexpr float kOverdrawFadeGamma[3] = {1.0f, 0.25f, 0.0f};
+constexpr float kOverdrawFadeGamma[3] = {0.25f, 0.25f, 0.0f};
+constexpr float kOverdrawDropRatio = 1.0f / 512.0f;  // a low-priority particle shrunk below this share goes
 
 class OverdrawBudget {
  public:

@@ -106,13 +106,19 @@ TEST(OverdrawBudget, ReducesLowPriorityBeforeHighAndThinsLightning) {
   EXPECT_LT(ps[0].size, ps[1].size);  // same footprint: the spark is capped harder
   EXPECT_LT(ps[1].size, spark.size);
   EXPECT_LT(ps[0].color[3], ps[1].color[3]);  // and fades more
+  // Both fade only a little: by (cap / size)^(1/4), the shrink's fourth root (fading removes no
+  // pixel, so it would cost picture and buy no time).
+  for (int i = 0; i < 2; ++i) {
+    const float r = ps[size_t(i)].size / spark.size;
+    EXPECT_NEAR(ps[size_t(i)].color[3], std::pow(r, 0.25f), 1e-5f) << "particle " << i;
+  }
   EXPECT_LT(ps[2].size, bolt.size);            // the bolt is thinned ...
   EXPECT_EQ(ps[2].axis[1], bolt.axis[1]);      // ... not shortened
   EXPECT_EQ(ps[2].color[0], bolt.color[0]);    // and not faded
   EXPECT_EQ(s.reduced, 3);
 }
 
-TEST(OverdrawBudget, DropsLowPriorityParticlesFadedToNothing) {
+TEST(OverdrawBudget, DropsLowPriorityParticlesShrunkToNothing) {
   std::vector<ParticleInstance> ps;
   for (int i = 0; i < 20; ++i) {
     ParticleInstance p = particle({0, 0, -0.6f}, 2.0f, glm::vec3(1), 1.0f, 1.0f);  // filling the screen
@@ -126,6 +132,22 @@ TEST(OverdrawBudget, DropsLowPriorityParticlesFadedToNothing) {
   ASSERT_EQ(ps.size(), 10u);
   for (const ParticleInstance& p : ps) EXPECT_EQ(p.screen_priority, uint8_t(ScreenPriority::High));
   EXPECT_EQ(areas.size(), ps.size());
+  // Only below 1/512 of its size: one shrunk to a few pixels stays (faded a little, not gone),
+  // and a normal-priority one is never dropped.
+  std::vector<ParticleInstance> few;
+  for (int i = 0; i < 2; ++i) {
+    ParticleInstance p = particle({float(i) - 0.5f, 0, -0.6f}, 2.0f, glm::vec3(1), 1.0f, 1.0f);
+    p.screen_priority = uint8_t(i ? ScreenPriority::Normal : ScreenPriority::Low);
+    few.push_back(p);
+  }
+  b.reset();
+  const OverdrawStats s2 = b.apply(few, areas, frame(), {.budget_layers = 1e-4f});
+  EXPECT_EQ(s2.dropped, 0);
+  ASSERT_EQ(few.size(), 2u);
+  const float r = few[0].size / (0.5f * 0.6f * std::tan(0.45f));  // of its size after particle.vert's clamp
+  EXPECT_GT(r, 1.0f / 512.0f);
+  EXPECT_LT(r, 0.05f);
+  EXPECT_GT(few[0].color[3], 0.2f);
 }
 
 TEST(OverdrawBudget, IsSmoothInDistance) {
