@@ -255,14 +255,13 @@ OverdrawStats OverdrawBudget::apply(std::vector<ParticleInstance>& particles, st
     }
     if (k < k_none * 0.999 && double(f.threshold) > k) {
       const float r = float(k / double(f.threshold));
-      const int prio = std::min<int>(p.screen_priority, 2);
-      const float fade = std::pow(r, kOverdrawFadeGamma[prio]);
       ++s.reduced;
       f.reduced = true;
       if (p.screen_priority == uint8_t(ScreenPriority::Low) && r < kOverdrawDropRatio) {
         ++s.dropped;
         continue;
       }
+      const float fade = std::pow(r, kOverdrawFadeGamma[std::min<int>(p.screen_priority, 2)]);
       p.size = f.size * r;
       for (float& ch : p.color) ch *= fade;
       area = float(std::min(area_at(uint32_t(i), k), screen));
