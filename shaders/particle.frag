@@ -2,11 +2,13 @@
 // Controlled-additive blending (Ilmonen 2006 §4): with premultiplied sprite tcola and colour
 // fgc = rgb·alpha the output is (fgc·tcola, alpha·talpha·(1 − burn)) under
 // glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA). Soft edges scale both (§3, Lorach, Krazanowski).
-// The renderer compiles variants (SOFT, CONTRAST, CONTRAST_SQUARE, FB_DEPTH defined 0 or 1) and uses the
-// soft one (depth texture read, linearisation) only in frames where a visible particle has soft
-// edges, the contrast one only when one uses the contrast curve, and the squaring one when the
-// contrast power is 2 (the default): a software rasteriser runs every instruction of a shader on
-// every pixel, branches included, and pow() is a log2 and an exp2 polynomial per pixel.
+// The renderer compiles variants (SOFT, CONTRAST, CONTRAST_SQUARE, DENSITY_EXTENT, FB_DEPTH defined
+// 0 or 1) and uses the soft one (depth read, linearisation) only for runs of particles an opaque
+// surface can reach, the contrast one only when one of the run uses the contrast curve, the
+// squaring one when the contrast power is 2 (the default), and the density-extent one only when
+// one of the run uses that method: a software rasteriser runs every instruction of a shader on
+// every pixel, branches and mixes with a weight of 0 included, and pow() is a log2 and an exp2
+// polynomial per pixel.
 #if SOFT && FB_DEPTH
 // The opaque depth under this fragment, read from the framebuffer drawn into (the scene's
 // depth, or the half-resolution target's): no copy, and on llvmpipe a load of the depth tile
@@ -54,7 +56,11 @@ void main() {
   // Linear ramp (Ilmonen), average density (quad already at z − E/2), density extent (quad at
   // z − E, range scaled by 1/texture alpha and mapped from [−1, 1]).
   float x = v_soft.x / max(d * u_linearize.y + u_linearize.z, 1e-30) - (v_depth * v_soft.y + v_soft.z);
+#if DENSITY_EXTENT
+  // Only density extent's range scales with the texture alpha (v_soft.w 1; 0 for the others,
+  // whose runs take the variant without it: the division was 5 % of the gallery's frame).
   x = mix(x, x * 0.5 / max(tex.a, kEps) + 0.5, v_soft.w);
+#endif
   x = clamp(x, 0.0, 1.0);
 #if CONTRAST
   // Lorach's contrast curve: 0.5·(2x)^p below 0.5, mirrored above.

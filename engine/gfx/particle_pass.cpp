@@ -15,13 +15,13 @@ namespace arc {
 namespace {
 
 // Contrast power 2 (the default) squares instead of calling pow(); power 1 is the identity
-// curve, the plain soft program.
+// curve, the linear program. The density-extent variant only for runs that hold that method.
 const Program& choose_program(const ShaderPrograms& programs, const ParticleRun& run, float contrast_power, bool fetch) {
   if (!run.soft) return programs.particle_hard;
-  const Program& soft = fetch ? programs.particle_soft_fetch : programs.particle_soft;
-  if (!run.contrast || contrast_power == 1.0f) return soft;
-  if (contrast_power == 2.0f) return fetch ? programs.particle_square_fetch : programs.particle_square;
-  return fetch ? programs.particle_contrast_fetch : programs.particle_contrast;
+  const int curve = !run.contrast || contrast_power == 1.0f ? ShaderPrograms::kSoftLinear
+                    : contrast_power == 2.0f               ? ShaderPrograms::kSoftSquare
+                                                           : ShaderPrograms::kSoftContrast;
+  return programs.particle_soft[curve][run.density_extent ? 1 : 0][fetch ? 1 : 0];
 }
 
 // The frame's uniforms of one particle program (each program the runs use, once a frame).

@@ -16,6 +16,17 @@ bool uses_contrast(const ParticleInstance& p) {
   return needs_depth(p) && (p.soft_edge & 0x7F) == uint8_t(SoftEdge::Contrast);
 }
 
+bool uses_density_extent(const ParticleInstance& p) {
+  return needs_depth(p) && (p.soft_edge & 0x7F) == uint8_t(SoftEdge::DensityExtent);
+}
+
+// Adds a particle to a run: which soft variant the run needs, and its pixels.
+void take(ParticleRun& r, const ParticleInstance& p, float area) {
+  r.contrast = r.contrast || uses_contrast(p);
+  r.density_extent = r.density_extent || uses_density_extent(p);
+  r.pixels += area;
+}
+
 // The screen as a grid of cells for the order constraints: a particle must be drawn after
 // every earlier one whose box shares a cell with its own, unless both are pure additive.
 constexpr int kCellsX = 32, kCellsY = 18;
@@ -102,11 +113,8 @@ void group_runs(std::vector<ParticleInstance>& particles, std::vector<float>& ar
   runs.clear();
   if (particles.empty()) return;
   if (!mixed_programs(particles)) {  // one program for all: one run in the batch's order
-    runs.push_back({0, uint32_t(particles.size()), needs_depth(particles[0]), false, 0.0});
-    for (size_t i = 0; i < particles.size(); ++i) {
-      runs[0].contrast = runs[0].contrast || uses_contrast(particles[i]);
-      runs[0].pixels += areas[i];
-    }
+    runs.push_back({0, uint32_t(particles.size()), needs_depth(particles[0])});
+    for (size_t i = 0; i < particles.size(); ++i) take(runs[0], particles[i], areas[i]);
     return;
   }
   thread_local std::vector<uint32_t> run_of;
@@ -115,11 +123,9 @@ void group_runs(std::vector<ParticleInstance>& particles, std::vector<float>& ar
   std::vector<ParticleRun> raw;
   for (size_t i = 0; i < particles.size(); ++i) {
     const bool soft = needs_depth(particles[i]);
-    if (raw.empty() || raw.back().soft != soft) raw.push_back({uint32_t(i), 0, soft, false, 0.0});
-    ParticleRun& r = raw.back();
-    ++r.count;
-    r.contrast = r.contrast || uses_contrast(particles[i]);
-    r.pixels += areas[i];
+    if (raw.empty() || raw.back().soft != soft) raw.push_back({uint32_t(i), 0, soft});
+    ++raw.back().count;
+    take(raw.back(), particles[i], areas[i]);
   }
   // Runs alternate hard and soft, so folding a hard run into the soft program joins it with
   // each neighbour it has: the count drops by one or two.
@@ -141,6 +147,7 @@ void group_runs(std::vector<ParticleInstance>& particles, std::vector<float>& ar
       ParticleRun& last = runs.back();
       last.count += raw[r].count;
       last.contrast = last.contrast || raw[r].contrast;
+      last.density_extent = last.density_extent || raw[r].density_extent;
       last.pixels += raw[r].pixels;
     } else {
       runs.push_back(raw[r]);

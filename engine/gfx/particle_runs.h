@@ -21,7 +21,7 @@
 //
 //   std::vector<ParticleRun> runs;
 //   group_runs(batch.particles, areas, boxes, /*max_runs=*/24, runs);
-//   for (auto& r : runs) draw(r.first, r.count, r.soft ? (r.contrast ? contrast : soft) : hard);
+//   for (auto& r : runs) draw(r.first, r.count, r.soft ? soft[r.contrast][r.density_extent] : hard);
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -35,6 +35,7 @@ struct ParticleRun {
   uint32_t first = 0, count = 0;  // a span of the batch
   bool soft = false;              // drawn with a soft-edge program (reads the depth copy)
   bool contrast = false;          // a particle of the run uses the contrast curve
+  bool density_extent = false;    // a particle of the run uses density extent (its texture-alpha range)
   double pixels = 0;              // estimated blended pixels of the run
 };
 

@@ -383,20 +383,27 @@ uint64_t Renderer::Impl::warm_key() const {
 // to half resolution or a soft run appears (combat_view's tick 160 took 41–48 ms among 13 ms
 // frames). So the first frame in each state the variants depend on (scene format, depth
 // direction, sprite filter, HDR, contrast program: warm_key), before it clears the scene, one tiny
-// particle per program (hard, soft, soft with the contrast curve) is drawn into the scene and
+// particle per program (hard, linear, the contrast curve, density extent, both) is drawn into the scene and
 // into the half-resolution target, and that is put over the scene: every variant the frames
 // can pick is compiled there. The frame's sky then covers it all.
 void Renderer::Impl::warm_up_particles(const RenderView& v, const ViewProjection& vp) {
   warm_keys.push_back(warm_key());
   ParticleBatch warm;
   const glm::dvec3 ahead = v.camera.orientation * glm::dvec3(0.0, 0.0, -4.0 * v.camera.near_plane);
-  for (uint8_t soft : {uint8_t(SoftEdge::Off), uint8_t(SoftEdge::Linear), uint8_t(SoftEdge::Contrast)}) {
+  // Hard, linear, the contrast curve, density extent, and both in one run.
+  struct Warm {
+    SoftEdge method;
+    bool contrast, density_extent;
+  };
+  for (Warm w : {Warm{SoftEdge::Off, false, false}, Warm{SoftEdge::Linear, false, false},
+                 Warm{SoftEdge::Contrast, true, false}, Warm{SoftEdge::DensityExtent, false, true},
+                 Warm{SoftEdge::DensityExtent, true, true}}) {
     ParticleInstance p{};
     p.pos[0] = float(ahead.x), p.pos[1] = float(ahead.y), p.pos[2] = float(ahead.z);
     p.size = float(v.camera.near_plane) * 0.05f;  // a few pixels of white: a frame that failed to clear would show it
     p.color[0] = p.color[1] = p.color[2] = p.color[3] = 1.0f;
-    p.soft_edge = soft;
-    warm.runs.push_back({uint32_t(warm.particles.size()), 1, soft != 0, soft == uint8_t(SoftEdge::Contrast), 1.0});
+    p.soft_edge = uint8_t(w.method);
+    warm.runs.push_back({uint32_t(warm.particles.size()), 1, w.method != SoftEdge::Off, w.contrast, w.density_extent, 1.0});
     warm.particles.push_back(p);
   }
   particles.upload(warm.particles);

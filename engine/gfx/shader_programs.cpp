@@ -92,10 +92,12 @@ ShaderPrograms::ShaderPrograms(std::string shader_dir) : dir_(std::move(shader_d
 
 ShaderPrograms::~ShaderPrograms() {
   for (Program* p : {&sky, &sky_exact, &sky_grid, &sky_corners, &sky_cells, &stars, &mesh, &hud, &particle_hard,
-                     &particle_soft, &particle_contrast, &particle_square, &particle_soft_fetch, &particle_contrast_fetch,
-                     &particle_square_fetch, &bloom_prefilter, &bloom_down_karis, &bloom_down, &bloom_up, &tonemap,
-                     &tonemap_bloom, &fxaa, &msaa_resolve, &particle_composite})
+                     &bloom_prefilter, &bloom_down_karis, &bloom_down, &bloom_up, &tonemap, &tonemap_bloom, &fxaa,
+                     &msaa_resolve, &particle_composite})
     glDeleteProgram(p->id);
+  for (auto& curve : particle_soft)
+    for (auto& density : curve)
+      for (Program& p : density) glDeleteProgram(p.id);
 }
 
 std::string ShaderPrograms::reload() {
@@ -123,7 +125,8 @@ void ShaderPrograms::build_all() {
       {&sky_cells, "sky_cells.vert", "sky_cells.frag", ""},
       {&stars, "stars.vert", "stars.frag", ""},
       {&mesh, "mesh.vert", "mesh.frag", ""},
-      {&particle_hard, "particle.vert", "particle.frag", "#define SOFT 0\n#define CONTRAST 0\n#define FB_DEPTH 0\n"},
+      {&particle_hard, "particle.vert", "particle.frag",
+       "#define SOFT 0\n#define CONTRAST 0\n#define CONTRAST_SQUARE 0\n#define DENSITY_EXTENT 0\n#define FB_DEPTH 0\n"},
       {&hud, "hud.vert", "hud.frag", ""},
       {&bloom_prefilter, "post.vert", "bloom_down.frag", "#define PREFILTER 1\n#define KARIS 0\n"},
       {&bloom_down_karis, "post.vert", "bloom_down.frag", "#define PREFILTER 0\n#define KARIS 1\n"},
@@ -134,17 +137,19 @@ void ShaderPrograms::build_all() {
       {&fxaa, "post.vert", "fxaa.frag", ""},
       {&msaa_resolve, "post.vert", "msaa_resolve.frag", ""},
       {&particle_composite, "particle_composite.vert", "particle_composite.frag", ""}};
-  // The soft particle programs (linear, the contrast curve, the curve squared), each reading the
-  // depth from a copy and, where the context can, from the framebuffer (FB_DEPTH).
-  const char* curves[3] = {"#define CONTRAST 0\n", "#define CONTRAST 1\n#define CONTRAST_SQUARE 0\n",
+  // The soft particle programs: each curve, with and without density extent's texture-alpha
+  // range, reading the depth from a copy and, where the context can, from the framebuffer.
+  const char* curves[3] = {"#define CONTRAST 0\n#define CONTRAST_SQUARE 0\n",
+                           "#define CONTRAST 1\n#define CONTRAST_SQUARE 0\n",
                            "#define CONTRAST 1\n#define CONTRAST_SQUARE 1\n"};
-  Program* copied[3] = {&particle_soft, &particle_contrast, &particle_square};
-  Program* fetched[3] = {&particle_soft_fetch, &particle_contrast_fetch, &particle_square_fetch};
-  for (int k = 0; k < 3; ++k) {
-    const std::string soft = std::string("#define SOFT 1\n") + curves[k];
-    specs.push_back({copied[k], "particle.vert", "particle.frag", soft + "#define FB_DEPTH 0\n"});
-    if (has_depth_fetch()) specs.push_back({fetched[k], "particle.vert", "particle.frag", soft + "#define FB_DEPTH 1\n"});
-  }
+  for (int curve = 0; curve < 3; ++curve)
+    for (int density = 0; density < 2; ++density)
+      for (int fetch = 0; fetch < 2; ++fetch) {
+        if (fetch && !has_depth_fetch()) continue;
+        specs.push_back({&particle_soft[curve][density][fetch], "particle.vert", "particle.frag",
+                         std::string("#define SOFT 1\n") + curves[curve] + "#define DENSITY_EXTENT " +
+                             char('0' + density) + "\n#define FB_DEPTH " + char('0' + fetch) + "\n"});
+      }
   std::vector<GLuint> built;
   for (auto& s : specs) built.push_back(build_program(dir_, s.vs, s.fs, s.defines, err));
   bool all = std::all_of(built.begin(), built.end(), [](GLuint id) { return id != 0; });

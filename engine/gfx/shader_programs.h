@@ -35,12 +35,15 @@ class ShaderPrograms {
   int generation() const { return generation_; }
 
   Program sky, sky_exact, sky_grid, sky_corners, sky_cells, stars, mesh, hud;
-  // particle.vert + particle.frag with SOFT / CONTRAST / CONTRAST_SQUARE defined: hard edges,
-  // linear soft edges, the general contrast curve, and the curve at power 2 (a square).
-  Program particle_hard, particle_soft, particle_contrast, particle_square;
-  // The three soft ones with FB_DEPTH: the depth read from the framebuffer (gl_features.h,
-  // has_depth_fetch); id 0 where the context cannot.
-  Program particle_soft_fetch, particle_contrast_fetch, particle_square_fetch;
+  // particle.vert + particle.frag: hard edges (SOFT 0), and the soft variants by
+  // particle_soft[curve][density extent][fetch]: the curve linear (kSoftLinear), Lorach's
+  // contrast curve (kSoftContrast) or that curve at power 2, a square (kSoftSquare); with
+  // DENSITY_EXTENT, the method's range scaled by the texture alpha; with FB_DEPTH, the depth
+  // read from the framebuffer (gl_features.h, has_depth_fetch; id 0 where the context cannot)
+  // instead of from a copy.
+  enum SoftCurve { kSoftLinear = 0, kSoftContrast = 1, kSoftSquare = 2 };
+  Program particle_hard;
+  Program particle_soft[3][2][2];
   // Post passes over post.vert's full-screen triangle: the bloom chain's first step (threshold),
   // its first 13-tap step (Karis average), its other steps down and up, the tone map without
   // and with bloom, FXAA.

@@ -43,6 +43,36 @@ TEST(ParticleRuns, ClearParticlesAreDrawnByTheHardProgram) {
   EXPECT_EQ(tags(ps), (std::vector<float>{0, 1, 2}));
 }
 
+// A run takes the contrast and density-extent variants only when one of its soft particles
+// uses that method: the linear program has neither the curve nor the texture-alpha division.
+TEST(ParticleRuns, RunsTakeTheContrastAndDensityExtentVariantsOnlyWhenAParticleUsesThem) {
+  auto with = [](float x, bool soft, SoftEdge m) {
+    ParticleInstance p = make(x, false, soft);
+    p.soft_edge = uint8_t(uint8_t(m) | (p.soft_edge & kSoftClear));
+    return p;
+  };
+  // soft linear | hard (clear density extent) | soft linear + density extent | hard | soft contrast
+  std::vector<ParticleInstance> ps = {with(0, true, SoftEdge::Linear), with(1, false, SoftEdge::DensityExtent),
+                                      with(2, true, SoftEdge::Linear), with(3, true, SoftEdge::DensityExtent),
+                                      with(4, false, SoftEdge::Linear), with(5, true, SoftEdge::Contrast)};
+  std::vector<float> areas(ps.size(), 1e6f);
+  std::vector<ParticleRun> runs;
+  group_runs(ps, areas, {}, 24, runs);
+  ASSERT_EQ(runs.size(), 5u);
+  const bool density[5] = {false, false, true, false, false}, contrast[5] = {false, false, false, false, true};
+  for (size_t r = 0; r < runs.size(); ++r) {
+    EXPECT_EQ(runs[r].density_extent, density[r]) << "run " << r;
+    EXPECT_EQ(runs[r].contrast, contrast[r]) << "run " << r;
+  }
+  // Folded into one soft run (a limit of 1), the run needs both.
+  std::vector<ParticleRun> one;
+  group_runs(ps, areas, {}, 1, one);
+  ASSERT_EQ(one.size(), 1u);
+  EXPECT_TRUE(one[0].soft);
+  EXPECT_TRUE(one[0].density_extent);
+  EXPECT_TRUE(one[0].contrast);
+}
+
 TEST(ParticleRuns, RegroupsAdditiveStretchesAndKeepsOrderedOnesInPlace) {
   // ordered-soft, then additive h s h s h, then ordered-hard, then additive s h s
   std::vector<ParticleInstance> ps = {make(0, false, true),  make(1, true, false), make(2, true, true),
