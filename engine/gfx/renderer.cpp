@@ -407,6 +407,13 @@ void Renderer::Impl::warm_up_particles(const RenderView& v, const ViewProjection
     warm.particles.push_back(p);
   }
   particles.upload(warm.particles);
+  // The states the frame draws its particles in: the scene's origin (clip control's, top-down
+  // scenes upper left), then the composite into the scene's colour alone with the origin as GL
+  // stores it. Each is part of the variant's key: warmed in another (the composite into the
+  // scene with depth, particles with the lower-left origin) the first half-resolution frame of
+  // a fight still compiled its own, 30–48 ms (combat_view's ticks 160 and 168 without the
+  // shader cache).
+  set_origin(targets.top_down());
   targets.bind_scene();
   targets.copy_depth();
   ParticleFrame frame{vp, v.camera.fov_y_radians, float(v.camera.near_plane), targets.depth_copy(),
@@ -416,7 +423,8 @@ void Renderer::Impl::warm_up_particles(const RenderView& v, const ViewProjection
   frame.depth_copy = targets.scene_depth();
   begin_half_resolution(frame);
   particles.draw(warm, programs, rs, frame);
-  half_particles.composite(programs.particle_composite, targets.scene_fbo(), targets.scene_width(),
+  set_origin(false);
+  half_particles.composite(programs.particle_composite, targets.scene_color_fbo(), targets.scene_width(),
                            targets.scene_height(), {PixelRect{0, 0, 1, 1}});
   particles.forget_fragments();
 }
