@@ -59,6 +59,10 @@ SceneRegistrar::SceneRegistrar(const char* name, std::function<void()> fn, bool 
 // scene reported a failure; exit 2, with one line, for a scene name that does not exist, an
 // ARCFIRE_GFX_DUMP folder that does not, or a scene's input it cannot use.
 int main(int argc, char** argv) {
+  // Mesa's on-disk shader cache off (unless the caller set it either way): every run compiles
+  // as a fresh install does, so a variant the renderer's warm-up misses costs its frame in every
+  // run (combat_frame_max_ms), and no run's figures depend on the cache the one before left.
+  setenv("MESA_SHADER_CACHE_DISABLE", "true", 0);
   bool scenes_only = false;
   bool filtered = false;  // --benchmark_filter: only those micro-benchmarks, no scenes
   std::string only_scene;
