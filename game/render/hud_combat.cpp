@@ -14,7 +14,6 @@ namespace {
 
 const glm::vec4 kDamageRed{1.0f, 0.22f, 0.12f, 0.9f};
 const glm::vec4 kEdgeGlow{1.0f, 0.25f, 0.1f, 0.04f};
-constexpr double kGlyphAdvance = 7.0;  // canvas units per character at text scale 1 (ProggyClean)
 
 double seconds_since(const World& w, int64_t tick) { return double(w.tick - tick) * w.dt; }
 

@@ -22,6 +22,7 @@ inline const glm::vec4 kHudYellow{1.0f, 0.85f, 0.3f, 0.9f};
 inline const glm::vec4 kHudWhite{1.0f, 1.0f, 1.0f, 0.95f};
 inline const glm::vec4 kHudBack{0.0f, 0.0f, 0.0f, 0.45f};
 
+inline constexpr double kGlyphAdvance = 7.0;  // canvas units per character at text scale 1 (gfx/hud_font: ProggyClean)
 inline constexpr double kHudCanvasHeight = 720.0;  // HUD sizes are written for this window height
 inline constexpr double kHudSmallestScale = 1.0;  // smaller windows keep 720p sizes: the bitmap font
                                                   // (nearest-filtered) loses rows below scale 1

@@ -22,7 +22,6 @@ constexpr double kArrowMargin = 30.0;
 // own size, where its one-pixel strokes would blur away.
 double height_scale(int height) { return std::max(height / 720.0, 0.5); }
 double text_scale(double at_720, int height) { return std::max(at_720 * height_scale(height), 1.0); }
-constexpr double kGlyphAdvance = 7.0;     // pixels per character at text scale 1 (gfx/hud_font)
 constexpr double kGlyphLineHeight = 13.0; // pixels per line at text scale 1 (the font's size)
 
 std::string outcome_text(const World& w) {

@@ -74,7 +74,11 @@ void layout_radar(const World& w, const Ship& me, const HudRules& rules, double 
          cy + std::sin(a1) * half * 0.5, kRadarGrid, 1.0f);
   }
   const double range = radar_range(w, me, rules);
-  text(h, r.x + 4, r.y + 4, 0.9, kHudGreen, range_label(range));
+  // The range on a backing of its own: in the chase camera the radar sits over the ship's
+  // engine glow, which showed through the panel's and washed the label out.
+  const std::string label = range_label(range);
+  quad(h, r.x + 2, r.y + 2, kGlyphAdvance * 0.9 * double(label.size()) + 5.0, 15.0, kHudBack);
+  text(h, r.x + 4, r.y + 4, 0.9, kHudGreen, label);
   const glm::dquat inv = glm::conjugate(me.orientation);
   for (const Ship& s : w.ships) {
     if (!s.alive || s.id == me.id) continue;
