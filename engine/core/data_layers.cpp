@@ -127,23 +127,34 @@ void use_data_layers(DataLayers layers) { layers_in_use() = std::move(layers); }
 const DataLayers& data_layers() { return layers_in_use(); }
 
 namespace {
-bool is_base(const std::string& root) {
+// Where `folder` lies within the base in use: "" for the base itself, "shaders" for its
+// shaders/; false when it lies outside (or no layers are in use).
+bool within_base(const std::string& folder, std::string& rel) {
   const std::string& base = layers_in_use().base();
-  return !base.empty() && normal(root) == normal(base);
+  if (base.empty()) return false;
+  const std::string f = normal(folder), b = normal(base);
+  if (f == b) return rel = "", true;
+  if (f.size() <= b.size() || f.compare(0, b.size(), b) != 0 || f[b.size()] != '/') return false;
+  rel = f.substr(b.size() + 1);
+  return true;
 }
+std::string join(const std::string& a, const std::string& b) { return a.empty() ? b : a + "/" + b; }
 }  // namespace
 
 std::string data_file(const std::string& root, const std::string& rel) {
-  return is_base(root) ? layers_in_use().file(rel) : (fs::path(root) / rel).string();
+  std::string in;
+  return within_base(root, in) ? layers_in_use().file(join(in, rel)) : (fs::path(root) / rel).string();
 }
 
 std::vector<std::string> data_files(const std::string& root, const std::string& rel_dir, const std::string& ext) {
-  if (is_base(root)) return layers_in_use().files(rel_dir, ext);
+  std::string in;
+  if (within_base(root, in)) return layers_in_use().files(join(in, rel_dir), ext);
   return DataLayers(root).files(rel_dir, ext);
 }
 
 std::vector<std::string> data_dirs(const std::string& root, const std::string& rel_dir) {
-  if (is_base(root)) return layers_in_use().dirs(rel_dir);
+  std::string in;
+  if (within_base(root, in)) return layers_in_use().dirs(join(in, rel_dir));
   return DataLayers(root).dirs(rel_dir);
 }
 

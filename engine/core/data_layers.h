@@ -6,8 +6,9 @@
 // listings (effects, levels, ships) are the union by file name, the topmost file winning.
 //
 // One set of layers is in use per run (set at start, read-only after). Code that is given a
-// root folder asks data_file(root, rel): for the data root in use the mods apply, for any other
-// folder (a test's own data) the plain path is returned.
+// folder asks data_file(folder, rel): for the data root in use, or a folder within it
+// (root/shaders), the mods apply; for any other folder (a test's own data) the plain path is
+// returned.
 //
 //   DataLayers layers("/usr/share/arcfire");
 //   layers.add_mod("examples/mods/red_rally");       // InputError: not a folder, not a mod
@@ -59,7 +60,7 @@ constexpr size_t kMaxModFiles = 100000;
 // The layers in use (empty: none set, so data_file() returns plain paths).
 void use_data_layers(DataLayers layers);
 const DataLayers& data_layers();
-// root/rel through the layers in use when `root` is their base; root/rel otherwise.
+// root/rel through the layers in use when `root` is their base or lies within it; root/rel otherwise.
 std::string data_file(const std::string& root, const std::string& rel);
 std::vector<std::string> data_files(const std::string& root, const std::string& rel_dir, const std::string& ext);
 std::vector<std::string> data_dirs(const std::string& root, const std::string& rel_dir);

@@ -62,6 +62,10 @@ TEST_F(DataLayersTest, OnlyTheBaseInUseSeesTheMods) {
   EXPECT_EQ(data_file(base.string() + "/", "assets/effects/spark.json"), (mod_a / "assets/effects/spark.json").string());
   EXPECT_EQ(data_file(mod_b.string(), "assets/effects/spark.json"), (mod_b / "assets/effects/spark.json").string());
   EXPECT_EQ(data_files(base.string(), "assets/effects", ".json").size(), 3u);
+  // A folder within the base (the renderer's shaders/) resolves through the layers too.
+  EXPECT_EQ(data_file((base / "assets/effects").string(), "spark.json"), (mod_a / "assets/effects/spark.json").string());
+  EXPECT_EQ(data_file((base / "assets/effects").string(), "smoke.json"), (base / "assets/effects/smoke.json").string());
+  EXPECT_EQ(data_file(base.string() + "_other", "levels/duel.json"), base.string() + "_other/levels/duel.json");
 }
 
 TEST_F(DataLayersTest, ContentHashFollowsEveryByteAndName) {
