@@ -138,7 +138,7 @@ bool within_base(const std::string& folder, std::string& rel) {
   rel = f.substr(b.size() + 1);
   return true;
 }
-std::string join(const std::string& a, const std::string& b) { return a.empty() ? b : a + "/" + b; }
+std::string join(const std::string& a, const std::string& b) { return a.empty() ? b : b.empty() ? a : a + "/" + b; }
 }  // namespace
 
 std::string data_file(const std::string& root, const std::string& rel) {
