@@ -82,6 +82,9 @@ void DataLayers::add_mod(const std::string& dir) {
   ModLayer m;
   m.dir = normal(dir);
   m.name = fs::path(m.dir).filename().string();
+  const bool plain = !m.name.empty() && m.name.size() <= 64 &&
+                     m.name.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_-") == std::string::npos;
+  if (!plain) throw InputError("--mod " + dir + ": a mod's folder name must be 1 to 64 of A-Z a-z 0-9 _ - (replays record it)");
   for (const ModLayer& other : mods_)
     if (other.name == m.name) throw InputError("--mod " + dir + ": a mod named '" + m.name + "' is already laid (" + other.dir + ")");
   m.hash = content_hash(p);
