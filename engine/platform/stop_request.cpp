@@ -41,9 +41,10 @@ const char* stop_signal_name() {
   return "a signal";
 }
 
-void say_stopped(const std::string& where) {
+int report_stop(const std::string& where) {
   std::fflush(stdout);
   std::fprintf(stderr, "arcfire: stopped by %s %s\n", stop_signal_name(), where.c_str());
+  return stop_exit_code();
 }
 
 }  // namespace arc

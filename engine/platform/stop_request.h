@@ -9,7 +9,7 @@
 //
 //   install_stop_handlers();                 // once, first thing in main()
 //   for (t = 1; t <= ticks; ++t) { step(); if (stop_requested()) break; }
-//   if (stop_requested()) { say_stopped("at tick 12 of 600"); return stop_exit_code(); }
+//   if (stop_requested()) return report_stop("at tick 12 of 600");
 #pragma once
 #include <string>
 
@@ -24,7 +24,7 @@ inline bool stop_requested() { return stop_signal() != 0; }
 int stop_exit_code();
 // "SIGINT", "SIGTERM".
 const char* stop_signal_name();
-// One line on stderr: "arcfire: stopped by SIGINT " + where.
-void say_stopped(const std::string& where);
+// One line on stderr, "arcfire: stopped by SIGINT " + where; returns stop_exit_code().
+int report_stop(const std::string& where);
 
 }  // namespace arc

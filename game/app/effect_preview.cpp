@@ -230,11 +230,9 @@ int run_preview(const PreviewOptions& o) {
                             {"blended_pixels", drawn.particle_fragments}});
   }
   // SIGINT or SIGTERM: a strip short of frames would pass for the effect's whole life.
-  if (stop_requested()) {
-    say_stopped("at frame " + std::to_string(frames.size()) + " of " + std::to_string(ticks.size()) +
-                "; no filmstrip written");
-    return stop_exit_code();
-  }
+  if (stop_requested())
+    return report_stop("at frame " + std::to_string(frames.size()) + " of " + std::to_string(ticks.size()) +
+                       "; no filmstrip written");
   const std::string strip_path = (fs::path(o.out_dir) / "filmstrip.png").string();
   save_image(strip_path, filmstrip(frames));
   const nlohmann::json stats = {{"effect", name}, {"life_s", life}, {"ends", ends}, {"backdrop", o.backdrop},

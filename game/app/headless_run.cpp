@@ -82,10 +82,7 @@ int run_headless(const AppOptions& o) {
     std::printf("arcfire: contact sheet: %s\n", sheet.c_str());
   }
   if (!o.summary_path.empty()) std::printf("arcfire: summary: %s\n", o.summary_path.c_str());
-  if (stop_requested()) {
-    say_stopped("at tick " + std::to_string(game.tick()) + " of " + std::to_string(ticks));
-    return stop_exit_code();
-  }
+  if (stop_requested()) return report_stop("at tick " + std::to_string(game.tick()) + " of " + std::to_string(ticks));
   std::printf("arcfire: simulated %lld ticks of %s\n", static_cast<long long>(ticks), level.c_str());
   return kExitOk;
 }

@@ -114,8 +114,7 @@ int run_menu_script(const AppOptions& o) {
     if (!stop_requested()) run.snapshot();
   }
   if (!stop_requested()) return kExitOk;
-  say_stopped("at UI input " + std::to_string(done) + " of " + std::to_string(inputs.size()));
-  return stop_exit_code();
+  return report_stop("at UI input " + std::to_string(done) + " of " + std::to_string(inputs.size()));
 }
 
 }  // namespace arc

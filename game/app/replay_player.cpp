@@ -398,9 +398,9 @@ ReplayOutcome play_replay(const ReplayRunOptions& opt) {
     if (!opt.quiet || result.failures > 0)
       std::printf("%s: %d checks up to tick %llu, %d failed\n", opt.script_path.c_str(), result.checks,
                   static_cast<unsigned long long>(result.ticks), result.failures);
-    say_stopped("at tick " + std::to_string(result.ticks) + " of " + std::to_string(p.script().last_tick()) +
-                (opt.update_golden ? "; the golden files are unchanged" : ""));
-    result.exit_code = stop_exit_code();
+    result.exit_code = report_stop("at tick " + std::to_string(result.ticks) + " of " +
+                                   std::to_string(p.script().last_tick()) +
+                                   (opt.update_golden ? "; the golden files are unchanged" : ""));
     return result;
   }
   if (opt.update_golden) p.update_golden(text);

@@ -584,7 +584,7 @@ int run_window(const AppOptions& o) {
     last = now;
   }
   frame_times.finish();
-  if (stop_requested()) say_stopped("at tick " + std::to_string(session.tick()));  // ~WindowSession ends the recording
+  if (stop_requested()) report_stop("at tick " + std::to_string(session.tick()));  // ~WindowSession ends the recording
   if (session.write_failed()) return kExitCheckFailed;
   return stop_requested() ? stop_exit_code() : kExitOk;
 }

@@ -439,9 +439,7 @@ int run_workbench(const WorkbenchOptions& options) {
     session.frame(now - last);
     last = now;
   }
-  if (!stop_requested()) return kExitOk;
-  say_stopped("in the workbench");  // ~WorkbenchSession waits for the screenshots
-  return stop_exit_code();
+  return stop_requested() ? report_stop("in the workbench") : kExitOk;  // ~WorkbenchSession waits for the screenshots
 }
 
 }  // namespace arc

@@ -4,7 +4,7 @@
 #   window    a live session under xvfb-run with --record and --frame-times, keys fed by xdotool:
 #             exit 130 / 143, the stop line, the recording ends with `end` at the tick the line
 #             names and replays, the frame-time CSV is written; SIGINT then SIGTERM at once
-#             exits without writing the CSV.
+#             exits without writing the CSV, and the recording, cut off as by a crash, replays.
 #   headless  --headless --summary --audio-out and a replay: exit 130 / 143, the stop line, the
 #             summary of the tick reached, a WAV that is whole, no check failure and no golden
 #             updated; a second signal exits at once, writing nothing.
@@ -138,7 +138,12 @@ window() {
   local base="$out/window_twice" rc; rc=$(cat "$base.code")
   [ "$rc" = 143 ] || [ "$rc" = 130 ] || fail "two signals: exit $rc, expected 143 or 130"
   [ ! -e "$base.csv" ] || fail "two signals: the frame-time CSV was written, the second signal did not end it at once"
-  echo "window, two signals: exit $rc at once"
+  # Cut off without its `end`, as by a crash: whole lines still, and it replays.
+  [ "$(tail -c 1 "$base.replay" | od -An -c | tr -d ' ')" = '\n' ] || fail "two signals: the recording ends in a cut line"
+  ! grep -q " end$" "$base.replay" || fail "two signals: the recording was ended, the second signal did not end it at once"
+  "$arcfire" --headless --no-render --replay "$base.replay" --out "$base.replayed" >"$base.replay.log" 2>&1 ||
+    fail "two signals: the recording does not replay: $(cat "$base.replay.log")"
+  echo "window, two signals: exit $rc at once, the recording cut off without \`end\` replays"
 }
 
 case "$part" in
