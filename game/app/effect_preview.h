@@ -36,6 +36,7 @@ PreviewOptions preview_options(const AppOptions& app);
 std::string check_preview_backdrop(const std::string& backdrop, const std::string& root_dir);
 
 // Writes the filmstrip and stats; throws InputError (bad file, folder) or PlatformError.
+// SIGINT or SIGTERM stops it after the frame being drawn, writing neither (exit 130 or 143).
 int run_preview(const PreviewOptions& options);
 
 }  // namespace arc

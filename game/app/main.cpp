@@ -1,7 +1,8 @@
 // arcfire — entry point. Parses the command line and hands over to one of the modes:
 // window (play), headless frames / demo / summary, replay, serialization test.
 // Exit codes: 0 success, 1 a check failed (a write that failed on the way counts as one), 2 bad
-// input or usage (an output path that cannot be used too).
+// input or usage (an output path that cannot be used too), 130 or 143 stopped by SIGINT or SIGTERM
+// after the mode's files are written (platform/stop_request.h).
 #include <cstdio>
 #include <exception>
 
@@ -16,8 +17,10 @@
 #include "game/app/window_loop.h"
 #include "game/workbench/workbench_window.h"
 #include "platform/platform.h"
+#include "platform/stop_request.h"
 
 int main(int argc, char** argv) {
+  arc::install_stop_handlers();
   arc::AppOptions options;
   if (auto code = arc::parse_command_line(argc, argv, options)) return *code;
   try {

@@ -13,6 +13,7 @@
 #include "game/app/menu.h"
 #include "game/sim/game.h"
 #include "game/sim/world.h"
+#include "platform/stop_request.h"
 
 namespace arc {
 namespace {
@@ -28,7 +29,7 @@ struct MenuRun {
   int shot = 0;
 
   void advance(int ticks) {
-    for (int i = 0; i < ticks; ++i) game->step(InputFrame{});
+    for (int i = 0; i < ticks && !stop_requested(); ++i) game->step(InputFrame{});
   }
 
   void load(const std::string& level, Difficulty d) {
@@ -60,7 +61,9 @@ struct MenuRun {
   void fight(const MenuRequest& launch) {
     load(launch.level, launch.difficulty);
     const int64_t limit = o.ticks > 0 ? o.ticks : 7200;
-    for (int64_t t = 0; t < limit && game->world().outcome == Outcome::Undecided; ++t) game->step(InputFrame{});
+    for (int64_t t = 0; t < limit && game->world().outcome == Outcome::Undecided && !stop_requested(); ++t)
+      game->step(InputFrame{});
+    if (stop_requested()) return;  // an unfinished fight has no results to show or keep
     advance(60);
     snapshot();
     carry_out(menu.show_results(launch.level, launch.difficulty, mission_result(game->world())));
@@ -100,15 +103,18 @@ int run_menu_script(const AppOptions& o) {
     desc.root_dir = o.game.root_dir;
     if (!o.no_render) run.renderer = std::make_unique<FrameRenderer>(desc, o.settings, *run.game);
   }
-  run.snapshot();
-  for (const UiInput& in : inputs) {
+  if (!stop_requested()) run.snapshot();
+  // SIGINT or SIGTERM: at the end of the tick; the screens written so far stay.
+  size_t done = 0;
+  for (; done < inputs.size() && !stop_requested(); ++done) {
     const MenuScreen before = run.menu.screen();
-    run.carry_out(run.menu.handle(in));
+    run.carry_out(run.menu.handle(inputs[done]));
     if (run.menu.screen() == MenuScreen::Main && before == MenuScreen::Results) run.load(attract, Difficulty::Normal);
     run.advance(kTicksPerInput);
-    run.snapshot();
+    if (!stop_requested()) run.snapshot();
   }
-  return kExitOk;
+  if (!stop_requested()) return kExitOk;
+  return report_stop("at UI input " + std::to_string(done) + " of " + std::to_string(inputs.size()));
 }
 
 }  // namespace arc

@@ -7,7 +7,8 @@
 // (describe_page). A launched level is fought without input until it is decided (at most
 // --ticks, default 2 minutes of game time) and the results screen opens over it, as in the
 // window; the player's settings and progress are read and written in user_config_dir().
-// Without --out only the texts are printed, and no GL context is made.
+// Without --out only the texts are printed, and no GL context is made. SIGINT or SIGTERM stops
+// it at the end of the tick (the screens written so far stay), with exit code 130 or 143.
 #pragma once
 #include "game/app/app_options.h"
 

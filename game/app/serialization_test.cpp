@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "game/app/script_feeder.h"
+#include "platform/stop_request.h"
 #include "replay/script.h"
 
 namespace arc {
@@ -60,6 +61,9 @@ int run_serialization_test(const SerializationTestOptions& opt) {
           return diverged(t, "full hash", original.full_hash(), restored->full_hash());
     }
     if (t >= last) break;
+    if (stop_requested())  // SIGINT or SIGTERM: the ticks compared so far were equal
+      return report_stop("at tick " + std::to_string(t) + " of " + std::to_string(last) + " after " +
+                         std::to_string(saves) + " save/restore cycles, hashes equal so far");
     feed_original.step(original, t);
     if (restored) feed_restored.step(*restored, t);
   }

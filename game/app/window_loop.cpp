@@ -27,6 +27,7 @@
 #include "gfx/renderer.h"
 #include "gfx/screenshot.h"
 #include "platform/platform.h"
+#include "platform/stop_request.h"
 
 namespace arc {
 namespace {
@@ -572,7 +573,7 @@ int run_window(const AppOptions& o) {
   FrameTimeLog frame_times(o.frame_times_path);
   double last = session.time();
   bool drawn = false;
-  while (session.open()) {
+  while (session.open() && !stop_requested()) {  // Ctrl+C or a kill closes as the close button does
     const double now = session.time();
     // The frame that just ended: its whole interval (update, draw, swap) beside what the
     // renderer timed of it and the tick it showed.
@@ -583,7 +584,9 @@ int run_window(const AppOptions& o) {
     last = now;
   }
   frame_times.finish();
-  return session.write_failed() ? kExitCheckFailed : kExitOk;
+  if (stop_requested()) report_stop("at tick " + std::to_string(session.tick()));  // ~WindowSession ends the recording
+  if (session.write_failed()) return kExitCheckFailed;
+  return stop_requested() ? stop_exit_code() : kExitOk;
 }
 
 }  // namespace arc

@@ -8,7 +8,8 @@
 
 namespace arc {
 
-// Exit code 2 without a display or with a bad bindings or level file; 0 when the window closes.
+// Exit code 2 without a display or with a bad bindings or level file; 0 when the window closes;
+// 130 or 143 when SIGINT or SIGTERM closes it, with the close button's files all written.
 int run_window(const AppOptions& options);
 
 }  // namespace arc

@@ -22,8 +22,9 @@ struct WorkbenchOptions {
   bool vsync = true;
 };
 
-// Runs until the window closes or Esc; returns the exit code (0). Bad input (the effect file,
-// assets) throws InputError before the window opens; no display throws PlatformError.
+// Runs until the window closes or Esc; returns the exit code (0; 130 or 143 when SIGINT or
+// SIGTERM closes it as the close button does, without saving edits). Bad input (the effect
+// file, assets) throws InputError before the window opens; no display throws PlatformError.
 int run_workbench(const WorkbenchOptions& options);
 
 }  // namespace arc
