@@ -81,6 +81,10 @@ void WindowSession::setup() {
 
 void WindowSession::update(double frame_seconds) {
   window_->poll(devices_);
+  // Capturing or releasing the cursor moves it (virtual and real positions differ): not a
+  // move of the player's that should hover a menu item.
+  if (cursor_jumped_) previous_devices_.mouse_x = devices_.mouse_x, previous_devices_.mouse_y = devices_.mouse_y;
+  cursor_jumped_ = false;
   if (panel_->wants_mouse()) devices_.mouse_buttons = {}, devices_.mouse_presses = {};  // clicks on the panel
   input_->set_screen_height(window_->framebuffer_height());
   input_->sample(devices_);
@@ -94,6 +98,7 @@ void WindowSession::update(double frame_seconds) {
   if (capture != mouse_captured_) {
     window_->set_mouse_captured(capture);
     mouse_captured_ = capture;
+    cursor_jumped_ = true;
     input_->discard_mouse_motion();
   }
   if (panel_->open()) input_->discard_mouse_motion();  // the cursor is the panel's

@@ -103,6 +103,7 @@ class WindowSession {
   ScreenNotices notices_;  // the notice line and the FPS counter
   RenderView view_;
   bool mouse_captured_ = true;
+  bool cursor_jumped_ = false;  // captured or released since the last poll
   bool want_screenshot_ = false;
   ScreenshotWriter screenshots_{"out/screenshots", "arcfire"};  // F12, written in the background
   HotReload reload_;           // levels, ships, effects, shaders and sounds
