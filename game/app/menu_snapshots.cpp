@@ -1,16 +1,18 @@
 // The menu headless: scripted UI inputs, the attract demo behind, a PNG and a text per screen.
 #include "game/app/menu_snapshots.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <sstream>
 
 #include "core/error.h"
 #include "core/file_writer.h"
 #include "core/json.h"
 #include "core/settings.h"
 #include "game/app/frame_renderer.h"
-#include "game/app/menu.h"
+#include "game/app/key_remap.h"
 #include "game/sim/game.h"
 #include "game/sim/world.h"
 #include "platform/stop_request.h"
@@ -88,6 +90,52 @@ Menu make_menu(const AppOptions& o) {
 }
 
 }  // namespace
+
+std::vector<UiInput> parse_ui_inputs(const std::string& text, const std::string& path) {
+  std::vector<UiInput> out;
+  std::istringstream lines(text);
+  std::string line;
+  for (int n = 1; std::getline(lines, line); ++n) {
+    line = line.substr(0, line.find('#'));
+    std::istringstream words(line);
+    std::string w;
+    auto fail = [&](const std::string& what) {
+      const size_t col = line.find(w) + 1;
+      throw InputError(path + ":" + std::to_string(n) + ":" + std::to_string(col) + ": " + what);
+    };
+    while (words >> w) {
+      static const std::vector<std::pair<std::string, UiKey>> keys = {
+          {"up", UiKey::Up}, {"down", UiKey::Down}, {"left", UiKey::Left}, {"right", UiKey::Right},
+          {"accept", UiKey::Accept}, {"back", UiKey::Back}};
+      auto k = std::find_if(keys.begin(), keys.end(), [&](const auto& p) { return p.first == w; });
+      if (k != keys.end()) {
+        out.push_back(UiInput::press(k->second));
+        continue;
+      }
+      std::string arg;
+      if ((w != "click" && w != "hover" && w != "bind") || !(words >> arg))
+        fail("unknown UI input '" + w + "'; allowed: up, down, left, right, accept, back, click N, hover N, bind KEY");
+      if (w == "bind") {
+        if (code_of_label(arg) < 0) fail("'" + arg + "' is not a key name (A, SPACE, MOUSE_LEFT, PAD_A, ...)");
+        out.push_back(UiInput::bind(code_of_label(arg)));
+      } else {
+        const int item = std::atoi(arg.c_str());
+        out.push_back(w == "click" ? UiInput::click(item) : UiInput::hover(item));
+      }
+    }
+  }
+  return out;
+}
+
+std::string describe_page(const MenuPage& p) {
+  std::string out = "title: " + p.title + "\n";
+  if (!p.subtitle.empty()) out += "subtitle: " + p.subtitle + "\n";
+  if (!p.paragraph.empty()) out += "paragraph: " + p.paragraph + "\n";
+  for (const std::string& l : p.lines) out += "line: " + l + "\n";
+  for (size_t i = 0; i < p.items.size(); ++i) out += (int(i) == p.selection ? "> " : "  ") + p.items[i] + "\n";
+  if (!p.message.empty()) out += "message: " + p.message + "\n";
+  return out;
+}
 
 int run_menu_script(const AppOptions& o) {
   const std::vector<UiInput> inputs = parse_ui_inputs(read_text_file(o.menu_script), o.menu_script);

@@ -1,7 +1,8 @@
 // game/app/window_loop.h — the live game in a window: fixed-step simulation, interpolated
-// rendering, devices to InputFrames, pause menu, screenshots, hot reload, optional recording.
+// rendering, devices to InputFrames, the menus and the pause screen, screenshots, hot reload,
+// optional recording.
 //
-// run_window() drives a WindowSession (window_loop.cpp) the way raylib's examples are laid
+// run_window() drives a WindowSession (window_session.h) the way raylib's examples are laid
 // out: setup() once, then update(frame seconds) and draw() every frame until the window closes.
 #pragma once
 #include "game/app/app_options.h"

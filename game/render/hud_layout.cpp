@@ -24,42 +24,20 @@ double height_scale(int height) { return std::max(height / 720.0, 0.5); }
 double text_scale(double at_720, int height) { return std::max(at_720 * height_scale(height), 1.0); }
 constexpr double kGlyphLineHeight = 13.0; // pixels per line at text scale 1 (the font's size)
 
-std::string outcome_text(const World& w) {
-  return w.outcome == Outcome::Victory  ? "VICTORY"
-         : w.outcome == Outcome::Defeat ? "DEFEAT"
-                                        : "TEAM " + w.team_name(w.winner) + " WINS";
-}
-
 void centred_text(HudLayer& h, double cx, double y, double scale, const glm::vec4& c, const std::string& s) {
   text(h, cx - s.size() * kGlyphAdvance * scale * 0.5, y, scale, c, s);
 }
 
-// Victory or defeat stays on screen; with the menu open it is the menu's title.
+// Victory or defeat stays on screen; with a menu open (the pause screen, the results) it is
+// the menu's title.
 void hud_outcome(const World& w, int width, int height, HudLayer& h) {
   if (w.outcome == Outcome::Undecided) return;
   const double k = height_scale(height);
   const glm::vec4 c = w.outcome == Outcome::Defeat ? kHudRed : kHudGreen;
-  centred_text(h, width * 0.5, height * 0.3 - (w.paused ? 70 * k : 0.0), text_scale(3.0, height), c, outcome_text(w));
+  centred_text(h, width * 0.5, height * 0.3, text_scale(3.0, height), c, outcome_text(w));
   if (w.paused || !w.player) return;
   const std::string hint = "Esc: menu (retry, difficulty, quit)";
   centred_text(h, width * 0.5, height * 0.3 + 48 * k, text_scale(1.2, height), kHudWhite, hint);
-}
-
-void hud_pause_menu(const World& w, const HudState& state, int width, int height, HudLayer& h) {
-  if (!w.paused) return;
-  const double k = height_scale(height), item_scale = text_scale(1.6, height), row = 22.5 * item_scale;
-  quad(h, 0, 0, width, height, {0.0f, 0.0f, 0.05f, 0.55f});
-  if (w.outcome == Outcome::Undecided)
-    centred_text(h, width * 0.5, height * 0.3, text_scale(2.5, height), kHudWhite, "PAUSED");
-  size_t longest = 0;
-  for (const std::string& item : state.pause_items) longest = std::max(longest, item.size());
-  const double box = longest * kGlyphAdvance * item_scale + 40 * k;
-  for (size_t i = 0; i < state.pause_items.size(); ++i) {
-    const bool sel = int(i) == state.pause_selection;
-    const double y = height * 0.4 + row * i;
-    if (sel) quad(h, width * 0.5 - box * 0.5, y - 4 * item_scale, box, 20 * item_scale, {0.3f, 0.6f, 1.0f, 0.35f});
-    centred_text(h, width * 0.5, y, item_scale, sel ? kHudYellow : kHudWhite, state.pause_items[i]);
-  }
 }
 
 // Text wrapped within the screen's margins on a dark band centred across it, `top` down.
@@ -244,6 +222,12 @@ void labels(const World& w, const Projector& pr, int width, int height, HudLayer
 
 }  // namespace
 
+std::string outcome_text(const World& w) {
+  return w.outcome == Outcome::Victory  ? "VICTORY"
+         : w.outcome == Outcome::Defeat ? "DEFEAT"
+                                        : "TEAM " + w.team_name(w.winner) + " WINS";
+}
+
 void layout_hud(const World& w, const CameraView& cam, const HudState& state, double alpha, int width, int height,
                 HudLayer& h) {
   alpha = std::clamp(alpha, 0.0, 1.0);
@@ -273,7 +257,6 @@ void layout_hud(const World& w, const CameraView& cam, const HudState& state, do
   }
   hud_reticle(state.reticle, width, height, h);
   if (state.show_outcome) hud_outcome(w, width, height, h);
-  hud_pause_menu(w, state, width, height, h);
   hud_messages(state, width, height, h);
   scale_hud(h, scale);
 }

@@ -6,8 +6,8 @@
 // brackets with the beam range cue or an off-screen arrow (kept off the radar), the lead
 // indicator, the target's bars, the radar (hud_radar.h) and the combat cues (hud_combat.h:
 // hit markers, damage direction, missile warning); the set throttle and the speed; victory or
-// defeat (kept above the pause menu); the FPS counter, the pause menu, the mouse-joystick
-// reticle, a notice line and the reload-error banner (wrapped to the screen).
+// defeat; the FPS counter, the mouse-joystick reticle, a notice line and the reload-error
+// banner (wrapped to the screen). The pause screen is a menu page (menu_layout.h) over it.
 // build_render_view() calls it last, with the frame's camera.
 //
 // Every size is written for a window 720 pixels high and the finished layer is scaled to the
@@ -15,8 +15,7 @@
 // windows less than 720 pixels high keep the 720p sizes, where the bitmap font stays sharp.
 //
 // HudState is what the app knows and the World does not: whether the HUD and the FPS counter
-// are on, the measured frame rate, the pause menu's items and selection, the reticle, and the
-// notice and error texts.
+// are on, the measured frame rate, the reticle, and the notice and error texts.
 #pragma once
 #include <string>
 #include <vector>
@@ -40,8 +39,6 @@ struct HudState {
   bool show_fps = false;    // FPS counter (F3)
   double fps = 0;           // shown when show_fps
   std::string frame_stats;  // shown under it when show_fps: the renderer's particle figures
-  int pause_selection = 0;  // highlighted pause-menu item while the game is paused
-  std::vector<std::string> pause_items{"Resume", "Restart", "Difficulty: normal", "Quit"};
   HudReticle reticle;
   std::string notice;        // one line at the top centre (e.g. "Recording stopped ...")
   std::string error_banner;  // a failed hot reload, wrapped within the screen below the objective
@@ -52,6 +49,9 @@ struct HudState {
 // in a width × height frame.
 void layout_hud(const World& world, const CameraView& camera, const HudState& state, double alpha, int width,
                 int height, HudLayer& out);
+
+// A decided fight's verdict: "VICTORY" or "DEFEAT" for the player, else "TEAM NAME WINS".
+std::string outcome_text(const World& w);
 
 // The box a text of the layer covers, in the layer's pixels: every line of the bitmap font
 // (gfx/hud_font, ProggyClean) is 13 pixels high and each character 7 wide at scale 1. Tests

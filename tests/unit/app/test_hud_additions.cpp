@@ -73,25 +73,6 @@ TEST(HudAdditions, ThrottleAndSpeedAreShown) {
   EXPECT_FLOAT_EQ(find_text(big, " m/s")->scale, 2.0f * speed->scale);  // scaled with the height
 }
 
-TEST(HudAdditions, OutcomeStaysAboveTheMenu) {
-  arc::Game game = duel();
-  game.world_mut().outcome = arc::Outcome::Defeat;
-  game.world_mut().paused = true;
-  arc::HudState state;
-  state.pause_items = {"Retry", "Resume", "Difficulty: hard (applies on retry)", "Quit"};
-  const arc::HudLayer h = hud_of(game, state, 1280, 720);
-  const arc::HudText* defeat = find_text(h, "DEFEAT");
-  const arc::HudText* retry = find_text(h, "Retry");
-  ASSERT_NE(defeat, nullptr);
-  ASSERT_NE(retry, nullptr);
-  EXPECT_LT(defeat->y + 13 * defeat->scale, retry->y);
-  EXPECT_EQ(find_text(h, "PAUSED"), nullptr);
-  const arc::HudText* difficulty = find_text(h, "applies on retry");
-  ASSERT_NE(difficulty, nullptr);
-  EXPECT_GE(difficulty->x, 0.0f);
-  EXPECT_LE(difficulty->x + difficulty->text.size() * kGlyphAdvance * difficulty->scale, 1280.0f);
-}
-
 TEST(HudAdditions, ReticleIsDrawnOnlyWhenShown) {
   arc::Game game = duel();
   arc::HudState state;
