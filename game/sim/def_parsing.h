@@ -1,5 +1,7 @@
-// game/sim/def_parsing.h — what the definition loaders share (internal to game/sim): value limits,
-// point lists, orientations and the mission block reader the level loader calls.
+// game/sim/def_parsing.h — what the definition loaders share (internal to game/sim).
+//
+// Value limits, point lists and orientations read alike by ship_class_defs.cpp and
+// level_defs.cpp, and the mission block reader (mission_defs.cpp) the level loader calls.
 #pragma once
 #include <memory>
 #include <string>
