@@ -75,7 +75,8 @@ std::vector<Comment> c_comments(const std::string& t) {
     } else if (c == 'R' && i + 1 < n && t[i + 1] == '"' && (i == 0 || !std::isalnum(static_cast<unsigned char>(t[i - 1])))) {
       const size_t open = t.find('(', i + 2);
       if (open == std::string::npos) break;
-      const std::string end = ")" + t.substr(i + 2, open - i - 2) + "\"";
+      std::string end(1, ')');  // ")delimiter\""
+      end.append(t, i + 2, open - i - 2).push_back('"');
       const size_t close = t.find(end, open);
       const size_t stop = close == std::string::npos ? n : close + end.size();
       for (; i < stop; ++i) line += t[i] == '\n';
