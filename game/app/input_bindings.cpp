@@ -63,7 +63,7 @@ int8_t quantise_carrying(double base, double mouse, double& carry) {
 
 }  // namespace
 
-// Long: one line per bound action, in the file's order; splitting would only scatter the list.
+// One line per bound action, in the file's order.
 static Bindings bindings_from(const std::shared_ptr<const JsonDoc>& doc) {
   JsonObject root = JsonValue(doc, "", &doc->root()).object();
   Bindings b;

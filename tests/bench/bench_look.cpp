@@ -1,6 +1,6 @@
-// The look's costs and effect (issue 14), in one run at 1280×720 through EGL:
+// The look's costs and effect, in one run at 1280×720 through EGL:
 //  - hdr_bloom_frame_ratio(_battle): the gallery (tick 240) and the arena battle (tick 600)
-//    with the HDR scene, tone map and bloom (low) against the 8-bit scene as before HDR, both
+//    with the HDR scene, tone map and bloom (low) against the plain 8-bit scene, both
 //    without anti-aliasing; hdr_format_frame_ratio(_battle): the HDR frame with an
 //    R11F_G11F_B10F scene against RGBA16F (the format the renderer uses, being the cheaper);
 //  - antialias_frame_ratio_<mode>(_battle): fxaa, msaa2 and msaa4 against off, HDR and bloom on;

@@ -1,4 +1,4 @@
-// scene_work: "model only what a scene requires", frame by frame (issue 19 item 5). The arena
+// scene_work: "model only what a scene requires", frame by frame. The arena
 // battle from tick 420 to 600, every third tick drawn at 1280×720 with the default settings
 // from the chase camera; each frame prints the work done beside the work skipped:
 //   clusters  animated / culled (outside the view or beyond particles.cull_distance: their

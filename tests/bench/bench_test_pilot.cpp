@@ -1,6 +1,6 @@
 // The test pilot's duel (tests/unit/game/test_pilot.h): a person who sees only the HUD, reacts
 // after 200 ms and aims with a wandering hand, against the AI of levels/duel.json over 20 seeds
-// per difficulty, and a pilot who does nothing. Targets (issue 12): wins >= 90 % on easy,
+// per difficulty, and a pilot who does nothing. Targets: wins >= 90 % on easy,
 // 50–80 % on normal, 15–45 % on hard, median time to win under 90 s on normal, and the idle
 // pilot loses every fight. Simulation only (no GL); about a minute on two shared cores.
 //   test_pilot_win_rate_easy / _normal / _hard   share of fights won

@@ -1,5 +1,5 @@
 // tradeoffs: every setting that trades speed for accuracy, measured against the reference
-// preset in one run (issue 19). Rows go to out/tradeoffs.csv (tools/plot_tradeoffs.py draws
+// preset in one run. Rows go to out/tradeoffs.csv (tools/plot_tradeoffs.py draws
 // them, with the Pareto front and the presets, into out/tradeoffs.png).
 //
 // Rendering: the reference preset with ONE render key changed per row (soft-edge method,
@@ -87,11 +87,11 @@ struct Row {
   double cost = 0;  // frame or tick ratio against the reference
 };
 
-// Whole configurations the presets were chosen from (applied to Settings::defaults(), as a
-// preset is): cheap and accurate combinations of the settings above. Two more were chosen and
-// are measured as the presets now: "accurate_s1.25_msaa2" (scale 1.25, msaa2, sky 512, bloom
-// high, full-resolution particles) became high, "s1_aa_off" (scale 1, no AA, bloom high,
-// full-resolution particles) medium; the old high and medium are kept here for comparison.
+// Whole configurations the presets are chosen from (applied to Settings::defaults(), as a
+// preset is): cheap and accurate combinations of the settings above. The high preset (scale
+// 1.25, msaa2, sky 512, bloom high, full-resolution particles) and medium (scale 1, no AA,
+// bloom high, full-resolution particles) are measured as presets; "old_high" and "old_medium"
+// are FXAA configurations kept as points of comparison.
 const std::pair<const char*, const char*> kCandidates[] = {
     {"accurate_s1.5_aa_off", "render.scale=1.5 render.antialias=off render.sky_resolution=512 render.bloom=high render.hdr=true"
                              " render.particle_resolution=full"},

@@ -1,5 +1,5 @@
-// tests/unit/game/test_gallery_frames.cpp — the effect gallery rendered headless at 1280x720
-// (issue 14 item 5): in every cell of its 4 × 3 grid the effect covers a readable share of the
+// tests/unit/game/test_gallery_frames.cpp — the effect gallery rendered headless at 1280x720:
+// in every cell of its 4 × 3 grid the effect covers a readable share of the
 // cell at its fullest, and stays mostly within it. The share is measured as the pixels the
 // particles change (the frame against the same frame without particles), over ticks that catch
 // each effect's phases. ARCFIRE_GFX_DUMP=DIR saves the frames.

@@ -1,4 +1,4 @@
-// tests/unit/game/test_hull_look.cpp — hulls that read in battle (issue 14 item 4), rendered
+// tests/unit/game/test_hull_look.cpp — hulls that read in battle, rendered
 // headless through EGL at 1280x720 with the game's own models and mesh shader:
 // ClassesReadApartAt300Metres: a Viper, a Dart and a Warden of one team 300 m away each cover
 // a readable patch, stand out from the sky and differ from one another in colour;

@@ -1,7 +1,7 @@
 // The usage examples of the particle headers' banners, as tests: each TEST body holds its
 // banner's example line for line (HeaderExamples.MatchTheirTests in tests/unit/core checks
 // that), so an example that stops compiling or working fails here. Also the drawn-owner
-// placement collect() offers the renderer (issue 11, item 7).
+// placement collect() offers the renderer.
 #include <gtest/gtest.h>
 
 #include <algorithm>
