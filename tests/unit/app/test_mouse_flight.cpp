@@ -95,9 +95,9 @@ TEST(MouseFlight, HalfTurnTakesAbout1500PixelsAtAnyFrameRate) {
   }
 }
 
-// A flick faster than the ship can turn still turns it all the way (700 px in 0.35 s mean
-// 84 degrees at 0.12 degrees per pixel; a dropped excess turned about 12), at every frame rate;
-// a slow move is unchanged (350 px over one second: 42 degrees).
+// A flick faster than the ship can turn still turns it all the way, at its full turn rate
+// (700 px in 0.35 s mean 84 degrees at 0.12 degrees per pixel), at every frame rate; a slow
+// move turns by its pixels (350 px over one second: 42 degrees).
 TEST(MouseFlight, FlickTurnsAsFarAsTheMouseWent) {
   for (double fps : {20.0, 60.0, 144.0}) {
     const TurnRun flick = turn_from_mouse(700, 2000, fps);
