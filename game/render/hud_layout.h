@@ -48,11 +48,6 @@ struct HudState {
   HudRules rules;           // tunable numbers (assets/settings/hud.json), also the own-effect view rules
 };
 
-// Replaces `out` with the HUD for `camera` (interpolated like the meshes, by `alpha` in [0, 1])
-// in a width × height frame.
-void layout_hud(const World& world, const CameraView& camera, const HudState& state, double alpha, int width,
-                int height, HudLayer& out);
-
 // The box a text of the layer covers, in the layer's pixels: every line of the bitmap font
 // (gfx/hud_font, ProggyClean) is 13 pixels high and each character 7 wide at scale 1. Tests
 // check with it that texts (the gallery's labels) neither overlap nor leave the screen.
@@ -60,6 +55,19 @@ struct HudBox {
   double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
 };
 HudBox text_box(const HudText& t);
+
+// A panel of the HUD (own bars, radar, target panel, weapon text, objective, kill feed, notice,
+// error banner) and the box of everything it drew, in window pixels: the panels must neither
+// overlap nor leave the screen at any window size (tests/unit/game/test_hud_layout.cpp).
+struct HudPanelBox {
+  std::string name;
+  HudBox box;
+};
+
+// Replaces `out` with the HUD for `camera` (interpolated like the meshes, by `alpha` in [0, 1])
+// in a width × height frame; `panels`, when given, receives the box of each panel drawn.
+void layout_hud(const World& world, const CameraView& camera, const HudState& state, double alpha, int width,
+                int height, HudLayer& out, std::vector<HudPanelBox>* panels = nullptr);
 
 // `text` broken at spaces (and inside words longer than a line; its own line breaks count as
 // spaces) into lines of at most `max_chars` characters; at most `max_lines`, the last ending
