@@ -18,7 +18,6 @@ namespace arc {
 namespace {
 
 constexpr double kTwoPi = 6.283185307179586;
-constexpr double kArrowMargin = 30.0;   // canvas units the off-screen arrow keeps from the edges
 constexpr double kBeamRingRadius = 20.0;
 
 void centred_text(HudLayer& h, double cx, double y, double scale, const glm::vec4& c, const std::string& s) {
@@ -43,7 +42,8 @@ void crosshair(const World& w, const Ship& me, const Projector& pr, double alpha
   line(h, c.x, c.y + 5, c.x, c.y + 14, kHudGreen);
   if (beam_would_hit(w, me)) {
     circle(h, c, kBeamRingRadius, kHudGreen, 2.5f, 32);
-    text(h, c.x + kBeamRingRadius * 0.8, c.y + kBeamRingRadius * 0.8, 1.0, kHudGreen, "BEAM");
+    // On the left: the target's own labels stand right of and under it.
+    text(h, c.x - kBeamRingRadius - 12.0 - 4 * kGlyphAdvance, c.y - 6.0, 1.0, kHudGreen, "BEAM");
   } else {
     circle(h, c, kBeamRingRadius, faded(kHudGreen, 0.3), 1.0f, 32);
   }
@@ -52,7 +52,7 @@ void crosshair(const World& w, const Ship& me, const Projector& pr, double alpha
 // The missile cue around the target at `px` (brackets' half-size r): a circle, whole when a
 // missile launched now reaches the target, broken otherwise, and its label.
 void missile_cue(HudLayer& h, glm::dvec2 px, double r, bool ready) {
-  const double radius = r + 8.0;
+  const double radius = r + 10.0;
   const glm::vec4 col = ready ? kHudYellow : faded(kHudYellow, 0.55);
   circle(h, px, radius, col, ready ? 2.5f : 1.5f, 32, ready ? 1 : 2);
   text(h, px.x + radius + 5.0, px.y - 6.0, 1.0, col, "MSL");
@@ -87,34 +87,36 @@ void bracket_readout(HudLayer& h, const Ship& t, glm::dvec2 px, double r, double
   centred_text(h, px.x, top + 10.0, 1.0, faded(kHudWhite, 0.8), fmt("%.0f m", dist));
 }
 
-// Where the off-screen arrow toward `dir` (from the centre) points from: on an ellipse inside
-// the screen edges, lifted above the avoided box when it would fall on it.
-glm::dvec2 offscreen_arrow_tip(glm::dvec2 dir, double canvas_w, double canvas_h, const HudRect& avoid) {
-  const double rx = canvas_w * 0.5 - kArrowMargin, ry = canvas_h * 0.5 - kArrowMargin;
-  glm::dvec2 tip(canvas_w * 0.5 + dir.x * rx, canvas_h * 0.5 + dir.y * ry);
-  const double reach = 20.0 + kArrowMargin * 0.5;  // the arrow's size around its tip, and a gap
-  if (avoid.overlaps(tip.x - reach, tip.y - reach, 2.0 * reach, 2.0 * reach)) tip.y = avoid.y - reach;
-  return tip;
+// Where the off-screen arrow toward `dir` (from the screen centre) points from: where that ray
+// leaves `area`, the part of the screen between the HUD's panels.
+glm::dvec2 offscreen_arrow_tip(glm::dvec2 dir, double canvas_w, double canvas_h, const HudRect& area) {
+  const glm::dvec2 c(std::clamp(canvas_w * 0.5, area.x, area.x + area.w), std::clamp(canvas_h * 0.5, area.y, area.y + area.h));
+  double t = 1e30;
+  if (dir.x > 1e-9) t = std::min(t, (area.x + area.w - c.x) / dir.x);
+  if (dir.x < -1e-9) t = std::min(t, (area.x - c.x) / dir.x);
+  if (dir.y > 1e-9) t = std::min(t, (area.y + area.h - c.y) / dir.y);
+  if (dir.y < -1e-9) t = std::min(t, (area.y - c.y) / dir.y);
+  return c + dir * std::max(t, 0.0);
 }
 
 void offscreen_arrow(HudLayer& h, const Projector& pr, const glm::dvec3& at, double dist, double canvas_w,
-                     double canvas_h, const HudRect& avoid, const glm::vec4& col) {
+                     double canvas_h, const HudRect& area, const glm::vec4& col) {
   const glm::dvec3 v = pr.to_view(at);
   glm::dvec2 dir(v.x, -v.y);
   const double len = std::sqrt(dir.x * dir.x + dir.y * dir.y);
   dir = len > 1e-9 ? dir / len : glm::dvec2(0, 1);
-  const glm::dvec2 tip = offscreen_arrow_tip(dir, canvas_w, canvas_h, avoid);
+  const glm::dvec2 tip = offscreen_arrow_tip(dir, canvas_w, canvas_h, area);
   const glm::dvec2 side(-dir.y, dir.x);
   const glm::dvec2 b0 = tip - dir * 18.0 + side * 10.0, b1 = tip - dir * 18.0 - side * 10.0;
   line(h, tip.x, tip.y, b0.x, b0.y, col, 3.0f);
   line(h, tip.x, tip.y, b1.x, b1.y, col, 3.0f);
   line(h, b0.x, b0.y, b1.x, b1.y, col, 3.0f);
-  // The distance just inside the arrow's base, kept within the screen.
+  // The distance just inside the arrow's base, kept within the area.
   const std::string label = fmt("%.0f m", dist);
   const double half_w = 0.5 * kGlyphAdvance * double(label.size());
-  const glm::dvec2 at_text = tip - dir * 38.0;
-  const double cx = std::clamp(at_text.x, half_w + 4.0, canvas_w - half_w - 4.0);
-  const double y = std::clamp(at_text.y - 6.0, 4.0, canvas_h - 17.0);
+  const glm::dvec2 at_text = tip - dir * (26.0 + std::fabs(dir.x) * half_w + std::fabs(dir.y) * 9.0);
+  const double cx = std::clamp(at_text.x, area.x + half_w, std::max(area.x + half_w, area.x + area.w - half_w));
+  const double y = std::clamp(at_text.y - 6.0, area.y, std::max(area.y, area.y + area.h - 13.0));
   centred_text(h, cx, y, 1.0, col, label);
 }
 
@@ -143,7 +145,7 @@ bool missile_ready(const Ship& me, const Ship& t) {
 }
 
 void layout_aim_cues(const World& w, const Ship& me, const Projector& pr, double alpha, double canvas_w,
-                     double canvas_h, const HudRect& avoid, HudLayer& h) {
+                     double canvas_h, const HudRect& arrow_area, HudLayer& h) {
   if (w.paused) return;  // the pause menu stands in the middle of the screen
   crosshair(w, me, pr, alpha, canvas_w, canvas_h, h);
   if (!me.target || !w.ship(me.target).alive) return;
@@ -155,7 +157,7 @@ void layout_aim_cues(const World& w, const Ship& me, const Projector& pr, double
   double depth = 0;
   const bool in_front = pr.project(tp, px, &depth);
   if (!(in_front && px.x >= 0 && px.x <= canvas_w && px.y >= 0 && px.y <= canvas_h)) {
-    offscreen_arrow(h, pr, tp, dist, canvas_w, canvas_h, avoid, col);
+    offscreen_arrow(h, pr, tp, dist, canvas_w, canvas_h, arrow_area, col);
     return;
   }
   const double r = std::max(t.cls->shield_radius * pr.focal / depth, 14.0);

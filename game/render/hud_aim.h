@@ -11,7 +11,8 @@
 //                the target is within the missile's reach and launch cone (missile_ready()),
 //                broken otherwise; missiles home on the target, so they need no lead point;
 //   plasma lead  with plasma selected: a diamond labelled "PLS" where the bolts meet the target;
-//   off-screen   an arrow at the screen edge toward a target out of view, its distance beside it.
+//   off-screen   an arrow toward a target out of view, where the line from the screen centre
+//                toward it leaves the area between the HUD's panels, its distance beside it.
 // Sizes are in canvas units (hud_draw.h); nothing is remembered between frames.
 #pragma once
 #include "game/render/hud_radar.h"
@@ -32,9 +33,9 @@ bool beam_would_hit(const World& w, const Ship& me);
 inline constexpr double kMissileConeSeconds = 0.5;
 bool missile_ready(const Ship& me, const Ship& t);
 
-// The crosshair with its beam ring, and the target's cues (or the off-screen arrow). `avoid`
-// is a box the off-screen arrow keeps clear of (the radar). Not drawn while paused.
+// The crosshair with its beam ring, and the target's cues (or the off-screen arrow, drawn
+// within `arrow_area`). Not drawn while paused.
 void layout_aim_cues(const World& w, const Ship& me, const Projector& pr, double alpha, double canvas_w,
-                     double canvas_h, const HudRect& avoid, HudLayer& h);
+                     double canvas_h, const HudRect& arrow_area, HudLayer& h);
 
 }  // namespace arc

@@ -21,7 +21,7 @@ namespace {
 double height_scale(int height) { return std::max(height / 720.0, 0.5); }
 double text_scale(double at_720, int height) { return std::max(at_720 * height_scale(height), 1.0); }
 constexpr double kGlyphLineHeight = 13.0; // pixels per line at text scale 1 (the font's size)
-constexpr double kLeftMargin = 24.0;      // canvas units at 720p from the left edge to the panels there
+constexpr double kLeftMargin = 24.0;      // canvas units from the left edge to the panels there
 constexpr double kSideMargin = 12.0;      // at 720p, the least gap to the right edge and between panels
 constexpr double kBarLabelRise = 16.0;    // bar() puts its label this far above the bar, at text scale 1
 constexpr double kKillFeedRow = 18.0;     // layout_kill_feed()'s line spacing
@@ -47,6 +47,26 @@ TargetPanelRows target_panel_rows(int height) {
 double target_panel_bottom(int height) {
   const TargetPanelRows r = target_panel_rows(height);
   return r.hull_y + r.bar_h;
+}
+
+// The own bars' row spacing and the first bar's top, at the bottom left.
+double own_bar_row(int height) {
+  const double k = height_scale(height);
+  return std::max(34 * k, kBarLabelRise + 12 * k + 4);
+}
+double own_bars_top(int height) { return height - 30 * height_scale(height) - 2 * own_bar_row(height) - 12 * height_scale(height); }
+
+// The weapon text's line spacing at the bottom right.
+double weapon_row(int height) { return std::max(24 * height_scale(height), 14 * text_scale(1.2, height)); }
+
+// Where the off-screen arrow may stand: inside the screen edges, under the top panels (the
+// target panel and the longest kill feed) and above the bottom ones (bars, radar, weapon).
+HudRect arrow_area(double feed_y, int kill_feed_lines, int width, int height) {
+  const double k = height_scale(height), margin = 30 * k;
+  const double top = std::max(target_panel_bottom(height), feed_y + kKillFeedRow * std::max(kill_feed_lines, 0));
+  const double bottom = std::min({own_bars_top(height) - kBarLabelRise * text_scale(1.0, height), radar_rect(width, height).y,
+                                  height - 36 * k - weapon_row(height)});
+  return {margin, top + margin, std::max(1.0, width - 2 * margin), std::max(1.0, bottom - top - 2 * margin)};
 }
 
 std::string outcome_text(const World& w) {
@@ -185,22 +205,22 @@ void hud_target_panel(const World& w, const Ship& me, int width, int height, Hud
   bar(h, x, rows.hull_y, 200 * k, rows.bar_h, t.hull / t.cls->hull, kHudRed, "hull");
 }
 
-// The objective at the top left, wrapped to leave room for the target panel; returns the y
-// under it.
-double hud_objective(const std::string& objective, int width, int height, HudLayer& h) {
-  const double k = height_scale(height), s = text_scale(1.2, height), x = kLeftMargin * k, y = 16 * k;
-  const double room = width - target_panel_width(height) - kSideMargin * k - x;
+// The objective at the top left, wrapped to leave room for the target panel while flying;
+// returns the top of the kill feed under it.
+double hud_objective(const std::string& objective, bool flying, int width, int height, HudLayer& h) {
+  const double k = height_scale(height), s = 1.2, x = kLeftMargin, y = 16;
+  const double room = width - (flying ? target_panel_width(height) : 0.0) - kSideMargin * k - x;
   const std::vector<std::string> lines =
       wrap_text(objective, size_t(std::max(8.0, room / (kGlyphAdvance * s))), kObjectiveLines);
   for (size_t i = 0; i < lines.size(); ++i) text(h, x, y + 14 * s * double(i), s, kHudWhite, lines[i]);
-  return 44 * k + 14 * s * double(std::max<size_t>(lines.size(), 1) - 1);
+  return std::max(44 * k, y + 14 * s * double(std::max<size_t>(lines.size(), 1)) + 4);
 }
 
 // The own ship's shield, hull and energy bars with the throttle at the bottom left.
 // Rows keep room for each bar's label (16 above it, at text scale 1) in small windows.
 void hud_own(const Ship& me, int height, HudLayer& h) {
-  const double k = height_scale(height), x = kLeftMargin * k, bar_w = 220 * k, bar_h = 12 * k;
-  const double row = std::max(34 * k, kBarLabelRise + bar_h + 4), y = height - 30 * k - 2 * row - bar_h;
+  const double k = height_scale(height), x = kLeftMargin, bar_w = 220 * k, bar_h = 12 * k;
+  const double row = own_bar_row(height), y = own_bars_top(height);
   bar(h, x, y, bar_w, bar_h, me.cls->shield > 0 ? me.shield / me.cls->shield : 0.0, kHudBlue, "SHIELD");
   bar(h, x, y + row, bar_w, bar_h, me.hull / me.cls->hull, me.hull < 0.3 * me.cls->hull ? kHudRed : kHudGreen, "HULL");
   bar(h, x, y + 2 * row, bar_w, bar_h, me.cls->energy > 0 ? me.energy / me.cls->energy : 0.0, kHudYellow, "ENERGY");
@@ -209,7 +229,7 @@ void hud_own(const Ship& me, int height, HudLayer& h) {
 
 // The selected weapons and the kills at the bottom right.
 void hud_weapon(const Ship& me, int width, int height, HudLayer& h) {
-  const double k = height_scale(height), s = text_scale(1.2, height), row = std::max(24 * k, 14 * s);
+  const double k = height_scale(height), s = text_scale(1.2, height), row = weapon_row(height);
   const std::string weapon = std::string("beam + ") + (me.secondary == SecondaryWeapon::Plasma ? "PLASMA" : "MISSILES");
   const std::string kills = "kills " + std::to_string(me.kills);
   const double wide = double(std::max(weapon.size(), kills.size())) * kGlyphAdvance * s;
@@ -304,17 +324,16 @@ void layout_hud(const World& w, const CameraView& cam, const HudState& state, do
   }
   if (state.show_hud) {
     const Projector pr = Projector::of(cam, width, height);
-    marks.panel("objective", [&] { feed_y = hud_objective(w.level.objective, width, height, h); });
-    labels(w, pr, width, height, h);
     const ShipId focus = w.focus_ship();
     const bool flying = focus && w.ship(focus).alive && w.camera_mode != CameraMode::Fixed;
-    marks.panel("kill feed", [&] {
-      layout_kill_feed(w, flying ? &w.ship(focus) : nullptr, state.rules, kLeftMargin * height_scale(height), feed_y, h);
-    });
+    marks.panel("objective", [&] { feed_y = hud_objective(w.level.objective, flying, width, height, h); });
+    labels(w, pr, width, height, h);
+    marks.panel("kill feed",
+                [&] { layout_kill_feed(w, flying ? &w.ship(focus) : nullptr, state.rules, kLeftMargin, feed_y, h); });
     if (flying) {
       const Ship& me = w.ship(focus);
       if (!w.paused) layout_combat_cues(w, me, pr, state.rules, alpha, width, height, h);
-      layout_aim_cues(w, me, pr, alpha, width, height, radar_rect(width, height), h);
+      layout_aim_cues(w, me, pr, alpha, width, height, arrow_area(feed_y, state.rules.kill_feed_lines, width, height), h);
       marks.panel("own bars", [&] { hud_own(me, height, h); });
       marks.panel("weapon", [&] { hud_weapon(me, width, height, h); });
       marks.panel("target panel", [&] { hud_target_panel(w, me, width, height, h); });
