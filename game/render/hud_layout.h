@@ -2,17 +2,20 @@
 //
 // layout_hud() fills a HudLayer (quads, lines and texts, origin top-left) from the World and
 // the frame's camera: the objective, the kill feed and gallery labels; for the ship the camera
-// follows, the crosshair, own shield / hull / energy bars, weapon and kills, the target's
-// brackets with the beam range cue or an off-screen arrow (kept off the radar), the lead
-// indicator, the target's bars, the radar (hud_radar.h) and the combat cues (hud_combat.h:
-// hit markers, damage direction, missile warning); the set throttle and the speed; victory or
-// defeat (kept above the pause menu); the FPS counter, the pause menu, the mouse-joystick
-// reticle, a notice line and the reload-error banner (wrapped to the screen).
-// build_render_view() calls it last, with the frame's camera.
+// follows, the aim cues (hud_aim.h: the crosshair's beam ring, the target's brackets, missile
+// cue or plasma lead, the off-screen arrow between the panels), own shield / hull / energy bars,
+// weapon and kills, the target's panel, the radar (hud_radar.h) and the combat cues
+// (hud_combat.h: hit markers, damage direction, missile warning); the set throttle and the
+// speed; victory or defeat (kept above the pause menu); the FPS counter, the pause menu, the
+// mouse-joystick reticle, a notice line above the radar and the reload-error banner under the
+// top panels (both wrapped to the screen). build_render_view() calls it last, with the frame's
+// camera.
 //
 // Every size is written for a window 720 pixels high and the finished layer is scaled to the
-// window's height (hud_draw.h), so the HUD looks the same at 1280x720 and at 2560x1440;
-// windows less than 720 pixels high keep the 720p sizes, where the bitmap font stays sharp.
+// window's height (hud_draw.h), so the HUD looks the same at 1280x720 and at 2560x1440. In
+// windows less than 720 pixels high the panels shrink with the height (to half at 360) while
+// text keeps the bitmap font's own size, where it stays sharp; the panels' rows and widths make
+// room for it, so no panel overlaps another at any size from 640x360 up.
 //
 // HudState is what the app knows and the World does not: whether the HUD and the FPS counter
 // are on, the measured frame rate, the pause menu's items and selection, the reticle, and the
