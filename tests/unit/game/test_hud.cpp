@@ -2,6 +2,7 @@
 // (game/render/hud_*.h), checked on the laid-out HudLayer without GL.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -259,6 +260,18 @@ TEST(HudAim, DistanceUnderTheBracketsAndBesideTheArrow) {
   }
   place(w, 1, glm::dvec3(300, 0, 250));  // behind on the right: the arrow
   EXPECT_TRUE(has_exact_text(hud_of(w), "391 m"));
+}
+
+// A target far away still gets brackets of a readable size: 24 pixels at 720p, more above.
+TEST(HudAim, BracketsNeverSmallerThanReadable) {
+  Game g = range_game();
+  place(g.world_mut(), 1, glm::dvec3(0, 0, -6000));
+  for (int height : {720, 1440}) {
+    double x0 = 1e9, x1 = -1e9;
+    for (const HudLine& l : hud_of(g.world(), height * 16 / 9, height).lines)
+      if (l.color == kHudRed) x0 = std::min({x0, double(l.x0), double(l.x1)}), x1 = std::max({x1, double(l.x0), double(l.x1)});
+    EXPECT_GE(x1 - x0, 24.0 * height / 720.0) << height;
+  }
 }
 
 // The usage example of game/render/hud_rules.h, word for word.

@@ -58,6 +58,8 @@ TEST(HudLayout, PanelsNeitherOverlapNorLeaveTheScreenAtEverySize) {
     for (const char* want : {"objective", "kill feed", "own bars", "weapon", "target panel", "radar", "notice",
                              "error banner"})
       EXPECT_NE(std::find(names.begin(), names.end(), want), names.end()) << want << " at " << width << "x" << height;
+    for (const HudPanelBox& p : panels)
+      if (p.name == "radar") EXPECT_GE(p.box.y1 - p.box.y0, 0.15 * height) << "radar at " << width << "x" << height;
     for (size_t i = 0; i < panels.size(); ++i) {
       const HudBox& a = panels[i].box;
       EXPECT_TRUE(a.x0 >= 0 && a.y0 >= 0 && a.x1 <= width && a.y1 <= height)
