@@ -90,7 +90,8 @@ void bracket_readout(HudLayer& h, const Ship& t, glm::dvec2 px, double r, double
 // Where the off-screen arrow toward `dir` (from the screen centre) points from: where that ray
 // leaves `area`, the part of the screen between the HUD's panels.
 glm::dvec2 offscreen_arrow_tip(glm::dvec2 dir, double canvas_w, double canvas_h, const HudRect& area) {
-  const glm::dvec2 c(std::clamp(canvas_w * 0.5, area.x, area.x + area.w), std::clamp(canvas_h * 0.5, area.y, area.y + area.h));
+  const glm::dvec2 c(std::clamp(canvas_w * 0.5, area.x, area.x + area.w),
+                     std::clamp(canvas_h * 0.5, area.y, area.y + area.h));
   double t = 1e30;
   if (dir.x > 1e-9) t = std::min(t, (area.x + area.w - c.x) / dir.x);
   if (dir.x < -1e-9) t = std::min(t, (area.x - c.x) / dir.x);

@@ -54,7 +54,10 @@ double own_bar_row(int height) {
   const double k = height_scale(height);
   return std::max(34 * k, kBarLabelRise + 12 * k + 4);
 }
-double own_bars_top(int height) { return height - 30 * height_scale(height) - 2 * own_bar_row(height) - 12 * height_scale(height); }
+double own_bars_top(int height) {
+  const double k = height_scale(height);
+  return height - 30 * k - 2 * own_bar_row(height) - 12 * k;
+}
 
 // The weapon text's line spacing at the bottom right.
 double weapon_row(int height) { return std::max(24 * height_scale(height), 14 * text_scale(1.2, height)); }
@@ -64,8 +67,8 @@ double weapon_row(int height) { return std::max(24 * height_scale(height), 14 * 
 HudRect arrow_area(double feed_y, int kill_feed_lines, int width, int height) {
   const double k = height_scale(height), margin = 30 * k;
   const double top = std::max(target_panel_bottom(height), feed_y + kKillFeedRow * std::max(kill_feed_lines, 0));
-  const double bottom = std::min({own_bars_top(height) - kBarLabelRise * text_scale(1.0, height), radar_rect(width, height).y,
-                                  height - 36 * k - weapon_row(height)});
+  const double bars_top = own_bars_top(height) - kBarLabelRise * text_scale(1.0, height);
+  const double bottom = std::min({bars_top, radar_rect(width, height).y, height - 36 * k - weapon_row(height)});
   return {margin, top + margin, std::max(1.0, width - 2 * margin), std::max(1.0, bottom - top - 2 * margin)};
 }
 
@@ -136,7 +139,8 @@ void hud_error_banner(const HudState& state, double feed_y, int kill_feed_lines,
                       HudLayer& h) {
   if (state.error_banner.empty()) return;
   const double k = height_scale(height);
-  const double top = std::max(target_panel_bottom(height), feed_y + kKillFeedRow * std::max(kill_feed_lines, 0)) + 8 * k;
+  const double feed_bottom = feed_y + kKillFeedRow * std::max(kill_feed_lines, 0);
+  const double top = std::max(target_panel_bottom(height), feed_bottom) + 8 * k;
   text_band(h, state.error_banner, top, false, width, height, {0.35f, 0.02f, 0.02f, 0.85f}, {1.0f, 0.85f, 0.8f, 1.0f});
 }
 
@@ -333,7 +337,8 @@ void layout_hud(const World& w, const CameraView& cam, const HudState& state, do
     if (flying) {
       const Ship& me = w.ship(focus);
       if (!w.paused) layout_combat_cues(w, me, pr, state.rules, alpha, width, height, h);
-      layout_aim_cues(w, me, pr, alpha, width, height, arrow_area(feed_y, state.rules.kill_feed_lines, width, height), h);
+      const HudRect arrows = arrow_area(feed_y, state.rules.kill_feed_lines, width, height);
+      layout_aim_cues(w, me, pr, alpha, width, height, arrows, h);
       marks.panel("own bars", [&] { hud_own(me, height, h); });
       marks.panel("weapon", [&] { hud_weapon(me, width, height, h); });
       marks.panel("target panel", [&] { hud_target_panel(w, me, width, height, h); });

@@ -269,7 +269,8 @@ TEST(HudAim, BracketsNeverSmallerThanReadable) {
   for (int height : {720, 1440}) {
     double x0 = 1e9, x1 = -1e9;
     for (const HudLine& l : hud_of(g.world(), height * 16 / 9, height).lines)
-      if (l.color == kHudRed) x0 = std::min({x0, double(l.x0), double(l.x1)}), x1 = std::max({x1, double(l.x0), double(l.x1)});
+      if (l.color == kHudRed)
+        x0 = std::min({x0, double(l.x0), double(l.x1)}), x1 = std::max({x1, double(l.x0), double(l.x1)});
     EXPECT_GE(x1 - x0, 24.0 * height / 720.0) << height;
   }
 }
