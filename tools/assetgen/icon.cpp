@@ -37,14 +37,16 @@ bool in_triangle(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
 // clockwise through the bottom, thinning and cooling from white-yellow to red.
 glm::dvec3 trail(glm::dvec2 p) {
   const double r = glm::length(p);
-  double behind = -std::atan2(p.y, p.x);  // 0 at the ship, growing clockwise
-  if (behind < 0) behind += 2.0 * kPi;
+  double behind = -std::atan2(p.y, p.x);  // 0 at the ship, growing clockwise; a little ahead < 0
+  if (behind < -0.5) behind += 2.0 * kPi;
   if (behind > kTrailSweep) return glm::dvec3(0.0);
-  const double s = behind / kTrailSweep;  // 0 at the ship, 1 at the tail's end
-  const double width = 0.015 + 0.075 * (1.0 - s);
+  const double s = std::max(behind, 0.0) / kTrailSweep;  // 0 at the ship, 1 at the tail's end
+  const double width = 0.015 + 0.06 * (1.0 - s);
   const double d = (r - kTrailRadius) / width;
-  const double core = std::exp(-d * d * 2.0), glow = 0.35 * std::exp(-d * d * 0.25);
-  const double fade = std::pow(1.0 - s, 1.3);
+  const double core = std::exp(-d * d * 2.0), glow = 0.3 * std::exp(-d * d * 0.5);
+  // The fire starts under the ship's tail and ends in a point, with no hard edge ahead of it.
+  const double head = behind < 0.0 ? std::exp(-std::pow(behind / 0.05, 2.0)) : 1.0;
+  const double fade = std::pow(1.0 - s, 1.3) * head;
   const glm::dvec3 hot(1.0, 0.95, 0.7), warm(1.0, 0.55, 0.1), cool(0.8, 0.15, 0.05);
   const glm::dvec3 tint = s < 0.4 ? glm::mix(hot, warm, s / 0.4) : glm::mix(warm, cool, (s - 0.4) / 0.6);
   return tint * (core + glow) * fade;
