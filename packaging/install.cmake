@@ -14,9 +14,10 @@ install(FILES ${PROJECT_SOURCE_DIR}/packaging/arcfire.desktop DESTINATION share/
 install(FILES ${PROJECT_SOURCE_DIR}/packaging/arcfire.png DESTINATION share/icons/hicolor/256x256/apps)
 install(FILES ${PROJECT_SOURCE_DIR}/README.md DESTINATION share/doc/arcfire)
 
-# The .deb (`cpack` in the build folder, or `cmake --build build --target package`). Its Depends
-# are computed by dpkg-shlibdeps from the libraries the program and the codec module link;
-# tests/cli/deb_package.sh checks them against ldd and dpkg -S.
+# The .deb (`cpack -G DEB` in the build folder, or `cmake --build build --target package`). Its
+# Depends are computed by dpkg-shlibdeps from the libraries the program and the codec module
+# link, plus the one library loaded by name; tests/cli/deb_package.sh checks them against ldd
+# and dpkg -S.
 set(CPACK_GENERATOR DEB)
 set(CPACK_PACKAGE_NAME arcfire)
 set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
@@ -27,5 +28,8 @@ set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_DEBIAN_PACKAGE_SECTION games)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+# libepoxy opens libEGL.so.1 at run time for headless rendering (no NEEDED entry, so
+# dpkg-shlibdeps cannot see it); the window's GL comes with libglfw3's own dependencies.
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "libegl1")
 set(CPACK_STRIP_FILES ON)
 include(CPack)

@@ -2,7 +2,8 @@
 # deb_package.sh BUILD WORK: CPack builds the .deb into WORK; dpkg-deb shows that it holds the
 # game, its codec module, its data, the desktop entry and the icon, and that its Depends are
 # exactly the packages that provide the libraries the program and the module link (their
-# NEEDED entries, found by ldd, owned per dpkg -S). Skipped (77) without the Debian tools.
+# NEEDED entries, found by ldd, owned per dpkg -S) and libEGL, which libepoxy opens by name.
+# Skipped (77) without the Debian tools.
 set -u
 build="$1"; work="$2"
 fail() { echo "cli_deb_package: $*"; exit 1; }
@@ -10,6 +11,7 @@ for tool in cpack dpkg-deb dpkg-shlibdeps dpkg readelf ldd; do
   command -v "$tool" >/dev/null || { echo "cli_deb_package: $tool is not installed; skipping"; exit 77; }
 done
 rm -rf "$work"; mkdir -p "$work"
+build="$(cd "$build" && pwd)"; work="$(cd "$work" && pwd)"
 (cd "$build" && cpack -G DEB -B "$work") >"$work/cpack.log" 2>&1 || { tail -20 "$work/cpack.log"; fail "cpack failed"; }
 debs=("$work"/arcfire_*.deb)
 [ -f "${debs[0]}" ] || { tail -20 "$work/cpack.log"; fail "no arcfire_*.deb in $work"; }
@@ -29,9 +31,10 @@ done
 
 # The package owning a library file; ldd may name /lib/... where dpkg knows /usr/lib/... (usrmerge).
 owner() {
-  local path="$1" p
+  local path="$1" p pkg
   for p in "$path" "$(readlink -f "$path")" "/usr$path" "${path#/usr}"; do
-    dpkg -S "$p" 2>/dev/null | head -n 1 | cut -d: -f1 && return 0
+    pkg="$(dpkg -S "$p" 2>/dev/null | head -n 1 | cut -d: -f1)"
+    [ -n "$pkg" ] && { echo "$pkg"; return 0; }
   done
   return 1
 }
@@ -45,6 +48,11 @@ for elf in "$build/arcfire" "$build/libarcfire_image_codec.so"; do
     expected+="$pkg"$'\n'
   done
 done
+# libepoxy opens libEGL.so.1 by name for headless rendering: no NEEDED entry, found by ldconfig.
+egl="$(ldconfig -p | awk '$1 == "libEGL.so.1" && $0 ~ /x86-64/ {print $NF; exit}')"
+[ -n "$egl" ] || fail "libEGL.so.1 is not installed here"
+pkg="$(owner "$egl")" || fail "no package owns $egl"
+expected+="$pkg"$'\n'
 expected="$(sort -u <<<"$expected" | sed '/^$/d')"
 depends="$(dpkg-deb -f "$deb" Depends)"
 echo "Depends: $depends"

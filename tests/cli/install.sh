@@ -5,7 +5,7 @@
 # (copied out of REPLAYS with their goldens) pass, and a window opens and quits (under xvfb-run,
 # when it and xdotool are there).
 set -u
-build="$1"; work="$2"; replays="$3"
+build="$(cd "$1" && pwd)"; work="$2"; replays="$(cd "$3" && pwd)"
 fail() { echo "cli_install_prefix: $*"; exit 1; }
 rm -rf "$work"; mkdir -p "$work/elsewhere" "$work/replays"
 work="$(cd "$work" && pwd -P)"
@@ -31,8 +31,9 @@ echo "$version"
 grep -qx "data: $prefix/share/arcfire (beside the executable)" <<<"$version" || fail "--version does not name $prefix/share/arcfire"
 
 # A headless frame, the image codec loaded from the prefix (LD_DEBUG names each file loaded).
-LD_DEBUG=files "$game" --headless --ticks 30 --every 30 --size 320x180 --out frames >frames.log 2>&1 ||
-  { tail -5 frames.log; fail "headless frame: exit $?"; }
+LD_DEBUG=files "$game" --headless --ticks 30 --every 30 --size 320x180 --out frames >frames.log 2>&1
+code=$?
+[ "$code" -eq 0 ] || { grep -v '^ *[0-9]*:' frames.log | tail -5; fail "headless frame: exit $code"; }
 grep -q "file=$prefix/lib/arcfire/libarcfire_image_codec.so .*dynamically loaded" frames.log ||
   fail "the image codec was not loaded from $prefix/lib/arcfire"
 size=$(stat -c %s frames/frame_000030.png 2>/dev/null || echo 0)
@@ -43,8 +44,9 @@ echo "ok: a headless frame of $size bytes, codec from the prefix"
 for name in arena duel_pause_resume skirmish_wingman scene_duel; do
   cp "$replays/$name.replay" "$work/replays/"
   [ -d "$replays/golden/$name" ] && mkdir -p "$work/replays/golden" && cp -r "$replays/golden/$name" "$work/replays/golden/"
-  "$game" --headless --replay "$work/replays/$name.replay" --out "out/$name" >"$name.log" 2>&1 ||
-    { tail -5 "$name.log"; fail "replay $name: exit $?"; }
+  "$game" --headless --replay "$work/replays/$name.replay" --out "out/$name" >"$name.log" 2>&1
+  code=$?
+  [ "$code" -eq 0 ] || { tail -5 "$name.log"; fail "replay $name: exit $code"; }
   last="$(tail -n 1 "$name.log")"
   grep -Eq '^final hash [0-9a-f]{16} at tick [0-9]+$' <<<"$last" || fail "replay $name ended with '$last'"
   echo "ok: replay $name: $last"
@@ -58,11 +60,11 @@ if command -v xvfb-run >/dev/null && command -v xdotool >/dev/null; then
     win=$(timeout 30 xdotool search --sync --onlyvisible --name "Arcfire" | head -n 1)
     if [ -z "$win" ]; then echo "no Arcfire window appeared"; kill $pid; cat window.log; exit 1; fi
     xdotool windowactivate --sync "$win" 2>/dev/null || xdotool windowfocus --sync "$win"
-    sleep 2
-    xdotool key Escape; sleep 0.5
-    for i in 1 2 3 4 5; do xdotool key Down; sleep 0.2; done
+    sleep 3
+    xdotool key Escape; sleep 1
+    for i in 1 2 3 4 5; do xdotool key Down; sleep 0.3; done
     xdotool key Return
-    for i in $(seq 1 100); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done
+    for i in $(seq 1 200); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done
     if kill -0 $pid 2>/dev/null; then echo "Quit did not end the game"; kill $pid; exit 1; fi
     wait $pid
   ' _ "$game" || { cat window.log 2>/dev/null; fail "the installed game in a window failed"; }
