@@ -61,10 +61,12 @@ if command -v xvfb-run >/dev/null && command -v xdotool >/dev/null; then
     if [ -z "$win" ]; then echo "no Arcfire window appeared"; kill $pid; cat window.log; exit 1; fi
     xdotool windowactivate --sync "$win" 2>/dev/null || xdotool windowfocus --sync "$win"
     sleep 3
-    xdotool key Escape; sleep 1
-    for i in 1 2 3 4 5; do xdotool key Down; sleep 0.3; done
-    xdotool key Return
-    for i in $(seq 1 200); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done
+    # Each key held for a while, so a slow frame cannot miss it: Esc, down to Quit, Enter.
+    press() { xdotool keydown "$1"; sleep 0.3; xdotool keyup "$1"; sleep 0.5; }
+    press Escape
+    for i in 1 2 3 4 5; do press Down; done
+    press Return
+    for i in $(seq 1 300); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done
     if kill -0 $pid 2>/dev/null; then echo "Quit did not end the game"; kill $pid; exit 1; fi
     wait $pid
   ' _ "$game" || { cat window.log 2>/dev/null; fail "the installed game in a window failed"; }
