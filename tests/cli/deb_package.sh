@@ -29,6 +29,19 @@ done
 ! grep -Eq '^\./usr/share/arcfire/tests/|\.md$' <<<"$(grep -v '^./usr/share/doc/' <<<"$contents")" ||
   fail "the package holds tests or notes the game does not read"
 
+# The unpacked package runs from an unrelated folder: its data, its codec module, a frame.
+dpkg-deb -x "$deb" "$work/root"
+mkdir -p "$work/elsewhere"
+(
+  cd "$work/elsewhere" && unset ARCFIRE_DATA
+  "$work/root/usr/bin/arcfire" --version | grep -qx "data: $work/root/usr/share/arcfire (beside the executable)" ||
+    fail "the unpacked game does not use its own data: $("$work/root/usr/bin/arcfire" --version 2>&1 | tr '\n' ' ')"
+  "$work/root/usr/bin/arcfire" --headless --ticks 30 --every 30 --size 160x90 --out frames >run.log 2>&1 ||
+    { cat run.log; fail "the unpacked game failed a headless frame"; }
+  [ -s frames/frame_000030.png ] || fail "the unpacked game wrote no frame"
+) || exit 1
+echo "ok: the unpacked package renders a frame from $work/elsewhere"
+
 # The package owning a library file; ldd may name /lib/... where dpkg knows /usr/lib/... (usrmerge).
 owner() {
   local path="$1" p pkg
