@@ -13,10 +13,10 @@
 //
 // Example, compiled as RendererExample.DrawsAView in tests/unit/gfx/test_examples.cpp:
 //   Renderer renderer({.offscreen = true});
-//   ModelId ship = renderer.add_model(load_model(ARCFIRE_SOURCE_DIR "/assets/models/viper.glb"));
+//   ModelId ship = renderer.add_model(load_model(data_root() + "/assets/models/viper.glb"));
 //   RenderView view;
 //   view.meshes.push_back({ship, {0, 0, -20}});
-//   renderer.set_sprites({load_sprite(ARCFIRE_SOURCE_DIR "/assets/textures/sprite_smoke.png")});
+//   renderer.set_sprites({load_sprite(data_root() + "/assets/textures/sprite_smoke.png")});
 //   renderer.apply_settings(Settings::defaults());
 //   renderer.render(view, 640, 360);
 //   Image frame = renderer.read_pixels();
@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "assets/model.h"
+#include "core/data_root.h"
 #include "core/settings.h"
 #include "gfx/render_settings.h"
 #include "gfx/render_view.h"
@@ -34,7 +35,7 @@
 namespace arc {
 
 struct RendererDesc {
-  std::string shader_dir = ARCFIRE_SOURCE_DIR "/shaders";
+  std::string shader_dir = data_root() + "/shaders";  // core/data_root.h
   bool offscreen = false;  // resolve into an RGBA8 target for read_pixels() instead of the window
   bool float_scene = false;  // RGBA16F scene buffer: NaN/Inf survive to read_pixels_float()
   // The float format of the HDR scene buffer (render.hdr); post_pass.h says why RGBA16F.

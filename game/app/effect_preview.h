@@ -13,6 +13,7 @@
 #pragma once
 #include <string>
 
+#include "core/data_root.h"
 #include "core/settings.h"
 
 namespace arc {
@@ -25,7 +26,7 @@ struct PreviewOptions {
   int frames = 8;
   std::string backdrop = "space";  // "space", "wall" or a model name in assets/models
   Settings settings = Settings::defaults();
-  std::string root_dir = ARCFIRE_SOURCE_DIR;
+  std::string root_dir = data_root();  // core/data_root.h
 };
 
 struct AppOptions;

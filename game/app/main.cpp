@@ -30,8 +30,9 @@ int main(int argc, char** argv) {
     if (!options.preview_path.empty()) return arc::run_preview(arc::preview_options(options));
     if (options.headless || options.demo) return arc::run_headless(options);
     if (options.workbench)
-      return arc::run_workbench({.effect_path = options.workbench_effect, .settings = options.settings,
-                                 .width = options.width, .height = options.height, .vsync = options.vsync});
+      return arc::run_workbench({.root_dir = options.game.root_dir, .effect_path = options.workbench_effect,
+                                 .settings = options.settings, .width = options.width, .height = options.height,
+                                 .vsync = options.vsync});
     return arc::run_window(options);
   } catch (const arc::WriteError& e) {
     std::fprintf(stderr, "arcfire: %s\n", e.what());

@@ -142,8 +142,8 @@ ReplayPlayer::ReplayPlayer(const ReplayRunOptions& opt, replay::Script script)
     : opt_(opt),
       script_(std::move(script)),
       last_tick_(script_.last_tick()),
-      level_path_(resolve_script_level(script_, data_root(opt.game))),
-      settings_(script_settings(script_, opt.settings, data_root(opt.game))),
+      level_path_(resolve_script_level(script_, data_root_of(opt.game))),
+      settings_(script_settings(script_, opt.settings, data_root_of(opt.game))),
       game_options_(script_game_options(script_, settings_, opt.game)),
       game_(Game::load_level(level_path_, game_options_)) {
   check_expectation_names(script_, game_.world());

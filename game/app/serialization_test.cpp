@@ -24,8 +24,8 @@ int run_serialization_test(const SerializationTestOptions& opt) {
   uint64_t last = static_cast<uint64_t>(opt.ticks);
   if (!opt.script_path.empty()) {
     script = replay::load_script(opt.script_path);
-    level = resolve_script_level(*script, data_root(opt.game));
-    game_options = script_game_options(*script, script_settings(*script, opt.settings, data_root(opt.game)), opt.game);
+    level = resolve_script_level(*script, data_root_of(opt.game));
+    game_options = script_game_options(*script, script_settings(*script, opt.settings, data_root_of(opt.game)), opt.game);
     last = script->last_tick();
   }
   if (uint64_t(opt.every) > last)

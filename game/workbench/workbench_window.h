@@ -10,14 +10,15 @@
 #pragma once
 #include <string>
 
+#include "core/data_root.h"
 #include "core/settings.h"
 
 namespace arc {
 
 struct WorkbenchOptions {
-  std::string root_dir = ARCFIRE_SOURCE_DIR;  // assets/, shaders/
-  std::string effect_path;                    // "" = the first effect of assets/effects
-  Settings settings = Settings::defaults();   // render.* and particles.budget
+  std::string root_dir = data_root();        // assets/, shaders/ (core/data_root.h)
+  std::string effect_path;                   // "" = the first effect of assets/effects
+  Settings settings = Settings::defaults();  // render.* and particles.budget
   int width = 1280, height = 720;
   bool vsync = true;
 };

@@ -60,6 +60,7 @@
 #include "gfx/renderer.h"
 #include "platform/platform.h"
 #include "test_pilot.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
@@ -311,7 +312,7 @@ void report(CameraRun& c) {
 }  // namespace
 
 ARCFIRE_SCENE(combat_view) {
-  const std::string root = ARCFIRE_SOURCE_DIR;
+  const std::string root = arc::data_root();
   const std::string path = root + kScript;
   if (std::getenv("ARCFIRE_BENCH_RECORD")) record_dogfight(root, path);
   const std::unique_ptr<HeadlessContext> ctx = bench::context_or_skip();

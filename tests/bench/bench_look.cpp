@@ -29,6 +29,7 @@
 #include "game/sim/input.h"
 #include "gfx/renderer.h"
 #include "platform/platform.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
@@ -80,7 +81,7 @@ RenderSettings look(bool hdr, float bloom, RenderSettings::Antialias aa) {
 // The renderer settings of a quality preset ("" for Settings::defaults()).
 RenderSettings preset_look(const std::string& preset) {
   Settings s = Settings::defaults();
-  if (!preset.empty()) s.apply_preset_file(ARCFIRE_SOURCE_DIR "/assets/settings/quality.json", preset);
+  if (!preset.empty()) s.apply_preset_file(arc::data_root() + "/assets/settings/quality.json", preset);
   Renderer probe(RendererDesc{.offscreen = true});
   probe.apply_settings(s);
   return probe.render_settings();
@@ -132,7 +133,7 @@ double clipped_share(const Image& img) {
 // The gallery's first second, every fourth tick; the frame with the most clipped pixels with
 // HDR off is the explosion's brightest, and both figures are taken there.
 void measure_clipping(Renderer& r) {
-  const std::string root = ARCFIRE_SOURCE_DIR;
+  const std::string root = arc::data_root();
   GameOptions options;
   options.root_dir = root;
   Game game = Game::load_level(root + "/levels/gallery.json", options);

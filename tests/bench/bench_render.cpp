@@ -43,6 +43,7 @@
 #include "gfx/renderer.h"
 #include "platform/platform.h"
 #include "scene_models.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
@@ -357,7 +358,7 @@ ARCFIRE_SCENE(render_particle_gallery) {
   const BenchEnv env = read_env();
   const std::unique_ptr<HeadlessContext> ctx = bench::context_or_skip();
   if (!ctx) return;
-  const std::string root = ARCFIRE_SOURCE_DIR;
+  const std::string root = arc::data_root();
   RendererDesc desc;
   desc.offscreen = true;
   desc.shader_dir = root + "/shaders";

@@ -27,6 +27,7 @@
 #include "game/sim/world.h"
 #include "gfx/renderer.h"
 #include "platform/platform.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
@@ -63,7 +64,7 @@ double share(long long part, long long whole) { return whole > 0 ? double(part) 
 ARCFIRE_SCENE(scene_work) {
   const std::unique_ptr<HeadlessContext> ctx = bench::context_or_skip();
   if (!ctx) return;
-  const std::string root = ARCFIRE_SOURCE_DIR;
+  const std::string root = arc::data_root();
   GameOptions options;
   options.root_dir = root;
   Game game = Game::load_level(root + "/levels/arena.json", options);

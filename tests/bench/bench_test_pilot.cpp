@@ -10,6 +10,7 @@
 
 #include "bench_registry.h"
 #include "test_pilot.h"
+#include "core/data_root.h"
 
 ARCFIRE_SCENE(test_pilot) {
   const char* names[] = {"easy", "normal", "hard"};
@@ -17,8 +18,8 @@ ARCFIRE_SCENE(test_pilot) {
   int idle_fights = 0, idle_losses = 0;
   for (int d = 0; d < 3; ++d) {
     const double start = arc::bench::now_seconds();
-    const arc::DuelRates r = arc::duel_rates(ARCFIRE_SOURCE_DIR, d, kSeeds, arc::PilotKind::Person);
-    const arc::DuelRates idle = arc::duel_rates(ARCFIRE_SOURCE_DIR, d, kSeeds, arc::PilotKind::Idle);
+    const arc::DuelRates r = arc::duel_rates(arc::data_root(), d, kSeeds, arc::PilotKind::Person);
+    const arc::DuelRates idle = arc::duel_rates(arc::data_root(), d, kSeeds, arc::PilotKind::Idle);
     idle_fights += idle.fights;
     idle_losses += idle.losses;
     std::printf("  %-6s person won %2d, lost %2d, undecided %2d of %d (median win %.1f s); idle lost %d of %d  [%.1f s]\n",

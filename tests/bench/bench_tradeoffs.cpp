@@ -55,12 +55,13 @@
 #include "gfx/renderer.h"
 #include "particles/world_state.h"
 #include "platform/platform.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
 
 constexpr int kWidth = 1280, kHeight = 720;
-const char* const kQuality = ARCFIRE_SOURCE_DIR "/assets/settings/quality.json";
+const std::string kQuality = arc::data_root() + "/assets/settings/quality.json";
 const char* const kPresets[] = {"low", "medium", "high", "reference"};
 
 Settings preset(const std::string& name) {
@@ -203,7 +204,7 @@ double timed_frame(Renderer& r, const Row& row, const RenderView& view) {
 // One scene: every row's frame in interleaved rounds, then its image against the reference's.
 // Long: the renderers per target key, the warm-up, the rounds and the comparison belong together.
 void measure_scene(const Scene& sc, std::vector<Row>& rows, int rounds) {
-  const std::string root = ARCFIRE_SOURCE_DIR;
+  const std::string root = arc::data_root();
   GameOptions options;
   options.root_dir = root;
   Game game = Game::load_level(root + "/" + sc.level, options);
@@ -320,7 +321,7 @@ uint64_t admitted_since(const ParticleWorld& pw, std::map<uint64_t, uint32_t>& s
 
 // The arena's first 600 ticks under every row's simulation keys, stepped tick by tick in turn.
 void measure_simulation(std::vector<Row>& rows) {
-  const std::string root = ARCFIRE_SOURCE_DIR;
+  const std::string root = arc::data_root();
   std::vector<Game> games;
   for (const Row& row : rows) {
     GameOptions o;

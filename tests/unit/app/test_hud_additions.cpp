@@ -6,13 +6,14 @@
 #include "game/render/render_view_builder.h"
 #include "game/sim/game.h"
 #include "game/sim/world.h"
+#include "core/data_root.h"
 
 namespace {
 
 arc::Game duel() {
   arc::GameOptions o;
-  o.root_dir = ARCFIRE_SOURCE_DIR;
-  return arc::Game::load_level(std::string(ARCFIRE_SOURCE_DIR) + "/levels/duel.json", o);
+  o.root_dir = arc::data_root();
+  return arc::Game::load_level(arc::data_root() + "/levels/duel.json", o);
 }
 
 arc::HudLayer hud_of(const arc::Game& game, const arc::HudState& state, int width, int height) {

@@ -14,11 +14,12 @@
 #include "game/sim/game.h"
 #include "game/sim/world.h"
 #include "platform/platform.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
 
-const std::string kRoot = ARCFIRE_SOURCE_DIR;
+const std::string kRoot = arc::data_root();
 
 Menu make_menu() {
   Bindings b = load_bindings(kRoot + "/assets/settings/bindings.json");

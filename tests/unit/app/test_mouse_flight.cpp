@@ -11,11 +11,12 @@
 #include "game/sim/game.h"
 #include "game/sim/simulation.h"
 #include "game/sim/world.h"
+#include "core/data_root.h"
 
 namespace {
 
-const std::string kDefaultBindings = std::string(ARCFIRE_SOURCE_DIR) + "/assets/settings/bindings.json";
-const std::string kDuel = std::string(ARCFIRE_SOURCE_DIR) + "/levels/duel.json";
+const std::string kDefaultBindings = arc::data_root() + "/assets/settings/bindings.json";
+const std::string kDuel = arc::data_root() + "/levels/duel.json";
 constexpr double kDegreesPerRadian = 57.29577951308232;
 
 // A live session without a window: the duel, its player's turn rates given to the input as
@@ -37,7 +38,7 @@ struct LiveFlight {
   }
   static arc::Game load() {
     arc::GameOptions o;
-    o.root_dir = ARCFIRE_SOURCE_DIR;
+    o.root_dir = arc::data_root();
     return arc::Game::load_level(kDuel, o);
   }
   const arc::Ship& me() const { return game.world().ship(game.world().player); }

@@ -10,10 +10,11 @@
 #include <fstream>
 #include <string>
 #include <vector>
+#include "core/data_root.h"
 
 namespace {
 
-const std::string kRoot = ARCFIRE_SOURCE_DIR;
+const std::string kRoot = arc::build_source_tree();  // the sources, found through the build
 constexpr size_t kMaxFileLines = 600;
 constexpr size_t kMaxFunctionLines = 80;
 

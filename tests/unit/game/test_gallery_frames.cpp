@@ -19,6 +19,7 @@
 #include "gfx/renderer.h"
 #include "gfx_test_util.h"
 #include "test_helpers.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
@@ -53,7 +54,7 @@ TEST(GalleryFrames, EveryEffectFillsAReadablePartOfItsCell) {
   Game game = Game::load_level(test::repo("levels/gallery.json"), test::options());
   Renderer renderer(RendererDesc{.offscreen = true});
   renderer.apply_settings(Settings::defaults());
-  const std::vector<ModelId> models = load_scene_resources(renderer, game.world(), ARCFIRE_SOURCE_DIR);
+  const std::vector<ModelId> models = load_scene_resources(renderer, game.world(), arc::data_root());
   HudState no_hud;
   no_hud.show_hud = false;
   std::array<double, kColumns * kRows> fullest{};

@@ -9,11 +9,12 @@
 
 #include "particles/effect_library.h"
 #include "particles/particle_world.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
 
-const std::string kRoot = ARCFIRE_SOURCE_DIR;
+const std::string kRoot = arc::data_root();
 
 glm::dvec3 mean_position(const std::vector<ParticleInstance>& ps, uint32_t cluster) {
   glm::dvec3 sum(0.0);
