@@ -32,24 +32,24 @@ out vec4 o_color;
 const float kEps = 1e-6;
 
 void main() {
-  // The mip level from the uv derivatives of each 2×2 pixel quad. An explicit level per particle
-  // (a flat input) was tried: llvmpipe then samples every pixel on its own (a per-element level)
-  // and the particle pass ran 2.6 times slower on the wall stress scene.
+  // The mip level from the uv derivatives of each 2×2 pixel quad. Not an explicit level per
+  // particle (a flat input): llvmpipe then samples every pixel on its own (a per-element level),
+  // which makes the particle pass several times slower.
   vec4 tex = texture(u_sprites, vec3(v_uv, v_aux.y));
   float k = clamp((v_depth - u_near) * u_inv_near_fade, 0.0, 1.0);
 #if SOFT
   // Only particles an opaque surface can reach read the depth copy: the renderer gives the
   // others (and method off) inv_extent 0, and the arithmetic below then gives exactly 1. The
   // condition is flat, so a GPU skips the read wherever all fragments shaded together are clear
-  // (it is uniform over a particle). llvmpipe was measured to pay for the read on every pixel of
-  // the draw whatever the branch, so there the saving is the frames where no particle needs soft
+  // (it is uniform over a particle). llvmpipe pays for the read on every pixel of the draw
+  // whatever the branch, so there the saving is the frames where no particle needs soft
   // edges at all (the renderer then picks the hard program and skips the depth copy).
   float d = 0.0;
 #if FB_DEPTH
   d = gl_LastFragDepthARM;  // the value the copy would hold at this pixel
 #else
   // A nearest-filtered read at the texel centre (gl_FragCoord is one): the same texel as
-  // texelFetch, about 8 % cheaper per pixel on llvmpipe, which bounds-checks texelFetch.
+  // texelFetch, cheaper per pixel on llvmpipe, which bounds-checks texelFetch.
   if (v_soft.y != 0.0) d = textureLod(u_scene_depth, gl_FragCoord.xy * u_inv_depth_size, 0.0).r;
 #endif
   // (zb − z − offset)/extent + bias, zb the opaque view depth (huge where there is none).
@@ -58,7 +58,7 @@ void main() {
   float x = v_soft.x / max(d * u_linearize.y + u_linearize.z, 1e-30) - (v_depth * v_soft.y + v_soft.z);
 #if DENSITY_EXTENT
   // Only density extent's range scales with the texture alpha (v_soft.w 1; 0 for the others,
-  // whose runs take the variant without it: with it, the gallery's frame cost 3 % more).
+  // whose runs take the variant without it, since the scaling costs every pixel).
   x = mix(x, x * 0.5 / max(tex.a, kEps) + 0.5, v_soft.w);
 #endif
   x = clamp(x, 0.0, 1.0);

@@ -76,8 +76,8 @@ def read_rows(path):
 
 
 def pareto(points):
-    """Points (cost, psnr) no other point beats: none both cheaper and more accurate (the issue's rule;
-    a tie in either is no win, so a preset and an identical configuration both stay on it)."""
+    """Points (cost, psnr) no other point beats: none both cheaper and more accurate (a tie
+    in either is no win, so a preset and an identical configuration both stay on it)."""
     front = []
     for p in points:
         dominated = any(q[2] < p[2] and q[3] > p[3] for q in points)

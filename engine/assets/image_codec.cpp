@@ -11,12 +11,17 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Where the module may lie, in the order tried: beside /proc/self/exe, then its build path.
+// Where the module may lie, in the order tried: beside /proc/self/exe, in <exe>/../lib/arcfire
+// (an installed game, packaging/install.cmake), then its build path.
 std::vector<std::string> module_candidates() {
   std::vector<std::string> paths;
   std::error_code ec;
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (!ec) paths.push_back((exe.parent_path() / kImageCodecModule).string());
+  if (!ec) {
+    paths.push_back((exe.parent_path() / kImageCodecModule).string());
+    const fs::path installed = exe.parent_path().parent_path() / "lib" / "arcfire" / kImageCodecModule;
+    if (fs::exists(installed, ec)) paths.push_back(installed.string());
+  }
   const std::string built = ARCFIRE_IMAGE_CODEC_BUILD_PATH;
   if (paths.empty() || paths.front() != built) paths.push_back(built);
   return paths;

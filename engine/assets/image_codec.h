@@ -2,9 +2,9 @@
 //
 // image_codec() loads libarcfire_image_codec.so with dlopen the first time an image is decoded
 // or encoded, looking next to the running executable first (build/, or wherever the game was
-// copied with its module) and then at the module's path in the build tree (programs built
-// elsewhere in it). The executables themselves never link OpenImageIO: a start that reads no
-// image does not pay for its 270 libraries. A module that cannot be loaded is an InputError
+// copied with its module), then in ../lib/arcfire beside it (an installed game), then at the
+// module's path in the build tree (programs built elsewhere in it). The executables themselves
+// never link OpenImageIO: a start that reads no image does not pay for its 270 libraries. A module that cannot be loaded is an InputError
 // naming its path and the loader's reason (ImageCodecUnavailable), thrown again at every
 // later use.
 //

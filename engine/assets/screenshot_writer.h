@@ -1,11 +1,10 @@
 // assets/screenshot_writer.h — numbered PNG screenshots encoded and written in the background.
 //
-// Encoding a 1280x720 PNG takes about 100 ms on this project's machine: done on the frame's
-// thread, every F12 was a visible hitch (80–130 ms frames in a player's duel). The frame's
-// thread only reads the pixels and hands them over; a worker thread per shot encodes and
-// writes (save_image: checked and atomic). Each shot takes the first free number in the
-// folder, counting the shots still being written, so quick presses never share a name. The
-// destructor waits for every shot (nothing is lost at exit).
+// Encoding a full-screen PNG takes several frames' time, so on the frame's thread every F12 would
+// be a visible hitch. The frame's thread only reads the pixels and hands them over; a worker
+// thread per shot encodes and writes (save_image: checked and atomic). Each shot takes the first
+// free number in the folder, counting the shots still being written, so quick presses never share
+// a name. The destructor waits for every shot (nothing is lost at exit).
 //
 //   ScreenshotWriter shots("out/screenshots", "arcfire");
 //   shots.save(read_window_pixels(w, h));            // returns out/screenshots/arcfire_0001.png

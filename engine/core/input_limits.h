@@ -10,8 +10,8 @@
 //   check_file_size("levels/duel.json", kMaxDataFileBytes, "a data file");  // throws InputError
 //   check_json_text(text, path, kDataJsonLimits);                           // path:line:col: ...
 //
-// The figures are stated for users in levels/README.md, assets/effects/README.md,
-// tests/replays/README.md and tests/README.md; change them there too.
+// The figures are stated for users in levels/README.md, assets/effects/README.md and
+// tests/replays/README.md; change them there too.
 #pragma once
 #include <cstddef>
 #include <cstdint>

@@ -19,18 +19,17 @@
 // largest weight and only shrinks. So sparks go before shields and smoke, and those before
 // beams. Shrinking with little fade keeps the picture closest (the bench's PSNR of budgeted
 // against unbudgeted frames): a near particle's faint rim goes, its core stays. Fading
-// removes no pixel, so it buys no time: low priority faded with its size (γ 1) until
-// 2026-11-27, and that cost 0.5 / 0.6 dB over combat_view's changed frames (chase / cockpit),
-// the most at the victory explosion's arcs, for the same layers and the same drops. The distance term makes the reduction fall off
+// removes no pixel, so it buys no time and only dims the picture (a stronger fade scores a
+// lower PSNR for the same layers and drops). The distance term makes the reduction fall off
 // smoothly beyond `near` metres: it is the near-camera particles that shrink first. A faint
 // particle (little light added or blocked) is capped before a strong one.
 //
 // Each cluster keeps its own k, which moves toward the frame's solution in log space with a
 // time constant and a rate limit (0.08 s and 12 e-folds a second toward more reduction, 0.12 s
 // and 8 toward less: at 60 Hz no particle shrinks by more than 18 % from one frame to the
-// next, nor grows back by more than 14 %), by the view's game time, so nothing pops. (The way
-// back was 0.3 s and 4 e-folds: after the victory explosion's peak, frames under budget stayed
-// reduced for a third of a second, at 32 dB against the unbudgeted picture; now 39 dB.)
+// next, nor grows back by more than 14 %), by the view's game time, so nothing pops. The way
+// back is nearly as quick as the way in, so frames under budget after an explosion's peak do
+// not stay reduced.
 // A cluster that was not drawn the frame before (an explosion's first frame) has no size to
 // jump from: it starts at the frame's solution and then follows it like the rest. A cluster
 // whose k binds none of its particles keeps it at its largest on-screen particle's threshold,

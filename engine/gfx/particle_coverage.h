@@ -1,14 +1,13 @@
 // gfx/particle_coverage.h — which tiles of the screen the frame's particles can touch (no GL).
 //
-// The half-resolution particle target (particle_target.h) is put over the scene by a pass
-// whose cost on a software rasteriser is that of a full-screen textured, blended draw: about
-// 5 ms at 1280×720 on llvmpipe, as much as the particles themselves in a busy frame. Where no
-// particle landed, the target still holds its clear value (no light, transmittance 1) and the
-// composite changes nothing, so it is drawn only over the tiles a particle's screen box
-// reaches: the same image, exactly. Boxes come from the overdraw budget's footprint estimate
-// (overdraw_budget.h: each quad as particle.vert builds it, size clamp and rotation included),
-// widened by the bilinear filter's reach; a particle that reaches past the near plane marks
-// the whole screen, since its projection is unbounded.
+// The half-resolution particle target (particle_target.h) is put over the scene by a pass whose
+// cost on a software rasteriser is that of a full-screen textured, blended draw, as much as the
+// particles themselves in a busy frame. Where no particle landed, the target still holds its
+// clear value (no light, transmittance 1) and the composite changes nothing, so it is drawn only
+// over the tiles a particle's screen box reaches: the same image, exactly. Boxes come from the
+// overdraw budget's footprint estimate (overdraw_budget.h: each quad as particle.vert builds it,
+// size clamp and rotation included), widened by the bilinear filter's reach; a particle that
+// reaches past the near plane marks the whole screen, since its projection is unbounded.
 //
 //   ParticleCoverage c;
 //   c.reset(1280, 720);

@@ -12,7 +12,7 @@
 // additive ones (alpha·(1 − burn) = 0: they commute). So each particle goes to the earliest
 // run of its kind that comes at or after the run of every earlier particle it must follow:
 // one whose screen box shares a cell of a 32 × 18 grid with its own, unless both are pure
-// additive. Effects in different parts of the screen then no longer interleave their soft and
+// additive. Effects in different parts of the screen then do not interleave their soft and
 // hard particles, and each pixel still sees its blends in the batch's order. And because a
 // clear particle drawn with the soft program gets the same factor 1, the smallest hard runs
 // (by estimated pixels) are folded into their soft neighbours until at most `max_runs` remain:

@@ -1,20 +1,17 @@
 // gfx/post_pass.h — from the scene buffer to the output: tone mapping and edge anti-aliasing.
 //
 // The last scene pass before the HUD, replacing the plain resolve where it has work to do:
-//   hdr off, no FXAA   the scene colour is blitted to the output as before (RenderTargets::resolve)
+//   hdr off, no FXAA   the scene colour is blitted to the output (RenderTargets::resolve)
 //   hdr on             scene (+ bloom) × exposure through the ACES fit, encoded sRGB
 //                      (shaders/tonemap.frag), into the output, or with FXAA into an RGBA8 image
 //                      of the scene's size that the FXAA pass then filters into the output
 //   hdr off, FXAA      the 8-bit scene colour filtered by FXAA into the output
 // The HUD draws afterwards onto the output, so the filter never touches it.
 //
-// Measured on this project's 2-core llvmpipe (`arcfire-bench --scene render_look`, 1280×720,
-// medians of same-round ratios, machine shared): the HDR scene in R11F_G11F_B10F costs 1.07–1.08
-// of the same frame in RGBA16F (llvmpipe packs and unpacks the shared-exponent-free 11/10-bit
-// floats in software), so RendererDesc::hdr_format defaults to RGBA16F. HDR with bloom costs
-// 1.8 (gallery) to 2.1 (battle) of the 8-bit frame; FXAA 1.5–1.6 of the HDR frame (nine
-// filtered taps a pixel; a one-tap copy pass alone is 1.1); MSAA 1.6–2.3 (llvmpipe gives 4
-// samples for msaa2 as well).
+// RendererDesc::hdr_format defaults to RGBA16F: llvmpipe packs and unpacks R11F_G11F_B10F's
+// 11/10-bit floats in software, which makes the smaller format the slower one there. HDR with
+// bloom, FXAA (nine filtered taps a pixel) and MSAA each cost a multiple of the plain frame on
+// a software rasteriser: docs/performance.md has the ratios (`arcfire-bench --scene render_look`).
 //
 //   PostPass post;
 //   post.run({targets.scene_color(), scene_w, scene_h, bloom_tex, 0.1f, 1.0f, true, true}, programs, targets,

@@ -3,8 +3,8 @@
 // Renderer::apply_settings() fills one from the render.* keys of core/settings.h, and
 // Renderer::set_render_settings() takes one directly; both fall back where the context lacks
 // a feature (reversed-Z without clip control) and clamp the ranges. The passes read it.
-// A default-constructed one draws as the renderer did before HDR (8-bit scene, no bloom, no
-// anti-aliasing), which the renderer tests build on; Settings::defaults() turns HDR on.
+// A default-constructed one draws the plain picture (8-bit scene, no bloom, no anti-aliasing),
+// which the renderer tests build on; Settings::defaults() turns HDR on.
 #pragma once
 
 namespace arc {
@@ -19,8 +19,8 @@ struct RenderSettings {
   bool reversed_z = true;
   bool infinite_far = true;
   // Sprite and model texture filtering. MipmapNearest: bilinear within the nearest mip level;
-  // Mipmap: trilinear, between the two nearest levels (twice the texel reads; on llvmpipe the
-  // combat frames' particle pass took about 1.5 times as long with it).
+  // Mipmap: trilinear, between the two nearest levels (twice the texel reads: a clear cost
+  // on a software rasteriser; docs/performance.md).
   enum class Filter { Nearest, Linear, MipmapNearest, Mipmap } filter = Filter::Mipmap;
   double scale = 1.0;
   float size_clamp = 0.5f;

@@ -52,7 +52,8 @@ void RenderTargets::allocate_scene(int sw, int sh) {
     glGenTextures(1, &copy_depth_);
   }
   // Float scenes of tests keep RGBA16F (NaN and infinity survive, alpha is kept); HDR takes the
-  // format measured cheaper (the blend reads no destination alpha, so three channels do).
+  // format RendererDesc::hdr_format names (post_pass.h says which is cheaper; the blend reads no
+  // destination alpha, so three channels do).
   scene_internal_ = float_scene_ ? GL_RGBA16F
                     : !format_.hdr ? GL_RGBA8
                     : format_.hdr_format == HdrFormat::Rgba16f ? GL_RGBA16F
@@ -141,10 +142,9 @@ void RenderTargets::allocate_target(int w, int h) {
 
 // RGBA8 storage in BGRA order for the bound 2-D texture. The unsized internal format lets Mesa
 // take the order of the (BGRA) data as its storage, as an X window stores its pixels. On
-// llvmpipe that order is what its linear rasteriser takes: the half-resolution composite into a
-// colour-only BGRA framebuffer ran about twice as fast as into RGBA8 in a standalone test (2.0
-// against 3.3–4.3 ms for 45 % of a 1280x720 screen; combat_view's heavy chase frames 1.0–1.4 ms
-// faster, the same bytes), and a copy into the window is a copy of rows.
+// llvmpipe that order is what its fast linear rasteriser takes (a composite into a colour-only
+// BGRA framebuffer runs about twice as fast as into RGBA8; docs/performance.md), and a copy
+// into the window is a copy of rows.
 void allocate_rgba8(int w, int h) {
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, w, h, 0, GL_BGRA, GL_UNSIGNED_BYTE, nullptr);
 }

@@ -1,16 +1,16 @@
 // gfx/render_targets.h — the framebuffers a frame draws into, and reading them back.
 //
-// The scene buffer (colour + 32-bit float depth) is the window size × render scale; every
-// pass up to the particles draws into it. Its colour is RGBA8 (display values, as before HDR)
-// or, with HDR, a float format in linear light (SceneFormat). With MSAA the opaque passes draw
-// into a multisampled twin instead, and resolve_opaque() blits its colour and depth down into
-// the scene buffer, so the particles and the depth copy see single-sample buffers. The depth
-// copy is a depth texture the particle pass samples for soft edges, filled from THIS frame's
-// depth by copy_depth(), where the driver does not let the soft particles read the scene's
-// depth at their own pixel (gl_features.h, has_depth_fetch). resolve() scales the scene colour into the window (default
-// framebuffer) or, offscreen, into an RGBA8 target of the window size that read_pixels()
-// returns; with HDR or FXAA the post passes write there instead (bind_output()). The HUD then
-// draws there at full size.
+// The scene buffer (colour + 32-bit float depth) is the window size × render scale; every pass up
+// to the particles draws into it. Its colour is RGBA8 (display values) or, with HDR, a float
+// format in linear light (SceneFormat). With MSAA the opaque passes draw into a multisampled twin
+// instead, and resolve_opaque() blits its colour and depth down into the scene buffer, so the
+// particles and the depth copy see single-sample buffers. The depth copy is a depth texture the
+// particle pass samples for soft edges, filled from THIS frame's depth by copy_depth(), where the
+// driver does not let the soft particles read the scene's depth at their own pixel
+// (gl_features.h, has_depth_fetch). resolve() scales the scene colour into the window (default
+// framebuffer) or, offscreen, into an RGBA8 target of the window size that read_pixels() returns;
+// with HDR or FXAA the post passes write there instead (bind_output()). The HUD then draws there
+// at full size.
 //
 //   RenderTargets targets(/*offscreen=*/true, /*float_scene=*/false);
 //   targets.ensure(1280, 720, 1.0, {});  // (re)allocates on a size or format change
@@ -100,8 +100,8 @@ class RenderTargets {
   // the sizes match) and leaves that bound with a width × height viewport. A top-down scene
   // (SceneFormat::top_down) is read with its rows reversed, which puts it upright: into a
   // window, whose rows the driver also keeps top first, the two reversals cancel and Mesa
-  // copies the rows (0.4 ms at 1280x720 on llvmpipe under Xvfb, against 3.3 ms for the
-  // converting draw a bottom-up RGBA scene takes).
+  // copies the rows, far cheaper on llvmpipe than the converting draw a bottom-up RGBA scene
+  // takes.
   void resolve(int width, int height) const;
   // Binds the window or the offscreen target with a width × height viewport.
   void bind_output(int width, int height) const;

@@ -22,10 +22,10 @@
 //   HUD             view HUD layer, font atlas             output (full size, alpha-blended)
 //   read-back       output (offscreen) or scene colour     Image / float pixels, on request
 //
-// The opaque target is the scene buffer itself without MSAA. With render.hdr the scene colour
-// is a float buffer in linear light (colours decoded from sRGB as they enter), tone-mapped
-// once by the post pass; without it the scene is 8-bit display values, drawn exactly as before
-// HDR existed. GPU timers bracket the depth copy + particles.
+// The opaque target is the scene buffer itself without MSAA. With render.hdr the scene colour is
+// a float buffer in linear light (colours decoded from sRGB as they enter), tone-mapped once by
+// the post pass; without it the scene is 8-bit display values, drawn directly. GPU timers bracket
+// the depth copy + particles.
 //
 // Row order. In a window whose post pass is a plain resolve (8-bit scene, no FXAA or MSAA) the
 // scene is stored top row first, as the window system stores the window (RendererDesc::
@@ -263,7 +263,7 @@ void Renderer::Impl::clear_scene() {
   glDepthMask(GL_TRUE);
   glClearDepth(rs.reversed_z ? 0.0 : 1.0);
   // Depth only: the nebula has written every pixel's colour and an alpha of 1, so clearing the
-  // colour too would fill the frame twice (on llvmpipe about 0.3 ms of a 1280x720 frame).
+  // colour too would fill the frame twice, a cost a software rasteriser feels.
   glClear(GL_DEPTH_BUFFER_BIT);
 }
 
@@ -379,13 +379,13 @@ uint64_t Renderer::Impl::warm_key() const {
 }
 
 // A driver compiles a program's variant for each blend, depth and framebuffer state the first
-// time it draws with it: on llvmpipe 20–40 ms, a hitch the first time a battle's particles go
-// to half resolution or a soft run appears (combat_view's tick 160 took 41–48 ms among 13 ms
-// frames). So the first frame in each state the variants depend on (scene format, depth
-// direction, sprite filter, HDR, contrast program: warm_key), before it clears the scene, one tiny
-// particle per program (hard, linear, the contrast curve, density extent, both) is drawn into the scene and
-// into the half-resolution target, and that is put over the scene: every variant the frames
-// can pick is compiled there. The frame's sky then covers it all.
+// time it draws with it: on llvmpipe that compile is a visible hitch the first time a battle's
+// particles go to half resolution or a soft run appears. So the first frame in each state the
+// variants depend on (scene format, depth direction, sprite filter, HDR, contrast program:
+// warm_key), before it clears the scene, one tiny particle per program (hard, linear, the
+// contrast curve, density extent, both) is drawn into the scene and into the half-resolution
+// target, and that is put over the scene: every variant the frames can pick is compiled there.
+// The frame's sky then covers it all.
 void Renderer::Impl::warm_up_particles(const RenderView& v, const ViewProjection& vp) {
   warm_keys.push_back(warm_key());
   ParticleBatch warm;
@@ -411,8 +411,7 @@ void Renderer::Impl::warm_up_particles(const RenderView& v, const ViewProjection
   // scenes upper left), then the composite into the scene's colour alone with the origin as GL
   // stores it. Each is part of the variant's key: warmed in another (the composite into the
   // scene with depth, particles with the lower-left origin) the first half-resolution frame of
-  // a fight still compiled its own, 30–48 ms (combat_view's ticks 160 and 168 without the
-  // shader cache).
+  // a fight still compiled its own, a hitch without the shader cache.
   set_origin(targets.top_down());
   targets.bind_scene();
   targets.copy_depth();

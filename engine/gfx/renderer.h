@@ -4,8 +4,8 @@
 // draws into an internal scene framebuffer at the window size × render.scale, then resolves it
 // to the window (default framebuffer) or, with RendererDesc::offscreen, to an RGBA8 target that
 // read_pixels() returns. With render.hdr the scene is linear light in a float buffer, and the
-// resolve is a tone map (with bloom and FXAA as set); without it, 8-bit display values blitted
-// as before. The frame is a fixed sequence of passes, one file pair each (sky_pass, mesh_pass,
+// resolve is a tone map (with bloom and FXAA as set); without it, 8-bit display values are
+// blitted. The frame is a fixed sequence of passes, one file pair each (sky_pass, mesh_pass,
 // particle_batch + particle_pass, bloom_pass, post_pass, hud_pass over render_targets,
 // shader_programs and gpu_timers); which pass reads what the previous one wrote is stated once,
 // at the top of renderer.cpp. Depth is reversed-Z with a float buffer when clip control exists, standard
@@ -13,10 +13,10 @@
 //
 // Example, compiled as RendererExample.DrawsAView in tests/unit/gfx/test_examples.cpp:
 //   Renderer renderer({.offscreen = true});
-//   ModelId ship = renderer.add_model(load_model(ARCFIRE_SOURCE_DIR "/assets/models/viper.glb"));
+//   ModelId ship = renderer.add_model(load_model(data_root() + "/assets/models/viper.glb"));
 //   RenderView view;
 //   view.meshes.push_back({ship, {0, 0, -20}});
-//   renderer.set_sprites({load_sprite(ARCFIRE_SOURCE_DIR "/assets/textures/sprite_smoke.png")});
+//   renderer.set_sprites({load_sprite(data_root() + "/assets/textures/sprite_smoke.png")});
 //   renderer.apply_settings(Settings::defaults());
 //   renderer.render(view, 640, 360);
 //   Image frame = renderer.read_pixels();
@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "assets/model.h"
+#include "core/data_root.h"
 #include "core/settings.h"
 #include "gfx/render_settings.h"
 #include "gfx/render_view.h"
@@ -34,20 +35,20 @@
 namespace arc {
 
 struct RendererDesc {
-  std::string shader_dir = ARCFIRE_SOURCE_DIR "/shaders";
+  std::string shader_dir = data_root() + "/shaders";  // core/data_root.h
   bool offscreen = false;  // resolve into an RGBA8 target for read_pixels() instead of the window
   bool float_scene = false;  // RGBA16F scene buffer: NaN/Inf survive to read_pixels_float()
-  // The float format of the HDR scene buffer (render.hdr): measured on llvmpipe, see post_pass.h.
+  // The float format of the HDR scene buffer (render.hdr); post_pass.h says why RGBA16F.
   HdrFormat hdr_format = HdrFormat::Rgba16f;
   // Particles one draw can pull from its buffer texture: GL_MAX_TEXTURE_BUFFER_SIZE / 4, or
   // this when it is smaller and not 0 (tests use it to reach the limit).
   size_t max_particles_per_draw = 0;
   // The scene stored top row first (SceneFormat::top_down in render_targets.h) in frames whose
   // post pass is a plain resolve (8-bit scene, no FXAA or MSAA) when clip control exists. A
-  // window system keeps a window's rows top first, so the resolve into it becomes a copy of
-  // rows instead of a flipping, converting draw (llvmpipe under Xvfb: 0.4 ms against 3.3 ms a
-  // 1280x720 frame). Auto: for a window only (an offscreen target's rows are bottom first, and
-  // the resolve into it is a copy already); On: offscreen too, which tests use to check that
+  // window system keeps a window's rows top first, so the resolve into it becomes a copy of rows
+  // instead of a flipping, converting draw (several times cheaper on llvmpipe under Xvfb;
+  // docs/performance.md). Auto: for a window only (an offscreen target's rows are bottom first,
+  // and the resolve into it is a copy already); On: offscreen too, which tests use to check that
   // the picture is the same either way.
   enum class TopDownScene { Auto, Off, On } top_down_scene = TopDownScene::Auto;
 };

@@ -5,10 +5,10 @@
 // runs keeps the last good shaders on screen). generation() counts successful builds, so a pass
 // that bakes something with a shader (the sky's cube map) knows to bake again.
 //
-//   ShaderPrograms programs(ARCFIRE_SOURCE_DIR "/shaders");  // throws when a shader fails
+//   ShaderPrograms programs(data_root() + "/shaders");  // throws when a shader fails
 //   glUseProgram(programs.mesh.id);
 //   glUniform1i(programs.mesh.loc("u_base_tex"), 0);
-//   std::string error = programs.reload();                   // empty on success
+//   std::string error = programs.reload();              // empty on success
 #pragma once
 #include <epoxy/gl.h>
 

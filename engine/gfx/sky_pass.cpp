@@ -87,13 +87,13 @@ void SkyPass::set_uniforms(const Program& p, const glm::mat3& basis, float tan_x
   glUniform1f(p.loc("u_seed"), float(star_seed_ % 1000));
 }
 
-// The nebula changes only with the level's seed, so it is rendered once into the six faces of
-// a half-float cube map (a face of 256² is 0.35° a texel, the noise's finest feature about 4°)
-// and each frame looks it up. The face edges need no seamless filtering (on llvmpipe it cost
-// 3 ms of a 10 ms frame at 1280×720): each face is baked with its outermost texel centres on
-// the cube's edges (a field of view n/(n − 1) wider than the face), so neighbouring faces hold
-// the same colours along a shared edge, and sky.frag scales the lookup's minor coordinates by
-// (n − 1)/n so that a direction on an edge lands on those texel centres.
+// The nebula changes only with the level's seed, so it is rendered once into the six faces of a
+// half-float cube map (a face of 256² is 0.35° a texel, the noise's finest feature about 4°) and
+// each frame looks it up. The face edges need no seamless filtering (dear on llvmpipe): each face
+// is baked with its outermost texel centres on the cube's edges (a field of view n/(n − 1) wider
+// than the face), so neighbouring faces hold the same colours along a shared edge, and sky.frag
+// scales the lookup's minor coordinates by (n − 1)/n so that a direction on an edge lands on
+// those texel centres.
 void SkyPass::bake(const ShaderPrograms& programs, int resolution, bool linear) {
   const int n = resolution;
   BakedCube& cube = cubes_[linear];

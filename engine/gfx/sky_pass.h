@@ -2,27 +2,21 @@
 //
 // First pass of a frame, with depth off, into a scene buffer whose colour is not cleared: the
 // nebula writes every pixel's colour and an alpha of 1 (the grid and the full-screen triangle
-// cover the screen), which the renderer relies on. The nebula is either
-// looked up in a cube map baked once per seed, resolution and shader build (render.sky =
-// baked) or evaluated per pixel (exact, the reference); the stars are points blended on top.
+// cover the screen), which the renderer relies on. The nebula is either looked up in a cube
+// map baked once per seed, resolution and shader build (render.sky = baked) or evaluated per
+// pixel (exact, the reference); the stars are points blended on top.
 // The baked map is looked up at every pixel (render.sky_grid = 0) or at the corners of a
-// screen grid of N-pixel cells and interpolated across them (on llvmpipe the per-pixel
-// cube-map sample was 2.5 ms of a 1280×720 frame; 58–75 dB PSNR against it in every level).
-// The grid is drawn one of two ways:
-//  - into an 8-bit BGRA scene without MSAA (the default settings), the corners are first
-//    looked up into a small texture of one texel per corner (sky_corners.frag), and one
-//    screen rectangle reads it with bilinear filtering into the scene's colour alone
-//    (`color_only_fbo`, no depth attached; sky_cells.*): a plain texture read that llvmpipe's
-//    linear rasteriser takes, 0.6–1.6 ms against 2.3–3.3 ms for the triangles below
-//    (a standalone program, 60 frames each; in combat_view the nebula, depth clear and stars
-//    take 2.6 ms a frame against 4.9);
-//  - otherwise (float or multisampled scenes) two Gouraud triangles a cell (sky_grid.*).
+// screen grid of N-pixel cells and interpolated across them: the nebula is smooth at that
+// scale, and a per-pixel cube-map sample is dear on a software rasteriser. The grid is drawn:
+//  - into an 8-bit BGRA scene without MSAA (the default settings): the corners go into a small
+//    texture of one texel per corner (sky_corners.frag), which one screen rectangle reads with
+//    bilinear filtering into the scene's colour alone (`color_only_fbo`, no depth attached;
+//    sky_cells.*), a plain texture read that llvmpipe's fast linear rasteriser takes;
+//  - otherwise (float or multisampled scenes) as two Gouraud triangles a cell (sky_grid.*).
 // The two interpolate a cell differently (bilinear against two planes), and the linear
-// rasteriser interpolates in 8 bits, rounding down: against the per-pixel lookup over eight
-// views, 53.2 dB PSNR at 16-pixel cells (the triangles 59.9), 50.5 at 32, the default (53.8),
-// 55.4 at 8 (65.6), whose 14 600 corners cost the corner pass little. In the darkest nebula
-// its 1/255 steps run along the cells' straight edges (the triangles' along polygons): a
-// faint lattice, plain with the picture's gain turned up four times.
+// rasteriser interpolates in 8 bits, rounding down, so in the darkest nebula a faint lattice
+// of 1/255 steps can show along the cells' edges. test_renderer.cpp bounds the error against
+// the per-pixel lookup; docs/performance.md gives cost and PSNR per cell size.
 // Both follow RenderView::starfield_seed, which also orients the nebula's two lobes. Their
 // colours are display values; with HDR they are decoded to linear light as they are drawn
 // (the baked map is baked again in linear light).
@@ -57,9 +51,8 @@ class SkyPass {
   int draw_nebula(const RenderView& view, const ShaderPrograms& programs, const ViewProjection& vp,
                   const RenderSettings& settings, int scene_width, int scene_height, GLuint color_only_fbo = 0);
   // The stars blended over the nebula, in the bound framebuffer; `scene_height` sizes them.
-  // Not into the colour-only framebuffer: among the rectangle's tiles they cost llvmpipe its
-  // linear rasteriser there (nebula, depth clear and stars 4.9 ms a frame that way, 2.6 with
-  // the stars in the scene's framebuffer).
+  // Not into the colour-only framebuffer: stars among the rectangle's tiles would cost
+  // llvmpipe its linear rasteriser there.
   int draw_stars(const RenderView& view, const ShaderPrograms& programs, const ViewProjection& vp,
                  const RenderSettings& settings, int scene_height);
 

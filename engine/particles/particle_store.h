@@ -1,11 +1,10 @@
 // particles/particle_store.h — one particle world's storage, taken and written once at the budget.
 //
-// Pools that took their arrays from the heap made the process's resident memory follow the
-// busiest moment seen so far: the heap keeps what a battle's peak asked for (the one-hour
-// soak grew for four game minutes, then moved with each battle). A game holds its particle
-// memory at the budget instead: the store is every ParticlePool column laid out for the
-// whole budget (rounded up to whole top blocks), allocated and written through when the world
-// is made, so resident memory is what the budget promises from the first tick and never grows.
+// Pools that take their arrays from the heap make the process's resident memory follow the
+// busiest moment seen so far: the heap keeps what a battle's peak asked for. A game holds its
+// particle memory at the budget instead: the store is every ParticlePool column laid out for the
+// whole budget (rounded up to whole top blocks), allocated and written through when the world is
+// made, so resident memory is what the budget promises from the first tick and never grows.
 //
 // Pools take blocks of it: a block is the same particle range in every column, a power of two
 // from kMinBlock particles up to the top block, handed out by a buddy allocator (lowest address

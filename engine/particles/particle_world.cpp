@@ -485,11 +485,11 @@ void ParticleWorld::step(uint64_t tick, const ParticleCamera& camera) {
 void ParticleWorld::collect(const ParticleCamera& camera, std::vector<ParticleInstance>& out,
                             std::span<const DrawnOwner> drawn) const {
   const Impl& w = *impl_;
-  // Room for the whole budget, taken once and written once: grown by doubling, the output went
-  // through blocks of 0.5, 1 and 2 MiB as battles grew, each one copied and left behind in the
-  // heap; reserved but untouched, its resident pages grew with the busiest moment seen so far
-  // (the soak's resident memory rose for four game minutes). Written through at once, it costs
-  // what the budget promises from the first frame and never grows.
+  // Room for the whole budget, taken once and written once: grown by doubling, the output would
+  // go through ever larger blocks as battles grow, each one copied and left behind in the heap;
+  // reserved but untouched, its resident pages would grow with the busiest moment seen so far.
+  // Written through at once, it costs what the budget promises from the first frame and never
+  // grows.
   if (out.capacity() < out.size() + w.config.budget) {
     const size_t used = out.size();
     out.resize(used + w.config.budget);

@@ -54,8 +54,8 @@ struct ParticleWorldState {
 
   // The slot table is taken for a full budget's clusters (at 64 particles each, within
   // [256, 16384] slots) and written through at once, like the particle store: grown by
-  // doubling, it took a new block at each power of two of clusters seen (the soak's heap
-  // stepped up at game minute 4, when a battle first passed 512 slots).
+  // doubling, it would take a new block at each power of two of clusters seen, and the heap
+  // would step up in the middle of a battle.
   void reserve_slots() {
     const size_t n = std::clamp<size_t>(config.budget / 64, 256, 16384);
     if (slots.capacity() >= n) return;

@@ -91,7 +91,7 @@ struct SnapshotTolerance {
 
 struct Header {
   int version = kFormatVersion;
-  std::string level;                // required, relative to the repo root (or absolute)
+  std::string level;                // required, relative to the working folder or the data root (or absolute)
   int level_line = 0;               // where the level line is, for "not found" messages
   std::optional<uint64_t> seed;     // absent: the level's own
   std::optional<int> tick_rate;     // absent: the level's own; present: must equal it

@@ -4,11 +4,13 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 
 #include "core/error.h"
 #include "audio/sound_library.h"
+#include "core/data_root.h"
 #include "core/file_writer.h"
 #include "core/json.h"
 #include "game/app/effect_preview.h"
@@ -44,11 +46,11 @@ void apply_simulation_settings(const Settings& s, GameOptions& game) {
   game.cull_distance = s.number("particles.cull_distance");
 }
 
-std::string resolve_data_path(const std::string& path, const std::string& option) {
+std::string resolve_data_path(const std::string& path, const std::string& option, const std::string& root) {
   namespace fs = std::filesystem;
   if (fs::is_regular_file(path)) return path;
-  fs::path in_source = fs::path(ARCFIRE_SOURCE_DIR) / path;
-  if (fs::path(path).is_relative() && fs::is_regular_file(in_source)) return in_source.string();
+  fs::path in_root = fs::path(root) / path;
+  if (fs::path(path).is_relative() && fs::is_regular_file(in_root)) return in_root.string();
   throw InputError(option + " " + path + ": no such file");
 }
 
@@ -56,6 +58,8 @@ namespace {
 
 // Options as written on the command line, before they are checked and resolved.
 struct CommandLineText {
+  std::string data;
+  bool version = false;
   std::string size = "1280x720";
   std::string quality;
   std::vector<std::string> sets;
@@ -66,6 +70,9 @@ struct CommandLineText {
 };
 
 void define_options(CLI::App& app, AppOptions& o, CommandLineText& t) {
+  app.add_option("--data", t.data,
+                 "the data folder (assets/, levels/, shaders/); default: ARCFIRE_DATA, else ../share/arcfire "
+                 "beside the program, else the source tree of a development build");
   app.add_option("--level", o.level, "level file to play or simulate (default levels/duel.json)");
   app.add_flag("--headless", o.headless, "run without a window (EGL, no display needed)");
   app.add_flag("--demo", o.demo, "headless attract demo: AI against AI, frames and a contact sheet in --out");
@@ -106,7 +113,7 @@ void define_options(CLI::App& app, AppOptions& o, CommandLineText& t) {
   app.add_option("--workbench", o.workbench_effect,
                  "open the effect workbench on an effect file (default: the first in assets/effects)")
       ->expected(0, 1);
-  app.set_version_flag("--version", "arcfire 0.1.0");
+  app.add_flag("--version", t.version, "print the version and the data folder in use, then exit");
 }
 
 void resolve_preview_options(const CLI::App& app, AppOptions& o) {
@@ -117,24 +124,29 @@ void resolve_preview_options(const CLI::App& app, AppOptions& o) {
   }
   if (!o.headless) throw InputError("--preview: only with --headless");
   if (o.out_dir.empty()) throw InputError("--preview: needs --out DIR for the filmstrip and stats.json");
-  o.preview_path = resolve_data_path(o.preview_path, "--preview");
-  const std::string bad_backdrop = check_preview_backdrop(o.preview_backdrop, ARCFIRE_SOURCE_DIR);
+  o.preview_path = resolve_data_path(o.preview_path, "--preview", o.game.root_dir);
+  const std::string bad_backdrop = check_preview_backdrop(o.preview_backdrop, o.game.root_dir);
   if (!bad_backdrop.empty()) throw InputError(bad_backdrop);
 }
 
 // Files, settings and choices of the parsed command line checked and resolved into `o`;
 // InputError for anything wrong.
 void resolve_options(const CLI::App& app, const CommandLineText& t, AppOptions& o) {
-  o.level = resolve_data_path(o.level, "--level");
+  const std::string& root = o.game.root_dir;
+  // A default file is the data root's; a named one is looked for as given, then under the root.
+  auto resolve = [&](const std::string& path, const std::string& option) {
+    const bool given = app.get_option(option)->count() > 0;
+    return given ? resolve_data_path(path, option, root) : resolve_data_path(root + "/" + path, option, root);
+  };
+  o.level = resolve(o.level, "--level");
   if (app.get_option("--bindings")->count() > 0 && !std::filesystem::exists(o.bindings_path)) {
     // A new bindings file starts as a copy of the defaults, written atomically.
-    write_file_atomic(o.bindings_path,
-                      read_text_file(std::string(ARCFIRE_SOURCE_DIR) + "/assets/settings/bindings.json"));
+    write_file_atomic(o.bindings_path, read_text_file(root + "/assets/settings/bindings.json"));
     std::printf("arcfire: wrote default bindings to %s; edit it to remap keys\n", o.bindings_path.c_str());
   }
-  o.bindings_path = resolve_data_path(o.bindings_path, "--bindings");
+  o.bindings_path = resolve(o.bindings_path, "--bindings");
   load_bindings(o.bindings_path);  // a bad bindings file is bad input in every mode
-  o.sounds_path = resolve_data_path(o.sounds_path, "--sounds");
+  o.sounds_path = resolve(o.sounds_path, "--sounds");
   load_sound_library(o.sounds_path);  // so is a bad sound file
   if (!parse_size(t.size, o.width, o.height))
     throw InputError("--size: expected WIDTHxHEIGHT with each in 16..8192, got '" + t.size + "'");
@@ -142,7 +154,7 @@ void resolve_options(const CLI::App& app, const CommandLineText& t, AppOptions& 
   // preset) unless a preset is named.
   const std::string preset = !t.quality.empty() ? t.quality : o.demo ? "high" : "";
   if (!preset.empty())
-    o.settings.apply_preset_file(std::string(ARCFIRE_SOURCE_DIR) + "/assets/settings/quality.json", preset);
+    o.settings.apply_preset_file(root + "/assets/settings/quality.json", preset);
   for (const auto& s : t.sets) o.settings.set_from_text(s, "--set " + s);
   if (!t.difficulty.empty()) {
     if (t.difficulty == "easy") o.game.difficulty = Difficulty::Easy;
@@ -170,7 +182,7 @@ void resolve_options(const CLI::App& app, const CommandLineText& t, AppOptions& 
   resolve_preview_options(app, o);
   o.workbench = app.get_option("--workbench")->count() > 0;
   if (o.workbench && (o.headless || !o.replay_path.empty())) throw InputError("--workbench: a window of its own, not with --headless or --replay");
-  if (!o.workbench_effect.empty()) o.workbench_effect = resolve_data_path(o.workbench_effect, "--workbench");
+  if (!o.workbench_effect.empty()) o.workbench_effect = resolve_data_path(o.workbench_effect, "--workbench", root);
 }
 
 }  // namespace
@@ -198,8 +210,14 @@ std::optional<int> parse_command_line(int argc, char** argv, AppOptions& o) {
   o.quality_given = !text.quality.empty();
   o.setting_overrides = text.sets;
   if (o.demo && !o.level_given) o.level = "levels/attract.json";
-  o.game.root_dir = ARCFIRE_SOURCE_DIR;
   try {
+    const DataRoot root = resolve_data_root(text.data, std::getenv("ARCFIRE_DATA"), executable_path());
+    set_data_root(root.dir);
+    o.game.root_dir = root.dir;
+    if (text.version) {
+      std::printf("arcfire %s\ndata: %s (%s)\n", ARCFIRE_VERSION, root.dir.c_str(), root.source.c_str());
+      return 0;
+    }
     resolve_options(app, text, o);
   } catch (const InputError& e) {
     std::fprintf(stderr, "arcfire: %s\n", e.what());

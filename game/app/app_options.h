@@ -50,9 +50,9 @@ struct AppOptions {
 // particles.cull_distance, sim.substeps) copied into the options a Game is loaded with.
 void apply_simulation_settings(const Settings& s, GameOptions& game);
 
-// A data file named on the command line: as given, or else relative to the source tree, so
+// A data file named on the command line: as given, or else relative to the data root `root`, so
 // `arcfire --level levels/arena.json` works from any folder. InputError if neither exists.
-std::string resolve_data_path(const std::string& path, const std::string& option);
+std::string resolve_data_path(const std::string& path, const std::string& option, const std::string& root);
 
 // Parses argv. Returns an exit code to stop with (0 after --help, 2 on bad usage), or nullopt
 // to go on. Errors are one line on stderr.

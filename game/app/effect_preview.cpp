@@ -20,6 +20,7 @@
 #include "game/workbench/effect_timeline.h"
 #include "gfx/renderer.h"
 #include "platform/platform.h"
+#include "platform/stop_request.h"
 
 namespace arc {
 namespace {
@@ -208,6 +209,7 @@ int run_preview(const PreviewOptions& o) {
   std::vector<Image> frames;
   nlohmann::json stats_frames = nlohmann::json::array();
   for (uint64_t t : ticks) {
+    if (stop_requested()) break;
     timeline.scrub_to(t, cam);
     const EffectCounts counts = timeline.frame_stats();
     view.particles.clear();
@@ -227,6 +229,10 @@ int run_preview(const PreviewOptions& o) {
                             {"clusters", clusters}, {"drawn", drawn.particles_drawn},
                             {"blended_pixels", drawn.particle_fragments}});
   }
+  // SIGINT or SIGTERM: a strip short of frames would pass for the effect's whole life.
+  if (stop_requested())
+    return report_stop("at frame " + std::to_string(frames.size()) + " of " + std::to_string(ticks.size()) +
+                       "; no filmstrip written");
   const std::string strip_path = (fs::path(o.out_dir) / "filmstrip.png").string();
   save_image(strip_path, filmstrip(frames));
   const nlohmann::json stats = {{"effect", name}, {"life_s", life}, {"ends", ends}, {"backdrop", o.backdrop},

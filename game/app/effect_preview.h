@@ -13,6 +13,7 @@
 #pragma once
 #include <string>
 
+#include "core/data_root.h"
 #include "core/settings.h"
 
 namespace arc {
@@ -25,7 +26,7 @@ struct PreviewOptions {
   int frames = 8;
   std::string backdrop = "space";  // "space", "wall" or a model name in assets/models
   Settings settings = Settings::defaults();
-  std::string root_dir = ARCFIRE_SOURCE_DIR;
+  std::string root_dir = data_root();  // core/data_root.h
 };
 
 struct AppOptions;
@@ -36,6 +37,7 @@ PreviewOptions preview_options(const AppOptions& app);
 std::string check_preview_backdrop(const std::string& backdrop, const std::string& root_dir);
 
 // Writes the filmstrip and stats; throws InputError (bad file, folder) or PlatformError.
+// SIGINT or SIGTERM stops it after the frame being drawn, writing neither (exit 130 or 143).
 int run_preview(const PreviewOptions& options);
 
 }  // namespace arc

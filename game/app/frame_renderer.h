@@ -9,6 +9,7 @@
 #include <string>
 
 #include "assets/image.h"
+#include "core/data_root.h"
 #include "core/settings.h"
 #include "game/render/hud_layout.h"
 
@@ -19,7 +20,7 @@ class Game;
 struct FrameRendererDesc {
   int width = 1280;
   int height = 720;
-  std::string root_dir = ARCFIRE_SOURCE_DIR;  // repo root: shaders/, assets/
+  std::string root_dir = data_root();  // shaders/, assets/ (core/data_root.h)
 };
 
 class FrameRenderer {

@@ -13,6 +13,7 @@
 #include "game/app/frame_renderer.h"
 #include "game/sim/game.h"
 #include "game/sim/world.h"
+#include "platform/stop_request.h"
 
 namespace arc {
 namespace {
@@ -65,6 +66,7 @@ int run_headless(const AppOptions& o) {
       written.push_back(path);
       if (demo) frames.push_back(std::move(img));
     }
+    if (stop_requested()) break;  // SIGINT or SIGTERM: what the ticks so far made is written below
   }
   // Each write throws WriteError on failure (exit 1, one line): nothing below reports a file
   // that is not complete on disk.
@@ -80,6 +82,7 @@ int run_headless(const AppOptions& o) {
     std::printf("arcfire: contact sheet: %s\n", sheet.c_str());
   }
   if (!o.summary_path.empty()) std::printf("arcfire: summary: %s\n", o.summary_path.c_str());
+  if (stop_requested()) return report_stop("at tick " + std::to_string(game.tick()) + " of " + std::to_string(ticks));
   std::printf("arcfire: simulated %lld ticks of %s\n", static_cast<long long>(ticks), level.c_str());
   return kExitOk;
 }

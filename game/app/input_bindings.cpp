@@ -48,22 +48,25 @@ double deadzone(double v, double dz) {
   return std::copysign((a - dz) / (1.0 - dz), v);
 }
 
-// Quantises base + mouse + the error owed by the previous tick, and keeps the new error: small
-// per-tick mouse shares then add up to the motion that was made instead of rounding away.
-int8_t quantise_carrying(double base, double mouse, double& carry) {
-  if (mouse == 0.0) {
+// Quantises base + mouse + what earlier ticks still owe, and keeps what this tick could not
+// give: the rounding, so small per-tick mouse shares add up to the motion that was made, and a
+// flick's excess over the full turn rate, so the ship turns as far as the mouse went, as fast as
+// it can. Motion back takes from what is owed first. At most `limit` is owed (a half turn).
+int8_t quantise_carrying(double base, double mouse, double& carry, double limit) {
+  constexpr double kRounding = 0.6 / 127.0;  // a rounding error, not a backlog to turn
+  if (mouse == 0.0 && std::fabs(carry) <= kRounding) {
     carry = 0.0;
     return quantise_axis(base);
   }
-  const double wanted = std::clamp(base + mouse + carry, -1.0, 1.0);
+  const double wanted = std::clamp(base, -1.0, 1.0) + mouse + carry;
   const int8_t q = quantise_axis(wanted);
-  carry = wanted - axis_value(q);
+  carry = std::clamp(wanted - axis_value(q), -limit, limit);
   return q;
 }
 
 }  // namespace
 
-// Long: one line per bound action, in the file's order; splitting would only scatter the list.
+// One line per bound action, in the file's order.
 static Bindings bindings_from(const std::shared_ptr<const JsonDoc>& doc) {
   JsonObject root = JsonValue(doc, "", &doc->root()).object();
   Bindings b;
@@ -248,9 +251,12 @@ InputFrame LiveInput::take_frame(int ticks_left) {
     mouse_pitch = mouse_y * dy * b_.mouse_sensitivity / (scale_.pitch_rate_degrees * scale_.tick_seconds);
     mouse_yaw = dx * b_.mouse_sensitivity / (scale_.yaw_rate_degrees * scale_.tick_seconds);
   }
+  // A half turn, in ticks of the full turn rate.
+  const double pitch_limit = 180.0 / (scale_.pitch_rate_degrees * scale_.tick_seconds);
+  const double yaw_limit = 180.0 / (scale_.yaw_rate_degrees * scale_.tick_seconds);
   InputFrame f;
-  f.pitch = quantise_carrying(key_axis(b_.pitch) + pad_y * -pad(b_.pad_pitch), mouse_pitch, pitch_carry_);
-  f.yaw = quantise_carrying(key_axis(b_.yaw) + pad(b_.pad_yaw), mouse_yaw, yaw_carry_);
+  f.pitch = quantise_carrying(key_axis(b_.pitch) + pad_y * -pad(b_.pad_pitch), mouse_pitch, pitch_carry_, pitch_limit);
+  f.yaw = quantise_carrying(key_axis(b_.yaw) + pad(b_.pad_yaw), mouse_yaw, yaw_carry_, yaw_limit);
   if (b_.mouse_mode == MouseMode::Joystick) pitch_carry_ = yaw_carry_ = 0.0;  // a held rate: nothing to carry
   f.roll = quantise_axis(key_axis(b_.roll) + pad(b_.pad_roll));
   advance_throttle(std::clamp(key_axis(b_.throttle) - pad(b_.pad_throttle), -1.0, 1.0));

@@ -6,10 +6,12 @@
 // of that frame, plus edge-triggered game commands and app actions (screenshot, FPS counter).
 //
 // Mouse flight has two modes, chosen in the bindings file:
-//   relative  mouse travel turns the ship: `sensitivity` degrees per pixel, up to the ship's
-//             full turn rate. The motion of a frame is spread over every tick that frame
-//             simulates, and the quantisation error of each tick is carried into the next,
-//             so the angle per pixel is the same at any frame rate.
+//   relative  mouse travel turns the ship: `sensitivity` degrees per pixel. The motion of a
+//             frame is spread over every tick that frame simulates, and what a tick cannot give
+//             (its quantisation error, and a flick's excess over the ship's full turn rate) is
+//             owed to the next ticks, up to a half turn, so the ship turns as far as the mouse
+//             went at any frame rate and a flick turns it as fast as it can. Motion back takes
+//             from what is owed first.
 //   joystick  a virtual cursor (drawn as a reticle by the HUD) moves with the mouse; its
 //             offset from the screen centre sets the turn rate, full at `joystick_radius`.
 // The throttle is a setting that stays where it is put: its keys change it at
@@ -75,7 +77,8 @@ enum class AppAction { Screenshot, ToggleFps, ToggleCamera, TogglePause };
 class LiveInput {
  public:
   explicit LiveInput(Bindings b) : b_(std::move(b)) {}
-  void set_flight_scale(const FlightScale& scale) { scale_ = scale; }
+  // A new flown ship or game: what the mouse still owed the old one is dropped.
+  void set_flight_scale(const FlightScale& scale) { scale_ = scale; pitch_carry_ = yaw_carry_ = 0.0; }
   void set_screen_height(int pixels) { screen_height_ = pixels > 0 ? pixels : screen_height_; }
   // Samples one frame of device state; accumulates mouse motion and edges until consumed.
   void sample(const InputState& s);
@@ -106,7 +109,7 @@ class LiveInput {
   InputState prev_{};
   InputState cur_{};
   double mouse_dx_ = 0, mouse_dy_ = 0;          // relative mode: pixels not yet given to a tick
-  double pitch_carry_ = 0, yaw_carry_ = 0;      // relative mode: quantisation error owed to the next tick
+  double pitch_carry_ = 0, yaw_carry_ = 0;      // relative mode: turn owed to the next ticks, in axis units
   double joystick_x_ = 0, joystick_y_ = 0;      // joystick mode: cursor offset in pixels, +y down
   double set_throttle_ = 0;
   bool throttle_held_at_zero_ = false;          // crossed zero with the key held: wait for a new press

@@ -1,7 +1,8 @@
 // arcfire — entry point. Parses the command line and hands over to one of the modes:
 // window (play), headless frames / demo / summary, replay, serialization test.
 // Exit codes: 0 success, 1 a check failed (a write that failed on the way counts as one), 2 bad
-// input or usage (an output path that cannot be used too).
+// input or usage (an output path that cannot be used too), 130 or 143 stopped by SIGINT or SIGTERM
+// after the mode's files are written (platform/stop_request.h).
 #include <cstdio>
 #include <exception>
 
@@ -16,8 +17,10 @@
 #include "game/app/window_loop.h"
 #include "game/workbench/workbench_window.h"
 #include "platform/platform.h"
+#include "platform/stop_request.h"
 
 int main(int argc, char** argv) {
+  arc::install_stop_handlers();
   arc::AppOptions options;
   if (auto code = arc::parse_command_line(argc, argv, options)) return *code;
   try {
@@ -27,8 +30,9 @@ int main(int argc, char** argv) {
     if (!options.preview_path.empty()) return arc::run_preview(arc::preview_options(options));
     if (options.headless || options.demo) return arc::run_headless(options);
     if (options.workbench)
-      return arc::run_workbench({.effect_path = options.workbench_effect, .settings = options.settings,
-                                 .width = options.width, .height = options.height, .vsync = options.vsync});
+      return arc::run_workbench({.root_dir = options.game.root_dir, .effect_path = options.workbench_effect,
+                                 .settings = options.settings, .width = options.width, .height = options.height,
+                                 .vsync = options.vsync});
     return arc::run_window(options);
   } catch (const arc::WriteError& e) {
     std::fprintf(stderr, "arcfire: %s\n", e.what());

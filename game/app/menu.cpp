@@ -1,16 +1,14 @@
-// The menu state machine: screens, their items, navigation, settings changes, remapping, results.
+// The menu state machine: screens, their items, navigation, settings changes, remapping,
+// results and the pause screen.
 #include "game/app/menu.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
-#include <sstream>
-
 #include "core/error.h"
 #include "game/app/key_remap.h"
 #include "game/sim/world.h"
-#include "platform/platform.h"
 
 namespace arc {
 
@@ -20,7 +18,8 @@ enum class Menu::Item {
   Quality, RenderSettings, Sensitivity, InvertY, Deadzone, Fov,     // settings
   Fullscreen, Vsync, RenderKey, ResetRender,
   Controls, ResetProgress, Action, ResetKeys,                      // settings, controls
-  Retry, Next, ToMenu                                              // results
+  Retry, Next, ToMenu,                                             // results
+  Resume, Restart, PauseDifficulty, Sound, Volume, MainMenu        // pause (and Quit)
 };
 
 namespace {
@@ -68,52 +67,6 @@ MissionResult mission_result(const World& w) {
   return r;
 }
 
-std::vector<UiInput> parse_ui_inputs(const std::string& text, const std::string& path) {
-  std::vector<UiInput> out;
-  std::istringstream lines(text);
-  std::string line;
-  for (int n = 1; std::getline(lines, line); ++n) {
-    line = line.substr(0, line.find('#'));
-    std::istringstream words(line);
-    std::string w;
-    auto fail = [&](const std::string& what) {
-      const size_t col = line.find(w) + 1;
-      throw InputError(path + ":" + std::to_string(n) + ":" + std::to_string(col) + ": " + what);
-    };
-    while (words >> w) {
-      static const std::vector<std::pair<std::string, UiKey>> keys = {
-          {"up", UiKey::Up}, {"down", UiKey::Down}, {"left", UiKey::Left}, {"right", UiKey::Right},
-          {"accept", UiKey::Accept}, {"back", UiKey::Back}};
-      auto k = std::find_if(keys.begin(), keys.end(), [&](const auto& p) { return p.first == w; });
-      if (k != keys.end()) {
-        out.push_back(UiInput::press(k->second));
-        continue;
-      }
-      std::string arg;
-      if ((w != "click" && w != "hover" && w != "bind") || !(words >> arg))
-        fail("unknown UI input '" + w + "'; allowed: up, down, left, right, accept, back, click N, hover N, bind KEY");
-      if (w == "bind") {
-        if (code_of_label(arg) < 0) fail("'" + arg + "' is not a key name (A, SPACE, MOUSE_LEFT, PAD_A, ...)");
-        out.push_back(UiInput::bind(code_of_label(arg)));
-      } else {
-        const int item = std::atoi(arg.c_str());
-        out.push_back(w == "click" ? UiInput::click(item) : UiInput::hover(item));
-      }
-    }
-  }
-  return out;
-}
-
-std::string describe_page(const MenuPage& p) {
-  std::string out = "title: " + p.title + "\n";
-  if (!p.subtitle.empty()) out += "subtitle: " + p.subtitle + "\n";
-  if (!p.paragraph.empty()) out += "paragraph: " + p.paragraph + "\n";
-  for (const std::string& l : p.lines) out += "line: " + l + "\n";
-  for (size_t i = 0; i < p.items.size(); ++i) out += (int(i) == p.selection ? "> " : "  ") + p.items[i] + "\n";
-  if (!p.message.empty()) out += "message: " + p.message + "\n";
-  return out;
-}
-
 const char* menu_screen_name(MenuScreen s) {
   switch (s) {
     case MenuScreen::Main: return "main";
@@ -124,6 +77,7 @@ const char* menu_screen_name(MenuScreen s) {
     case MenuScreen::Render: return "render";
     case MenuScreen::Controls: return "controls";
     case MenuScreen::Results: return "results";
+    case MenuScreen::Pause: return "pause";
     case MenuScreen::Closed: return "closed";
   }
   return "?";
@@ -146,6 +100,8 @@ Menu::Menu(std::vector<MissionInfo> catalog, UserFiles files, Bindings bindings,
   std::stable_sort(presets_.begin(), presets_.end(), [&](const auto& a, const auto& b) { return rank(a) < rank(b); });
   refresh_effective();
 }
+
+Menu::Menu(UserFiles files) : files_(std::move(files)), screen_(MenuScreen::Closed), has_main_(false) {}
 
 void Menu::refresh_effective() {
   try {
@@ -196,6 +152,15 @@ std::vector<Menu::Item> Menu::items() const {
       v.push_back(Item::ToMenu);
       return v;
     }
+    case MenuScreen::Pause: {
+      // After victory or defeat Retry comes first.
+      std::vector<Item> v = pause_.outcome.empty() ? std::vector<Item>{Item::Resume, Item::Restart}
+                                                   : std::vector<Item>{Item::Restart, Item::Resume};
+      v.insert(v.end(), {Item::PauseDifficulty, Item::Sound, Item::Volume});
+      if (has_main_) v.push_back(Item::MainMenu);
+      v.push_back(Item::Quit);
+      return v;
+    }
     case MenuScreen::Closed: return {};
   }
   return {};
@@ -206,7 +171,6 @@ std::string Menu::best_text(const std::string& level) const {
   return it == files_.progress.best.end() ? "no result yet" : result_text(it->second);
 }
 
-// Long: one label per kind of item, each a line; splitting it would scatter the screen's text.
 std::string Menu::item_label(Item item, int index) const {
   const UserSettings& s = files_.settings;
   switch (item) {
@@ -253,8 +217,8 @@ std::string Menu::item_label(Item item, int index) const {
     case Item::Retry: return "Retry";
     case Item::Next: return "Next mission: " + next_mission(catalog_, chosen_)->title;
     case Item::ToMenu: return "Menu";
+    default: return pause_label(item);
   }
-  return "";
 }
 
 void Menu::fill_briefing_page(MenuPage& p) const {
@@ -315,6 +279,11 @@ MenuPage Menu::page() const {
       p.rows = kControlRows;
       break;
     case MenuScreen::Results: fill_results_page(p); break;
+    case MenuScreen::Pause:
+      p.title = pause_.outcome.empty() ? "PAUSED" : pause_.outcome;
+      p.title_tone = pause_.outcome_tone;
+      p.hint = "Up/Down or mouse: choose   Enter: select   Left/Right: change   Esc: resume";
+      break;
     case MenuScreen::Closed: break;
   }
   return p;
@@ -328,7 +297,7 @@ void Menu::go(MenuScreen s) {
 }
 
 void Menu::open_main() {
-  go(MenuScreen::Main);
+  go(has_main_ ? MenuScreen::Main : MenuScreen::Closed);
   message_.clear();
 }
 
@@ -371,7 +340,6 @@ std::vector<MenuRequest> Menu::handle(const UiInput& in) {
   return {};
 }
 
-// Long: one case per kind of item, each a few lines of what Enter (or a click) does to it.
 std::vector<MenuRequest> Menu::accept(Item item, int index) {
   using K = MenuRequest::Kind;
   UserSettings& s = files_.settings;
@@ -428,6 +396,12 @@ std::vector<MenuRequest> Menu::accept(Item item, int index) {
       return {{K::Launch, level, difficulty_}};
     }
     case Item::ToMenu: open_main(); return {};
+    case Item::Resume:
+    case Item::Restart:
+    case Item::PauseDifficulty:
+    case Item::Sound:
+    case Item::Volume:
+    case Item::MainMenu: return pause_accept(item);
     default: return adjust(item, 1);  // values: Enter steps them up, like Right
   }
 }
@@ -458,6 +432,9 @@ std::vector<MenuRequest> Menu::adjust(Item item, int step) {
     case Item::Fullscreen:
     case Item::Vsync: return accept(item, selection_);
     case Item::RenderKey: return adjust_render(selection_, step);
+    case Item::PauseDifficulty:
+      return {{K::SetDifficulty, "", Difficulty((int(pause_.next) + step + 3) % 3)}};
+    case Item::Volume: return {{K::StepVolume, "", Difficulty::Normal, step}};
     default: return {};
   }
 }
@@ -495,6 +472,7 @@ std::vector<MenuRequest> Menu::adjust_render(int index, int step) {
 std::vector<MenuRequest> Menu::back() {
   message_.clear();
   switch (screen_) {
+    case MenuScreen::Pause: return {{MenuRequest::Kind::Resume}};
     case MenuScreen::Briefing: {
       go(MenuScreen::Missions);
       const std::vector<const MissionInfo*> list = listed();
@@ -529,6 +507,59 @@ std::vector<MenuRequest> Menu::show_results(const std::string& level, Difficulty
   last_is_best_ = record_result(files_.progress, progress_key(level, difficulty_name(d)), r);
   if (!last_is_best_) return {};
   return {{MenuRequest::Kind::SaveProgress}};
+}
+
+PauseState pause_state_of(const World& w) {
+  PauseState s;
+  s.playing = Difficulty(w.difficulty);
+  if (w.outcome == Outcome::Undecided) return s;
+  s.outcome = outcome_text(w);
+  s.outcome_tone = w.outcome == Outcome::Victory ? 1 : w.outcome == Outcome::Defeat ? -1 : 0;
+  return s;
+}
+
+void Menu::pause(const PauseState& s) {
+  if (screen_ != MenuScreen::Closed && screen_ != MenuScreen::Pause) return;
+  if (screen_ == MenuScreen::Closed) {
+    go(MenuScreen::Pause);
+    message_.clear();
+  }
+  pause_ = s;
+  selection_ = std::min(selection_, int(items().size()) - 1);
+}
+
+void Menu::close_pause() {
+  if (screen_ == MenuScreen::Pause) go(MenuScreen::Closed);
+}
+
+std::string Menu::pause_label(Item item) const {
+  const bool decided = !pause_.outcome.empty();
+  const std::string ends = pause_.recording ? " (ends the recording)" : "";
+  switch (item) {
+    case Item::Resume: return "Resume";
+    case Item::Restart: return (decided ? "Retry" : "Restart") + ends;
+    case Item::PauseDifficulty:
+      return std::string("Difficulty: < ") + difficulty_name(pause_.next) + " >" +
+             (pause_.next != pause_.playing ? (decided ? " (applies on retry)" : " (applies on restart)") : "");
+    case Item::Sound: return pause_.muted ? "Sound: muted (M)" : "Sound: on (M)";
+    case Item::Volume: return "Volume: < " + std::to_string(int(std::lround(pause_.volume * 100))) + "% >";
+    case Item::MainMenu: return "Main menu" + ends;
+    default: return "";
+  }
+}
+
+// Enter on a value steps it up, wrapping: the volume from full back to silent.
+std::vector<MenuRequest> Menu::pause_accept(Item item) {
+  using K = MenuRequest::Kind;
+  switch (item) {
+    case Item::Resume: return {{K::Resume}};
+    case Item::Restart: return {{K::Restart}};
+    case Item::PauseDifficulty: return adjust(item, 1);
+    case Item::Sound: return {{K::ToggleMute}};
+    case Item::Volume: return adjust(item, pause_.volume >= 1.0 ? -10 : 1);
+    case Item::MainMenu: return {{K::MainMenu}};
+    default: return {};
+  }
 }
 
 }  // namespace arc

@@ -1,14 +1,21 @@
 // game/app/menu.h — the game around the fight: main menu, mission select, briefing, effects,
-// settings, key remapping and the results screen, as a state machine over plain UI inputs.
+// settings, key remapping, the results screen and the pause screen, as a state machine over
+// plain UI inputs.
 //
 // No GL and no window: the window loop turns keys, mouse and gamepad into UiInputs, feeds
 // them to handle(), carries out the MenuRequests it returns (launch a level, save settings,
-// quit) and draws page() with layout_menu() (game/render/menu_layout.h). Tests drive the same
-// machine with a scripted list of inputs (tests/unit/app/test_menu.cpp).
+// resume, quit) and draws page() with layout_menu() (game/render/menu_layout.h). Tests drive
+// the same machine with a scripted list of inputs (tests/unit/app/test_menu.cpp). A game
+// started with --level has no main menu: Menu(files) holds only the pause screen.
 //
-//   Menu menu(load_mission_catalog("levels", "."), files, bindings, default_bindings, "assets/settings/quality.json");
-//   for (MenuRequest r : menu.handle(UiInput::key(UiKey::Accept))) ...   // Play
-//   menu.show_results(level, Difficulty::Normal, result);                 // after the fight
+// Example, compiled as BannerExample.Menu in tests/unit/app/test_banner_examples.cpp:
+//   Menu menu(load_mission_catalog("levels", "."), files, bindings, bindings, "assets/settings/quality.json");
+//   menu.handle(UiInput::press(UiKey::Accept));  // Play: mission select
+//   menu.handle(UiInput::press(UiKey::Accept));  // the first mission's briefing
+//   std::vector<MenuRequest> go = menu.handle(UiInput::press(UiKey::Accept));  // Launch
+//   menu.pause(paused);                          // the game paused: Resume, Restart, ... Quit
+//   std::vector<MenuRequest> resume = menu.handle(UiInput::press(UiKey::Back));  // Esc: Resume
+//   menu.show_results(go[0].level, go[0].difficulty, result);  // the fight decided
 #pragma once
 #include <string>
 #include <vector>
@@ -41,24 +48,35 @@ struct UiInput {
 // the player ship's kills, damage and accuracy).
 MissionResult mission_result(const World& w);
 
-// A scripted sequence of UI inputs, one per word or "click N" / "hover N" / "bind KEY" pair:
-// up down left right accept back. InputError "path:line:col: ..." for anything else.
-std::vector<UiInput> parse_ui_inputs(const std::string& text, const std::string& path);
-
-// A screen as text, one line per element ("title: ...", "> item" for the selected one): the
-// snapshots of the menu test and of `arcfire --menu-script`.
-std::string describe_page(const MenuPage& p);
-
-enum class MenuScreen { Main, Missions, Effects, Briefing, Settings, Render, Controls, Results, Closed };
+enum class MenuScreen { Main, Missions, Effects, Briefing, Settings, Render, Controls, Results, Pause, Closed };
 const char* menu_screen_name(MenuScreen s);
 
+// What the pause screen shows of the game behind it; the window fills it while the game is
+// paused. The AI's difficulty is fixed when a game starts, so a change waits for the restart.
+struct PauseState {
+  std::string outcome;      // "" while the fight is undecided, else its verdict ("VICTORY", "DEFEAT", ...)
+  int outcome_tone = 0;     // as MenuPage::title_tone
+  Difficulty playing = Difficulty::Normal;  // the running game's
+  Difficulty next = Difficulty::Normal;     // what Restart (Retry) starts
+  bool recording = false;   // Restart and Main menu end the recording: their labels say so
+  bool muted = false;
+  double volume = 1.0;      // 0..1, in steps of a tenth
+};
+
+// The verdict of a decided fight as PauseState::outcome and its tone, the rest left default.
+PauseState pause_state_of(const World& w);
+
 struct MenuRequest {
-  enum class Kind { Launch, Quit, SaveSettings, SaveProgress, ApplyBindings };
-  MenuRequest(Kind k, std::string level_path = {}, Difficulty d = Difficulty::Normal)
-      : kind(k), level(std::move(level_path)), difficulty(d) {}
+  enum class Kind {
+    Launch, Quit, SaveSettings, SaveProgress, ApplyBindings,   // main menu, results
+    Resume, Restart, SetDifficulty, ToggleMute, StepVolume, MainMenu  // pause screen
+  };
+  MenuRequest(Kind k, std::string level_path = {}, Difficulty d = Difficulty::Normal, int step_count = 0)
+      : kind(k), level(std::move(level_path)), difficulty(d), steps(step_count) {}
   Kind kind;
   std::string level;      // Launch
-  Difficulty difficulty;  // Launch
+  Difficulty difficulty;  // Launch, SetDifficulty (for the next restart)
+  int steps;              // StepVolume: tenths of full volume, + louder
 };
 
 class Menu {
@@ -66,9 +84,14 @@ class Menu {
   // `quality_file`: the presets (assets/settings/quality.json) the settings screen offers.
   Menu(std::vector<MissionInfo> catalog, UserFiles files, Bindings bindings, Bindings default_bindings,
        const std::string& quality_file);
+  // No main menu (a game started with --level): closed until pause() opens the pause screen.
+  explicit Menu(UserFiles files);
 
   MenuScreen screen() const { return screen_; }
   bool open() const { return screen_ != MenuScreen::Closed; }
+  bool has_main() const { return has_main_; }
+  // A screen over a running game (main menu, results): the menu has the devices, not the ship.
+  bool over_game() const { return open() && screen_ != MenuScreen::Pause; }
   // Waiting for the key to bind (the window sends the next key or button as UiInput::bind).
   bool capturing() const { return capturing_; }
   MenuPage page() const;
@@ -78,6 +101,11 @@ class Menu {
   // changed). Retry and Next mission launch at the same difficulty.
   std::vector<MenuRequest> show_results(const std::string& level, Difficulty d, const MissionResult& r);
   void open_main();
+  // The game is paused: opens the pause screen on its first item, or shows `s` on it while it
+  // is open. Another screen open (the results over a paused fight): nothing.
+  void pause(const PauseState& s);
+  // The game runs again: the pause screen closes.
+  void close_pause();
   void set_message(std::string m) { message_ = std::move(m); }
 
   const UserSettings& settings() const { return files_.settings; }
@@ -98,6 +126,8 @@ class Menu {
   std::string best_text(const std::string& level) const;
   void fill_results_page(MenuPage& p) const;
   void fill_briefing_page(MenuPage& p) const;
+  std::string pause_label(Item item) const;
+  std::vector<MenuRequest> pause_accept(Item item);
 
   std::vector<MissionInfo> catalog_;
   UserFiles files_;
@@ -116,6 +146,8 @@ class Menu {
   bool capturing_ = false;
   bool confirm_reset_ = false;
   std::string message_;
+  bool has_main_ = true;
+  PauseState pause_;
 };
 
 }  // namespace arc

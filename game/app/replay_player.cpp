@@ -21,6 +21,7 @@
 #include "game/app/replay_expectations.h"
 #include "game/app/script_feeder.h"
 #include "gfx/image_compare.h"
+#include "platform/stop_request.h"
 #include "replay/hash_log.h"
 #include "replay/script.h"
 
@@ -141,8 +142,8 @@ ReplayPlayer::ReplayPlayer(const ReplayRunOptions& opt, replay::Script script)
     : opt_(opt),
       script_(std::move(script)),
       last_tick_(script_.last_tick()),
-      level_path_(resolve_script_level(script_, data_root(opt.game))),
-      settings_(script_settings(script_, opt.settings, data_root(opt.game))),
+      level_path_(resolve_script_level(script_, data_root_of(opt.game))),
+      settings_(script_settings(script_, opt.settings, data_root_of(opt.game))),
       game_options_(script_game_options(script_, settings_, opt.game)),
       game_(Game::load_level(level_path_, game_options_)) {
   check_expectation_names(script_, game_.world());
@@ -354,8 +355,13 @@ void ReplayPlayer::run() {
       ++result_.frames_rendered;
     }
     bar.update(t + 1);
+    if (stop_requested()) {  // SIGINT or SIGTERM: at the end of this tick, its checks not made
+      result_.stopped = true;
+      result_.ticks = t + 1;
+      break;
+    }
   }
-  result_.ticks = last;
+  if (!result_.stopped) result_.ticks = last;
   result_.final_hash = game_.hash();
   if (audio_) audio_->finish();
 }
@@ -387,6 +393,16 @@ ReplayOutcome play_replay(const ReplayRunOptions& opt) {
   ReplayOutcome& result = p.result();
   result.setup_seconds = std::chrono::duration<double>(ready - start).count();
   result.run_seconds = std::chrono::duration<double>(clock::now() - ready).count();
+  if (result.stopped) {
+    // The checks past the tick reached were never made: no failure for them, no golden updated.
+    if (!opt.quiet || result.failures > 0)
+      std::printf("%s: %d checks up to tick %llu, %d failed\n", opt.script_path.c_str(), result.checks,
+                  static_cast<unsigned long long>(result.ticks), result.failures);
+    result.exit_code = report_stop("at tick " + std::to_string(result.ticks) + " of " +
+                                   std::to_string(p.script().last_tick()) +
+                                   (opt.update_golden ? "; the golden files are unchanged" : ""));
+    return result;
+  }
   if (opt.update_golden) p.update_golden(text);
   if (!opt.quiet || result.failures > 0)
     std::printf("%s: %d checks, %d failed%s\n", opt.script_path.c_str(), result.checks, result.failures,
@@ -397,6 +413,7 @@ ReplayOutcome play_replay(const ReplayRunOptions& opt) {
 
 int run_replay(const ReplayRunOptions& options) {
   ReplayOutcome r = play_replay(options);
+  if (r.stopped) return r.exit_code;
   std::printf("final hash %s at tick %llu\n", replay::hex64(r.final_hash).c_str(),
               static_cast<unsigned long long>(r.ticks));
   std::fflush(stdout);

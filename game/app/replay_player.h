@@ -8,7 +8,9 @@
 // diverging tick with a state dump. Snapshots render through FrameRenderer and compare with
 // golden PNGs (within the script's `tolerance`) under the settings the script names; only
 // snapshots create a GL context. Exit codes: 0 every check passed, 1 a check failed; a bad
-// script, level or golden folder throws InputError (exit 2) before any tick.
+// script, level or golden folder throws InputError (exit 2) before any tick. SIGINT or SIGTERM
+// stops it at the end of the tick: one line says where, the checks not reached count as
+// neither passed nor failed, --update-golden changes nothing, and the code is 130 or 143.
 //
 // Example, compiled as BannerExample.ReplayPlayer in tests/unit/app/test_banner_examples.cpp:
 //   ReplayRunOptions options;
@@ -53,13 +55,15 @@ struct ReplayOutcome {
   int checks = 0;
   int failures = 0;
   int frames_rendered = 0;
+  bool stopped = false;      // SIGINT or SIGTERM ended it after `ticks`, before the script's end
   double setup_seconds = 0;  // wall clock spent before the first tick (level, GL context, assets)
   double run_seconds = 0;    // wall clock of the ticks themselves
 };
 
 // Runs the script as fast as it can. InputError for a bad script, level or golden folder.
 ReplayOutcome play_replay(const ReplayRunOptions& options);
-// play_replay, then "final hash HEX at tick N" as the last line of stdout; returns the exit code.
+// play_replay, then "final hash HEX at tick N" as the last line of stdout (not when stopped by
+// a signal); returns the exit code.
 int run_replay(const ReplayRunOptions& options);
 
 }  // namespace arc

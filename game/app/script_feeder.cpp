@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "core/data_root.h"
 #include "core/error.h"
 #include "core/json.h"
 #include "game/app/app_options.h"
@@ -41,9 +42,7 @@ replay::InputState to_input_state(const InputFrame& f) {
   return s;
 }
 
-std::string data_root(const GameOptions& options) {
-  return options.root_dir == "." ? std::string(ARCFIRE_SOURCE_DIR) : options.root_dir;
-}
+std::string data_root_of(const GameOptions& options) { return options.root_dir == "." ? data_root() : options.root_dir; }
 
 std::string resolve_script_level(const replay::Script& s, const std::string& root) {
   namespace fs = std::filesystem;

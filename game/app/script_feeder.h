@@ -20,8 +20,8 @@ namespace arc {
 InputFrame to_input_frame(const replay::InputState& s);
 replay::InputState to_input_state(const InputFrame& f);
 
-// The folder data files are found under: options.root_dir, or the source tree for ".".
-std::string data_root(const GameOptions& options);
+// The folder data files are found under: options.root_dir, or the data root (core/data_root.h) for ".".
+std::string data_root_of(const GameOptions& options);
 
 // The level a script names: as written (relative to the working folder), else relative to
 // root_dir, so scripts run from any folder. InputError at the level line when neither exists.

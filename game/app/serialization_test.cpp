@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "game/app/script_feeder.h"
+#include "platform/stop_request.h"
 #include "replay/script.h"
 
 namespace arc {
@@ -23,8 +24,8 @@ int run_serialization_test(const SerializationTestOptions& opt) {
   uint64_t last = static_cast<uint64_t>(opt.ticks);
   if (!opt.script_path.empty()) {
     script = replay::load_script(opt.script_path);
-    level = resolve_script_level(*script, data_root(opt.game));
-    game_options = script_game_options(*script, script_settings(*script, opt.settings, data_root(opt.game)), opt.game);
+    level = resolve_script_level(*script, data_root_of(opt.game));
+    game_options = script_game_options(*script, script_settings(*script, opt.settings, data_root_of(opt.game)), opt.game);
     last = script->last_tick();
   }
   if (uint64_t(opt.every) > last)
@@ -60,6 +61,9 @@ int run_serialization_test(const SerializationTestOptions& opt) {
           return diverged(t, "full hash", original.full_hash(), restored->full_hash());
     }
     if (t >= last) break;
+    if (stop_requested())  // SIGINT or SIGTERM: the ticks compared so far were equal
+      return report_stop("at tick " + std::to_string(t) + " of " + std::to_string(last) + " after " +
+                         std::to_string(saves) + " save/restore cycles, hashes equal so far");
     feed_original.step(original, t);
     if (restored) feed_restored.step(*restored, t);
   }

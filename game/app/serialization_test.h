@@ -4,7 +4,8 @@
 // Saves the game every N ticks, restores the bytes into a second Game (game/sim/serialize.h)
 // and steps both with the same input; fails (exit 1) at the first tick whose hashes differ,
 // printing both state dumps. Input comes from a replay script when one is given, else the
-// level runs with no input (AI ships still fight).
+// level runs with no input (AI ships still fight). SIGINT or SIGTERM stops it at the end of the
+// tick with one line saying where (exit 130 or 143).
 //
 // Example, compiled as BannerExample.SerializationTest in tests/unit/app/test_banner_examples.cpp:
 //   SerializationTestOptions options;

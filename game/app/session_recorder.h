@@ -70,7 +70,7 @@ class SessionRecorder {
   int fd_ = -1;
   uint64_t size_ = 0;        // bytes of whole lines in the file
   bool bak_pending_ = false;  // NAME.bak holds the previous recording until the first second
-  bool moved_to_bak_ = false;  // this session moved NAME there (put back if the header fails)
+  bool moved_to_bak_ = false;  // this recorder moved NAME there (put back if the header fails)
   std::string error_;
   replay::InputState held_;
   uint64_t tick_rate_ = 60;

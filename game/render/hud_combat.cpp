@@ -134,13 +134,10 @@ void missile_warning(const World& w, const Ship& me, const Projector& pr, double
 
 }  // namespace
 
-void layout_range_cue(HudLayer& h, glm::dvec2 c, double r, bool in_range, double distance, const glm::vec4& col) {
+void layout_range_cue(HudLayer& h, glm::dvec2 c, double r, bool in_range, const glm::vec4& col) {
   // Above the brackets: the crosshair sits on the target while aiming, its arms reach 14 below.
   const double y = c.y - std::max(r, 18.0) - 20.0;
-  if (!in_range) {
-    centred_text(h, c.x, y, 1.0, faded(kHudWhite, 0.7), fmt("%.0f m", distance));
-    return;
-  }
+  if (!in_range) return;
   const std::string label = "IN RANGE";
   const double w = kGlyphAdvance * double(label.size()) + 8.0;
   quad(h, c.x - 0.5 * w, y - 2.0, w, 17.0, faded(col, 0.3));

@@ -9,7 +9,7 @@
 //                   and a glow on the screen edge toward it, fading with the hit's age;
 //   missile warning "MISSILE 420 m" blinking above the crosshair and a marker on the ring
 //                   toward each missile homing on `me`;
-//   range cue       above the target's brackets, whether the beam reaches it;
+//   range cue       above the target's brackets, "IN RANGE" while the beam reaches it;
 //   kill feed       the last kills (killer and victim, from the dead ships' death tick and last
 //                   attacker), newest first, under the objective, each for kill_feed_seconds.
 // Sizes are in canvas units (hud_draw.h).
@@ -24,8 +24,9 @@ class World;
 struct Ship;
 
 // Above the target's brackets (centre c, half-size r): "IN RANGE" when the target is within the
-// beam's range (the brackets are drawn bolder then), else its distance.
-void layout_range_cue(HudLayer& h, glm::dvec2 c, double r, bool in_range, double distance, const glm::vec4& col);
+// beam's range (the brackets are drawn bolder then); the distance is under the brackets
+// (hud_aim.h).
+void layout_range_cue(HudLayer& h, glm::dvec2 c, double r, bool in_range, const glm::vec4& col);
 void layout_combat_cues(const World& w, const Ship& me, const Projector& pr, const HudRules& rules, double alpha,
                         double canvas_w, double canvas_h, HudLayer& h);
 // `me` (may be null) colours the entries: green for its side's kills, red for its losses.

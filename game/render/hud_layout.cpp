@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include "game/render/hud_aim.h"
 #include "game/render/hud_combat.h"
 #include "game/render/hud_draw.h"
 #include "game/render/hud_radar.h"
@@ -15,56 +16,82 @@
 namespace arc {
 namespace {
 
-// Canvas units an off-screen arrow keeps from the screen edges and from the radar.
-constexpr double kArrowMargin = 30.0;
-
 // HUD sizes follow the window height: 1 at 720 pixels. Text never shrinks below the font's
 // own size, where its one-pixel strokes would blur away.
 double height_scale(int height) { return std::max(height / 720.0, 0.5); }
 double text_scale(double at_720, int height) { return std::max(at_720 * height_scale(height), 1.0); }
 constexpr double kGlyphLineHeight = 13.0; // pixels per line at text scale 1 (the font's size)
+constexpr double kLeftMargin = 24.0;      // canvas units from the left edge to the panels there
+constexpr double kSideMargin = 12.0;      // at 720p, the least gap to the right edge and between panels
+constexpr double kBarLabelRise = 16.0;    // bar() puts its label this far above the bar, at text scale 1
+constexpr double kKillFeedRow = 18.0;     // layout_kill_feed()'s line spacing
+constexpr size_t kObjectiveLines = 2;
+constexpr size_t kTargetPanelChars = 25;  // the target's name, class and distance fit this many
 
-std::string outcome_text(const World& w) {
-  return w.outcome == Outcome::Victory  ? "VICTORY"
-         : w.outcome == Outcome::Defeat ? "DEFEAT"
-                                        : "TEAM " + w.team_name(w.winner) + " WINS";
+// The target panel's width at the top right, reserved whether a target is shown or not so the
+// objective does not reflow when one is picked.
+double target_panel_width(int height) {
+  const double k = height_scale(height);
+  return std::max(230 * k, kTargetPanelChars * kGlyphAdvance * text_scale(1.2, height) + kSideMargin * k);
+}
+
+// The target panel's rows: its name, then the shield bar and the hull bar, each with its label.
+struct TargetPanelRows {
+  double name_y, shield_y, hull_y, bar_h;
+};
+TargetPanelRows target_panel_rows(int height) {
+  const double k = height_scale(height), s = text_scale(1.2, height), bar_h = 10 * k, name_y = 30 * k;
+  const double shield_y = name_y + std::max(40 * k, kGlyphLineHeight * s + kBarLabelRise + 2);
+  return {name_y, shield_y, shield_y + std::max(30 * k, bar_h + kBarLabelRise + 2), bar_h};
+}
+double target_panel_bottom(int height) {
+  const TargetPanelRows r = target_panel_rows(height);
+  return r.hull_y + r.bar_h;
+}
+
+// The own bars' row spacing and the first bar's top, at the bottom left.
+double own_bar_row(int height) {
+  const double k = height_scale(height);
+  return std::max(34 * k, kBarLabelRise + 12 * k + 4);
+}
+double own_bars_top(int height) {
+  const double k = height_scale(height);
+  return height - 30 * k - 2 * own_bar_row(height) - 12 * k;
+}
+
+// The weapon text's line spacing at the bottom right.
+double weapon_row(int height) { return std::max(24 * height_scale(height), 14 * text_scale(1.2, height)); }
+
+// Where the off-screen arrow may stand: inside the screen edges, under the top panels (the
+// target panel and the longest kill feed) and above the bottom ones (bars, radar, weapon).
+HudRect arrow_area(double feed_y, int kill_feed_lines, int width, int height) {
+  const double k = height_scale(height), margin = 30 * k;
+  const double top = std::max(target_panel_bottom(height), feed_y + kKillFeedRow * std::max(kill_feed_lines, 0));
+  const double bars_top = own_bars_top(height) - kBarLabelRise * text_scale(1.0, height);
+  const double bottom = std::min({bars_top, radar_rect(width, height).y, height - 36 * k - weapon_row(height)});
+  return {margin, top + margin, std::max(1.0, width - 2 * margin), std::max(1.0, bottom - top - 2 * margin)};
 }
 
 void centred_text(HudLayer& h, double cx, double y, double scale, const glm::vec4& c, const std::string& s) {
   text(h, cx - s.size() * kGlyphAdvance * scale * 0.5, y, scale, c, s);
 }
 
-// Victory or defeat stays on screen; with the menu open it is the menu's title.
+// Victory or defeat stays on screen; with a menu open (the pause screen, the results) it is
+// the menu's title.
 void hud_outcome(const World& w, int width, int height, HudLayer& h) {
   if (w.outcome == Outcome::Undecided) return;
   const double k = height_scale(height);
   const glm::vec4 c = w.outcome == Outcome::Defeat ? kHudRed : kHudGreen;
-  centred_text(h, width * 0.5, height * 0.3 - (w.paused ? 70 * k : 0.0), text_scale(3.0, height), c, outcome_text(w));
+  centred_text(h, width * 0.5, height * 0.3, text_scale(3.0, height), c, outcome_text(w));
   if (w.paused || !w.player) return;
   const std::string hint = "Esc: menu (retry, difficulty, quit)";
   centred_text(h, width * 0.5, height * 0.3 + 48 * k, text_scale(1.2, height), kHudWhite, hint);
 }
 
-void hud_pause_menu(const World& w, const HudState& state, int width, int height, HudLayer& h) {
-  if (!w.paused) return;
-  const double k = height_scale(height), item_scale = text_scale(1.6, height), row = 22.5 * item_scale;
-  quad(h, 0, 0, width, height, {0.0f, 0.0f, 0.05f, 0.55f});
-  if (w.outcome == Outcome::Undecided)
-    centred_text(h, width * 0.5, height * 0.3, text_scale(2.5, height), kHudWhite, "PAUSED");
-  size_t longest = 0;
-  for (const std::string& item : state.pause_items) longest = std::max(longest, item.size());
-  const double box = longest * kGlyphAdvance * item_scale + 40 * k;
-  for (size_t i = 0; i < state.pause_items.size(); ++i) {
-    const bool sel = int(i) == state.pause_selection;
-    const double y = height * 0.4 + row * i;
-    if (sel) quad(h, width * 0.5 - box * 0.5, y - 4 * item_scale, box, 20 * item_scale, {0.3f, 0.6f, 1.0f, 0.35f});
-    centred_text(h, width * 0.5, y, item_scale, sel ? kHudYellow : kHudWhite, state.pause_items[i]);
-  }
-}
-
-// Text wrapped within the screen's margins on a dark band centred across it, `top` down.
-void text_band(HudLayer& h, const std::string& s, double top, int width, int height, const glm::vec4& back,
-               const glm::vec4& colour) {
+// Text wrapped within the screen's margins on a dark band centred across it, `y` down from
+// its top, or up from its bottom when `from_bottom`.
+void text_band(HudLayer& h, const std::string& s, double y, bool from_bottom, int width, int height,
+               const glm::vec4& back, const glm::vec4& colour) {
   const double k = height_scale(height), scale = text_scale(1.2, height), margin = 24 * k, pad = 8 * k;
   const double line_height = 14 * scale, advance = kGlyphAdvance * scale;
   const size_t chars = size_t(std::max(8.0, (width - 2 * margin - 2 * pad) / advance));
@@ -72,18 +99,27 @@ void text_band(HudLayer& h, const std::string& s, double top, int width, int hei
   size_t longest = 0;
   for (const std::string& l : lines) longest = std::max(longest, l.size());
   const double band_width = longest * advance + 2 * pad, left = (width - band_width) * 0.5;
-  quad(h, left, top, band_width, lines.size() * line_height + 2 * pad, back);
+  const double band_height = lines.size() * line_height + 2 * pad, top = from_bottom ? y - band_height : y;
+  quad(h, left, top, band_width, band_height, back);
   for (size_t i = 0; i < lines.size(); ++i) text(h, left + pad, top + pad + i * line_height, scale, colour, lines[i]);
 }
 
-// The notice at the top and the reload error below the target panel, both within the screen
-// and clear of the bars at the bottom.
-void hud_messages(const HudState& state, int width, int height, HudLayer& h) {
+// The notice just above the radar, growing upward: the top of the screen belongs to the
+// objective, the kill feed and the target panel, whose width leaves a notice no room there.
+void hud_notice(const HudState& state, int width, int height, HudLayer& h) {
+  if (state.notice.empty()) return;
+  const double bottom = radar_rect(width, height).y - 8 * height_scale(height);
+  text_band(h, state.notice, bottom, true, width, height, {0.05f, 0.1f, 0.2f, 0.8f}, {0.85f, 0.95f, 1.0f, 1.0f});
+}
+
+// The reload error under the top panels (the target panel and the longest kill feed).
+void hud_error_banner(const HudState& state, double feed_y, int kill_feed_lines, int width, int height,
+                      HudLayer& h) {
+  if (state.error_banner.empty()) return;
   const double k = height_scale(height);
-  if (!state.notice.empty())
-    text_band(h, state.notice, 40 * k, width, height, {0.05f, 0.1f, 0.2f, 0.8f}, {0.85f, 0.95f, 1.0f, 1.0f});
-  if (!state.error_banner.empty())
-    text_band(h, state.error_banner, 120 * k, width, height, {0.35f, 0.02f, 0.02f, 0.85f}, {1.0f, 0.85f, 0.8f, 1.0f});
+  const double feed_bottom = feed_y + kKillFeedRow * std::max(kill_feed_lines, 0);
+  const double top = std::max(target_panel_bottom(height), feed_bottom) + 8 * k;
+  text_band(h, state.error_banner, top, false, width, height, {0.35f, 0.02f, 0.02f, 0.85f}, {1.0f, 0.85f, 0.8f, 1.0f});
 }
 
 // Joystick mode: the dead zone, the full-rate ring and the cursor, around the screen centre.
@@ -134,91 +170,54 @@ void hud_throttle_and_speed(const Ship& me, double x, double top, double bottom,
   text(h, x + bar_w + 8 * k, top + 16 * speed_scale, text_scale(1.2, height), fill, setting);
 }
 
-// Where the off-screen arrow toward `dir` (from the centre) points from: on an ellipse inside
-// the screen edges, lifted above the radar when it would fall on it.
-glm::dvec2 offscreen_arrow_tip(glm::dvec2 dir, int width, int height) {
-  const double rx = width * 0.5 - kArrowMargin, ry = height * 0.5 - kArrowMargin;
-  glm::dvec2 tip(width * 0.5 + dir.x * rx, height * 0.5 + dir.y * ry);
-  const HudRect radar = radar_rect(width, height);
-  const double reach = 20.0 + kArrowMargin * 0.5;  // the arrow's size around its tip, and a gap
-  if (radar.overlaps(tip.x - reach, tip.y - reach, 2.0 * reach, 2.0 * reach)) tip.y = radar.y - reach;
-  return tip;
-}
-
-void hud_target(const World& w, const Ship& me, const Projector& pr, int width, int height, double alpha,
-                HudLayer& h) {
+// The target's name, class, distance and bars at the top right.
+void hud_target_panel(const World& w, const Ship& me, int width, int height, HudLayer& h) {
   if (!me.target || !w.ship(me.target).alive) return;
   const Ship& t = w.ship(me.target);
-  const glm::dvec3 tp = lerp_pos(t.prev_position, t.position, alpha);
   const glm::vec4 col = w.hostile(me, t) ? kHudRed : kHudBlue;
-  glm::dvec2 px;
-  double depth = 0;
-  const bool in_front = pr.project(tp, px, &depth);
-  const bool on_screen = in_front && px.x >= 0 && px.x <= width && px.y >= 0 && px.y <= height;
-  const double dist = std::sqrt(glm::dot(t.position - me.position, t.position - me.position));
-  // Paused, the pause menu stands in the middle of the screen: only the target's panel stays.
-  const bool cues = !w.paused;
-  if (cues && on_screen) {
-    const double r = t.cls->shield_radius * pr.focal / depth;
-    const bool in_range = dist <= me.cls->beam.range;
-    brackets(h, px, r, col, in_range ? 3.0f : 2.0f);
-    layout_range_cue(h, px, r, in_range, dist, col);
-    // Lead indicator: where to aim the current secondary (or the beam, which is instant).
-    const bool plasma = me.secondary == SecondaryWeapon::Plasma && me.cls->plasma.present;
-    const double speed = plasma ? me.cls->plasma.speed : me.cls->missile.present ? me.cls->missile.speed : 0.0;
-    if (speed > 0) {
-      glm::dvec3 rel = t.position - me.position, rv = t.velocity - me.velocity;
-      double time = std::sqrt(glm::dot(rel, rel)) / speed;
-      for (int i = 0; i < 2; ++i) time = std::sqrt(glm::dot(rel + rv * time, rel + rv * time)) / speed;
-      glm::dvec2 lp;
-      if (pr.project(tp + rv * time, lp)) {
-        const double d = 7;
-        line(h, lp.x - d, lp.y, lp.x, lp.y - d, kHudYellow);
-        line(h, lp.x, lp.y - d, lp.x + d, lp.y, kHudYellow);
-        line(h, lp.x + d, lp.y, lp.x, lp.y + d, kHudYellow);
-        line(h, lp.x, lp.y + d, lp.x - d, lp.y, kHudYellow);
-      }
-    }
-  } else if (cues) {
-    // Arrow at the screen edge toward the target.
-    glm::dvec3 v = pr.to_view(tp);
-    glm::dvec2 dir(v.x, -v.y);
-    double len = std::sqrt(dir.x * dir.x + dir.y * dir.y);
-    dir = len > 1e-9 ? dir / len : glm::dvec2(0, 1);
-    const glm::dvec2 tip = offscreen_arrow_tip(dir, width, height);
-    glm::dvec2 side(-dir.y, dir.x);
-    glm::dvec2 b0 = tip - dir * 18.0 + side * 10.0, b1 = tip - dir * 18.0 - side * 10.0;
-    line(h, tip.x, tip.y, b0.x, b0.y, col, 3.0f);
-    line(h, tip.x, tip.y, b1.x, b1.y, col, 3.0f);
-    line(h, b0.x, b0.y, b1.x, b1.y, col, 3.0f);
-  }
-  const double x = width - 230, y = 70;
-  text(h, x, y - 40, 1.2, col, t.name + " (" + t.cls->name + ") " + fmt("%.0f m", dist));
-  bar(h, x, y, 200, 10, t.cls->shield > 0 ? t.shield / t.cls->shield : 0.0, kHudBlue, "shield");
-  bar(h, x, y + 30, 200, 10, t.hull / t.cls->hull, kHudRed, "hull");
+  const double k = height_scale(height), s = text_scale(1.2, height), x = width - target_panel_width(height);
+  const size_t room = size_t(std::max(1.0, (target_panel_width(height) - kSideMargin * k) / (kGlyphAdvance * s)));
+  const std::string dist = " " + fmt("%.0f m", glm::length(t.position - me.position));
+  std::string name = t.name + " (" + t.cls->name + ")";
+  if (name.size() + dist.size() > room) name = t.name;
+  if (name.size() + dist.size() > room) name = name.substr(0, room > dist.size() ? room - dist.size() : 0);
+  const TargetPanelRows rows = target_panel_rows(height);
+  text(h, x, rows.name_y, s, col, name + dist);
+  bar(h, x, rows.shield_y, 200 * k, rows.bar_h, t.cls->shield > 0 ? t.shield / t.cls->shield : 0.0, kHudBlue, "shield");
+  bar(h, x, rows.hull_y, 200 * k, rows.bar_h, t.hull / t.cls->hull, kHudRed, "hull");
 }
 
-void hud_own(const World& w, const Ship& me, const Projector& pr, int width, int height, double alpha, HudLayer& h) {
-  // Crosshair where the guns converge ahead of the nose; not while paused, where the pause
-  // menu stands in the middle of the screen.
-  const glm::dvec3 pos = lerp_pos(me.prev_position, me.position, alpha);
-  const glm::dquat q = glm::slerp(me.prev_orientation, me.orientation, alpha);
-  glm::dvec2 c(width * 0.5, height * 0.5);
-  pr.project(pos + forward_of(q) * me.cls->beam.range * 0.5, c);
-  if (!w.paused) {
-    line(h, c.x - 14, c.y, c.x - 5, c.y, kHudGreen);
-    line(h, c.x + 5, c.y, c.x + 14, c.y, kHudGreen);
-    line(h, c.x, c.y - 14, c.x, c.y - 5, kHudGreen);
-    line(h, c.x, c.y + 5, c.x, c.y + 14, kHudGreen);
-  }
-  const double x = 24, y = height - 110;
-  bar(h, x, y, 220, 12, me.cls->shield > 0 ? me.shield / me.cls->shield : 0.0, kHudBlue, "SHIELD");
-  bar(h, x, y + 34, 220, 12, me.hull / me.cls->hull, me.hull < 0.3 * me.cls->hull ? kHudRed : kHudGreen, "HULL");
-  bar(h, x, y + 68, 220, 12, me.cls->energy > 0 ? me.energy / me.cls->energy : 0.0, kHudYellow, "ENERGY");
-  hud_throttle_and_speed(me, x + 220 + 14 * height_scale(height), y, y + 68 + 12, height, h);
-  const char* weapon = me.secondary == SecondaryWeapon::Plasma ? "PLASMA" : "MISSILES";
-  text(h, width - 260, height - 60, 1.2, kHudWhite, std::string("beam + ") + weapon);
-  text(h, width - 260, height - 36, 1.2, kHudWhite, "kills " + std::to_string(me.kills));
+// The objective at the top left, wrapped to leave room for the target panel while flying;
+// returns the top of the kill feed under it.
+double hud_objective(const std::string& objective, bool flying, int width, int height, HudLayer& h) {
+  const double k = height_scale(height), s = 1.2, x = kLeftMargin, y = 16;
+  const double room = width - (flying ? target_panel_width(height) : 0.0) - kSideMargin * k - x;
+  const std::vector<std::string> lines =
+      wrap_text(objective, size_t(std::max(8.0, room / (kGlyphAdvance * s))), kObjectiveLines);
+  for (size_t i = 0; i < lines.size(); ++i) text(h, x, y + 14 * s * double(i), s, kHudWhite, lines[i]);
+  return std::max(44 * k, y + 14 * s * double(std::max<size_t>(lines.size(), 1)) + 4);
+}
+
+// The own ship's shield, hull and energy bars with the throttle at the bottom left.
+// Rows keep room for each bar's label (16 above it, at text scale 1) in small windows.
+void hud_own(const Ship& me, int height, HudLayer& h) {
+  const double k = height_scale(height), x = kLeftMargin, bar_w = 220 * k, bar_h = 12 * k;
+  const double row = own_bar_row(height), y = own_bars_top(height);
+  bar(h, x, y, bar_w, bar_h, me.cls->shield > 0 ? me.shield / me.cls->shield : 0.0, kHudBlue, "SHIELD");
+  bar(h, x, y + row, bar_w, bar_h, me.hull / me.cls->hull, me.hull < 0.3 * me.cls->hull ? kHudRed : kHudGreen, "HULL");
+  bar(h, x, y + 2 * row, bar_w, bar_h, me.cls->energy > 0 ? me.energy / me.cls->energy : 0.0, kHudYellow, "ENERGY");
+  hud_throttle_and_speed(me, x + bar_w + 14 * k, y, y + 2 * row + bar_h, height, h);
+}
+
+// The selected weapons and the kills at the bottom right.
+void hud_weapon(const Ship& me, int width, int height, HudLayer& h) {
+  const double k = height_scale(height), s = text_scale(1.2, height), row = weapon_row(height);
+  const std::string weapon = std::string("beam + ") + (me.secondary == SecondaryWeapon::Plasma ? "PLASMA" : "MISSILES");
+  const std::string kills = "kills " + std::to_string(me.kills);
+  const double wide = double(std::max(weapon.size(), kills.size())) * kGlyphAdvance * s;
+  const double x = std::min(width - 260 * k, width - kSideMargin * k - wide), y = height - 36 * k;
+  text(h, x, y - row, s, kHudWhite, weapon);
+  text(h, x, y, s, kHudWhite, kills);
 }
 
 // Labels centred on (the top centre at) their world point.
@@ -242,40 +241,101 @@ void labels(const World& w, const Projector& pr, int width, int height, HudLayer
   }
 }
 
+// Where each panel's drawing starts and ends in the layer, for its box.
+struct PanelMark {
+  const char* name;
+  size_t quads[2], lines[2], texts[2];
+};
+
+class PanelMarks {
+ public:
+  PanelMarks(HudLayer& h, bool on) : h_(h), on_(on) {}
+  template <class Draw>
+  void panel(const char* name, Draw&& draw) {
+    PanelMark m{name, {h_.quads.size(), 0}, {h_.lines.size(), 0}, {h_.texts.size(), 0}};
+    draw();
+    m.quads[1] = h_.quads.size(), m.lines[1] = h_.lines.size(), m.texts[1] = h_.texts.size();
+    if (on_) marks_.push_back(m);
+  }
+  // The boxes of the marked panels that drew anything, from the finished (scaled) layer.
+  void boxes(std::vector<HudPanelBox>& out) const {
+    out.clear();
+    for (const PanelMark& m : marks_) {
+      HudBox b{1e30, 1e30, -1e30, -1e30};
+      auto add = [&b](double x0, double y0, double x1, double y1) {
+        b = {std::min(b.x0, x0), std::min(b.y0, y0), std::max(b.x1, x1), std::max(b.y1, y1)};
+      };
+      for (size_t i = m.quads[0]; i < m.quads[1]; ++i) {
+        const HudQuad& q = h_.quads[i];
+        add(q.x, q.y, q.x + q.w, q.y + q.h);
+      }
+      for (size_t i = m.lines[0]; i < m.lines[1]; ++i) {
+        const HudLine& l = h_.lines[i];
+        const double r = l.width * 0.5;
+        add(std::min(l.x0, l.x1) - r, std::min(l.y0, l.y1) - r, std::max(l.x0, l.x1) + r, std::max(l.y0, l.y1) + r);
+      }
+      for (size_t i = m.texts[0]; i < m.texts[1]; ++i) {
+        const HudBox t = text_box(h_.texts[i]);
+        add(t.x0, t.y0, t.x1, t.y1);
+      }
+      if (b.x1 >= b.x0) out.push_back({m.name, b});
+    }
+  }
+
+ private:
+  HudLayer& h_;
+  bool on_;
+  std::vector<PanelMark> marks_;
+};
+
 }  // namespace
 
+std::string outcome_text(const World& w) {
+  return w.outcome == Outcome::Victory  ? "VICTORY"
+         : w.outcome == Outcome::Defeat ? "DEFEAT"
+                                        : "TEAM " + w.team_name(w.winner) + " WINS";
+}
+
 void layout_hud(const World& w, const CameraView& cam, const HudState& state, double alpha, int width, int height,
-                HudLayer& h) {
+                HudLayer& h, std::vector<HudPanelBox>* panels) {
   alpha = std::clamp(alpha, 0.0, 1.0);
   h = HudLayer{};
+  PanelMarks marks(h, panels != nullptr);
   // Laid out on a canvas kHudCanvasHeight units high, then scaled to the window.
   const double scale = hud_canvas_scale(std::max(height, 1));
   width = std::max(1, int(std::lround(std::max(width, 1) / scale)));
   height = std::max(1, int(std::lround(std::max(height, 1) / scale)));
+  double feed_y = 44 * height_scale(height);  // the kill feed's top, under the objective
   if (state.show_fps) {
     text(h, width - 120, 12, 1.0, kHudWhite, fmt("%.0f fps", state.fps));
     if (!state.frame_stats.empty()) text(h, width / 2 - 300, 4, 0.8, kHudWhite, state.frame_stats);
   }
   if (state.show_hud) {
     const Projector pr = Projector::of(cam, width, height);
-    text(h, 24, 16, 1.2, kHudWhite, w.level.objective);
-    labels(w, pr, width, height, h);
     const ShipId focus = w.focus_ship();
     const bool flying = focus && w.ship(focus).alive && w.camera_mode != CameraMode::Fixed;
-    layout_kill_feed(w, flying ? &w.ship(focus) : nullptr, state.rules, 24, 44, h);
+    marks.panel("objective", [&] { feed_y = hud_objective(w.level.objective, flying, width, height, h); });
+    labels(w, pr, width, height, h);
+    marks.panel("kill feed",
+                [&] { layout_kill_feed(w, flying ? &w.ship(focus) : nullptr, state.rules, kLeftMargin, feed_y, h); });
     if (flying) {
       const Ship& me = w.ship(focus);
       if (!w.paused) layout_combat_cues(w, me, pr, state.rules, alpha, width, height, h);
-      hud_own(w, me, pr, width, height, alpha, h);
-      hud_target(w, me, pr, width, height, alpha, h);
-      layout_radar(w, me, state.rules, width, height, h);
+      const HudRect arrows = arrow_area(feed_y, state.rules.kill_feed_lines, width, height);
+      layout_aim_cues(w, me, pr, alpha, width, height, arrows, h);
+      marks.panel("own bars", [&] { hud_own(me, height, h); });
+      marks.panel("weapon", [&] { hud_weapon(me, width, height, h); });
+      marks.panel("target panel", [&] { hud_target_panel(w, me, width, height, h); });
+      marks.panel("radar", [&] { layout_radar(w, me, state.rules, width, height, h); });
     }
   }
   hud_reticle(state.reticle, width, height, h);
   if (state.show_outcome) hud_outcome(w, width, height, h);
-  hud_pause_menu(w, state, width, height, h);
-  hud_messages(state, width, height, h);
+  marks.panel("notice", [&] { hud_notice(state, width, height, h); });
+  marks.panel("error banner",
+              [&] { hud_error_banner(state, feed_y, state.rules.kill_feed_lines, width, height, h); });
   scale_hud(h, scale);
+  if (panels) marks.boxes(*panels);
 }
 
 HudBox text_box(const HudText& t) {

@@ -2,21 +2,23 @@
 //
 // layout_hud() fills a HudLayer (quads, lines and texts, origin top-left) from the World and
 // the frame's camera: the objective, the kill feed and gallery labels; for the ship the camera
-// follows, the crosshair, own shield / hull / energy bars, weapon and kills, the target's
-// brackets with the beam range cue or an off-screen arrow (kept off the radar), the lead
-// indicator, the target's bars, the radar (hud_radar.h) and the combat cues (hud_combat.h:
-// hit markers, damage direction, missile warning); the set throttle and the speed; victory or
-// defeat (kept above the pause menu); the FPS counter, the pause menu, the mouse-joystick
-// reticle, a notice line and the reload-error banner (wrapped to the screen).
-// build_render_view() calls it last, with the frame's camera.
+// follows, the aim cues (hud_aim.h: the crosshair's beam ring, the target's brackets, missile
+// cue or plasma lead, the off-screen arrow between the panels), own shield / hull / energy bars,
+// weapon and kills, the target's panel, the radar (hud_radar.h) and the combat cues
+// (hud_combat.h: hit markers, damage direction, missile warning); the set throttle and the
+// speed; victory or defeat; the FPS counter, the mouse-joystick reticle, a notice line above
+// the radar and the reload-error banner under the top panels (both wrapped to the screen). The
+// pause screen is a menu page (menu_layout.h) over it. build_render_view() calls it last, with
+// the frame's camera.
 //
 // Every size is written for a window 720 pixels high and the finished layer is scaled to the
-// window's height (hud_draw.h), so the HUD looks the same at 1280x720 and at 2560x1440;
-// windows less than 720 pixels high keep the 720p sizes, where the bitmap font stays sharp.
+// window's height (hud_draw.h), so the HUD looks the same at 1280x720 and at 2560x1440. In
+// windows less than 720 pixels high the panels shrink with the height (to half at 360) while
+// text keeps the bitmap font's own size, where it stays sharp; the panels' rows and widths make
+// room for it, so no panel overlaps another at any size from 640x360 up.
 //
 // HudState is what the app knows and the World does not: whether the HUD and the FPS counter
-// are on, the measured frame rate, the pause menu's items and selection, the reticle, and the
-// notice and error texts.
+// are on, the measured frame rate, the reticle, and the notice and error texts.
 #pragma once
 #include <string>
 #include <vector>
@@ -40,18 +42,14 @@ struct HudState {
   bool show_fps = false;    // FPS counter (F3)
   double fps = 0;           // shown when show_fps
   std::string frame_stats;  // shown under it when show_fps: the renderer's particle figures
-  int pause_selection = 0;  // highlighted pause-menu item while the game is paused
-  std::vector<std::string> pause_items{"Resume", "Restart", "Difficulty: normal", "Quit"};
   HudReticle reticle;
-  std::string notice;        // one line at the top centre (e.g. "Recording stopped ...")
+  std::string notice;        // one line above the radar (e.g. "Recording stopped ...")
   std::string error_banner;  // a failed hot reload, wrapped within the screen below the objective
   HudRules rules;           // tunable numbers (assets/settings/hud.json), also the own-effect view rules
 };
 
-// Replaces `out` with the HUD for `camera` (interpolated like the meshes, by `alpha` in [0, 1])
-// in a width × height frame.
-void layout_hud(const World& world, const CameraView& camera, const HudState& state, double alpha, int width,
-                int height, HudLayer& out);
+// A decided fight's verdict: "VICTORY" or "DEFEAT" for the player, else "TEAM NAME WINS".
+std::string outcome_text(const World& w);
 
 // The box a text of the layer covers, in the layer's pixels: every line of the bitmap font
 // (gfx/hud_font, ProggyClean) is 13 pixels high and each character 7 wide at scale 1. Tests
@@ -60,6 +58,19 @@ struct HudBox {
   double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
 };
 HudBox text_box(const HudText& t);
+
+// A panel of the HUD (own bars, radar, target panel, weapon text, objective, kill feed, notice,
+// error banner) and the box of everything it drew, in window pixels: the panels must neither
+// overlap nor leave the screen at any window size (tests/unit/game/test_hud_layout.cpp).
+struct HudPanelBox {
+  std::string name;
+  HudBox box;
+};
+
+// Replaces `out` with the HUD for `camera` (interpolated like the meshes, by `alpha` in [0, 1])
+// in a width × height frame; `panels`, when given, receives the box of each panel drawn.
+void layout_hud(const World& world, const CameraView& camera, const HudState& state, double alpha, int width,
+                int height, HudLayer& out, std::vector<HudPanelBox>* panels = nullptr);
 
 // `text` broken at spaces (and inside words longer than a line; its own line breaks count as
 // spaces) into lines of at most `max_chars` characters; at most `max_lines`, the last ending

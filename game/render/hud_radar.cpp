@@ -80,14 +80,16 @@ void layout_radar(const World& w, const Ship& me, const HudRules& rules, double 
   quad(h, r.x + 2, r.y + 2, kGlyphAdvance * 0.9 * double(label.size()) + 5.0, 15.0, kHudBack);
   text(h, r.x + 4, r.y + 4, 0.9, kHudGreen, label);
   const glm::dquat inv = glm::conjugate(me.orientation);
+  // Blips grow with the radar, never below 4 canvas units: a lone pixel reads as a star.
+  const double dot = std::max(4.0, r.w * 0.035), target_dot = std::max(6.0, r.w * 0.06);
   for (const Ship& s : w.ships) {
     if (!s.alive || s.id == me.id) continue;
-    contact(h, cx, cy, half, inv * (s.position - me.position), range, s.id == me.target ? 6.0 : 4.0,
+    contact(h, cx, cy, half, inv * (s.position - me.position), range, s.id == me.target ? target_dot : dot,
             w.hostile(me, s) ? kHudRed : kHudBlue);
   }
   for (const Projectile& p : w.projectiles)
     if (p.target == me.id && p.kind == SecondaryWeapon::Missile)
-      contact(h, cx, cy, half, inv * (p.position - me.position), range, 3.0, kHudWhite);
+      contact(h, cx, cy, half, inv * (p.position - me.position), range, dot * 0.75, kHudWhite);
 }
 
 }  // namespace arc

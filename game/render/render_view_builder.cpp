@@ -73,7 +73,8 @@ void build_render_view(const World& w, std::span<const ModelId> models, double a
     m.model = model_of(models, s.model);
     m.position = lerp_pos(s.prev_position, s.position, alpha);
     m.orientation = glm::normalize(glm::slerp(s.prev_orientation, s.orientation, alpha));
-    m.emissive_boost = 1.0f + float(std::max(0.0, axis_value(s.controls.throttle))) * (s.afterburner_on ? 2.0f : 1.0f);
+    // The afterburner is full boost whatever the set throttle, so it glows the brightest.
+    m.emissive_boost = s.afterburner_on ? 3.0f : 1.0f + float(std::max(0.0, axis_value(s.controls.throttle)));
     m.team_color = ship_team_color(w, s);
     for (const ExplosionEvent& e : w.explosions) {
       double age = double(w.tick - e.tick) * w.dt;

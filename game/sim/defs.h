@@ -3,7 +3,9 @@
 // Loaders only fill defs and validate every value through core/json.h, so a wrong file fails
 // with `path:line:col: what is wrong and what is allowed` before anything is simulated.
 // ShipClassDef comes from assets/ships/*.json, LevelDef from levels/*.json, the AI pilots'
-// difficulties from assets/settings/ai.json (see levels/README.md for every key). Paths inside files are relative to GameOptions::root_dir.
+// difficulties from assets/settings/ai.json (see levels/README.md for every key). Paths inside
+// files are relative to GameOptions::root_dir. One loader file per format: ship_class_defs.cpp,
+// level_defs.cpp, mission_defs.cpp (a level's "mission" block), ai_defs.cpp.
 //
 //   LevelDef level = load_level_def("levels/duel.json", ".");   // also loads the ship classes
 #pragma once

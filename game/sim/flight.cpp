@@ -25,7 +25,9 @@ void integrate_flight(Ship& s, double h) {
   const glm::dvec3 fwd = forward_of(s.orientation);
   const glm::dvec3 right = s.orientation * glm::dvec3(1, 0, 0);
   const glm::dvec3 up = s.orientation * glm::dvec3(0, 1, 0);
-  const double throttle = axis_value(in.throttle), sx = axis_value(in.strafe_x), sy = axis_value(in.strafe_y);
+  // The afterburner is full boost forward from any set throttle; letting go returns to the set one.
+  const double throttle = s.afterburner_on ? 1.0 : axis_value(in.throttle);
+  const double sx = axis_value(in.strafe_x), sy = axis_value(in.strafe_y);
   const bool assist = !(in.buttons & kFlightAssist);
   if (assist) {
     // Flight assist: thrust toward the commanded velocity, never harder than the engines allow.

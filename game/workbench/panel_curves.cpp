@@ -85,7 +85,7 @@ void CurveEditors::click_keys(const std::string& id, std::vector<Key>& keys, int
   }
 }
 
-// Long: drawing, hit-testing and the three gestures of one editor read best in one place.
+// Drawing, hit-testing and the three gestures of one editor, kept together.
 CurveEdit CurveEditors::value_curve(const std::string& id, std::vector<GraphKey>& keys, double lo, double hi) {
   CurveEdit edit;
   const bool holding = drag_id_ == id && drag_key_ >= 0;
@@ -151,7 +151,7 @@ CurveEdit CurveEditors::value_curve(const std::string& id, std::vector<GraphKey>
   return edit;
 }
 
-// Long: as value_curve, for the strip and its colour picker.
+// As value_curve, for the colour strip and its colour picker.
 CurveEdit CurveEditors::colour_curve(const std::string& id, std::vector<ColourKey>& keys, double hi) {
   CurveEdit edit;
   const ImVec2 size(ImGui::GetContentRegionAvail().x, 30.0f);

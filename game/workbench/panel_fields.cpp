@@ -248,7 +248,7 @@ bool EffectPanel::draw_value(EffectDocument& doc, const std::string& pointer, co
   return false;
 }
 
-// Long: the list with its per-cluster buttons and the add button.
+// The cluster list with its per-cluster buttons and the add button.
 void EffectPanel::draw_clusters(EffectDocument& doc) {
   const json clusters = at_or(doc.json(), "/clusters", json::array());
   ImGui::Separator();

@@ -25,6 +25,7 @@
 #include "gfx/ui_texture.h"
 #include "particles/sprites.h"
 #include "platform/platform.h"
+#include "platform/stop_request.h"
 #include "ui/imgui_layer.h"
 
 namespace arc {
@@ -433,12 +434,12 @@ int run_workbench(const WorkbenchOptions& options) {
   WorkbenchSession session(options);
   session.setup();
   double last = session.time();
-  while (session.open()) {
+  while (session.open() && !stop_requested()) {  // Ctrl+C or a kill closes as the close button does
     const double now = session.time();
     session.frame(now - last);
     last = now;
   }
-  return kExitOk;
+  return stop_requested() ? report_stop("in the workbench") : kExitOk;  // ~WorkbenchSession waits for the screenshots
 }
 
 }  // namespace arc

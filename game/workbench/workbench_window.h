@@ -10,20 +10,22 @@
 #pragma once
 #include <string>
 
+#include "core/data_root.h"
 #include "core/settings.h"
 
 namespace arc {
 
 struct WorkbenchOptions {
-  std::string root_dir = ARCFIRE_SOURCE_DIR;  // assets/, shaders/
-  std::string effect_path;                    // "" = the first effect of assets/effects
-  Settings settings = Settings::defaults();   // render.* and particles.budget
+  std::string root_dir = data_root();        // assets/, shaders/ (core/data_root.h)
+  std::string effect_path;                   // "" = the first effect of assets/effects
+  Settings settings = Settings::defaults();  // render.* and particles.budget
   int width = 1280, height = 720;
   bool vsync = true;
 };
 
-// Runs until the window closes or Esc; returns the exit code (0). Bad input (the effect file,
-// assets) throws InputError before the window opens; no display throws PlatformError.
+// Runs until the window closes or Esc; returns the exit code (0; 130 or 143 when SIGINT or
+// SIGTERM closes it as the close button does, without saving edits). Bad input (the effect
+// file, assets) throws InputError before the window opens; no display throws PlatformError.
 int run_workbench(const WorkbenchOptions& options);
 
 }  // namespace arc

@@ -10,15 +10,16 @@
 #include "game/app/audio_session.h"
 #include "game/sim/game.h"
 #include "game/sim/world.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
 
 ARCFIRE_SCENE(audio_arena) {
   GameOptions options;
-  options.root_dir = ARCFIRE_SOURCE_DIR;
-  Game game = Game::load_level(std::string(ARCFIRE_SOURCE_DIR) + "/levels/arena.json", options);
-  AudioSession audio(std::string(ARCFIRE_SOURCE_DIR) + "/assets/sounds/sounds.json", Settings::defaults(), true);
+  options.root_dir = arc::data_root();
+  Game game = Game::load_level(arc::data_root() + "/levels/arena.json", options);
+  AudioSession audio(arc::data_root() + "/assets/sounds/sounds.json", Settings::defaults(), true);
   if (!audio.engine().active()) return;
   std::vector<float> block(800 * 2);
   std::vector<double> ms;

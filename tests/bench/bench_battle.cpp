@@ -18,6 +18,7 @@
 #include "game/render/render_view_builder.h"
 #include "game/sim/game.h"
 #include "gfx/renderer.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
@@ -36,7 +37,7 @@ double percentile(std::vector<double> v, double p) {
 ARCFIRE_SCENE(battle_frames) {
   const std::unique_ptr<HeadlessContext> ctx = bench::context_or_skip();
   if (!ctx) return;
-  const std::string root = ARCFIRE_SOURCE_DIR;
+  const std::string root = arc::data_root();
   GameOptions options;
   options.root_dir = root;
   Game game = Game::load_level(root + "/levels/arena.json", options);

@@ -7,8 +7,8 @@
 // by the occlusion query. Each camera has a twin renderer, made alike and fed the same frames (so
 // its budget smoothing and resolution choice stay the main one's), which draws every timed frame
 // again, before the main one on odd samples and after it on even ones: a frame's time is the
-// faster of the two. On a shared machine a single draw now and then waits for the CPU (the same
-// build's single-draw p99 moved between 24 and 34 ms from run to run); the faster of two draws
+// faster of the two. On a shared machine a single draw now and then waits for the CPU (a single
+// draw's p99 varies widely from run to run of the same build); the faster of two draws
 // rarely does, and the single draws are still reported (_single_). Every sixth sample each
 // camera also renders the same frame without the overdraw budget (its image error against the
 // budgeted frame, PSNR) and with soft edges off (what soft edges cost), interleaved with the
@@ -60,6 +60,7 @@
 #include "gfx/renderer.h"
 #include "platform/platform.h"
 #include "test_pilot.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
@@ -297,7 +298,7 @@ void report(CameraRun& c) {
   std::printf("  %-7s slowest frame at tick %llu (%.2f ms); worst budgeted frame at tick %llu\n", c.name,
               static_cast<unsigned long long>(c.slowest_tick), c.slowest_ms, static_cast<unsigned long long>(c.worst_tick));
   // The worst hitch a player meets after the first frames: with the shader cache off (bench_main),
-  // a state the renderer's warm-up missed shows here as a compile (30–50 ms on llvmpipe).
+  // a state the renderer's warm-up missed shows here as a compile (tens of ms on llvmpipe).
   bench::report_metric("combat_frame_max_ms_" + n, c.slowest_ms);
   if (const char* dir = std::getenv("ARCFIRE_GFX_DUMP")) {
     if (c.slowest.width > 0) save_image(std::string(dir) + "/combat_slowest_" + n + ".png", c.slowest);
@@ -311,7 +312,7 @@ void report(CameraRun& c) {
 }  // namespace
 
 ARCFIRE_SCENE(combat_view) {
-  const std::string root = ARCFIRE_SOURCE_DIR;
+  const std::string root = arc::data_root();
   const std::string path = root + kScript;
   if (std::getenv("ARCFIRE_BENCH_RECORD")) record_dogfight(root, path);
   const std::unique_ptr<HeadlessContext> ctx = bench::context_or_skip();

@@ -1,6 +1,6 @@
-// The look's costs and effect (issue 14), in one run at 1280×720 through EGL:
+// The look's costs and effect, in one run at 1280×720 through EGL:
 //  - hdr_bloom_frame_ratio(_battle): the gallery (tick 240) and the arena battle (tick 600)
-//    with the HDR scene, tone map and bloom (low) against the 8-bit scene as before HDR, both
+//    with the HDR scene, tone map and bloom (low) against the plain 8-bit scene, both
 //    without anti-aliasing; hdr_format_frame_ratio(_battle): the HDR frame with an
 //    R11F_G11F_B10F scene against RGBA16F (the format the renderer uses, being the cheaper);
 //  - antialias_frame_ratio_<mode>(_battle): fxaa, msaa2 and msaa4 against off, HDR and bloom on;
@@ -29,6 +29,7 @@
 #include "game/sim/input.h"
 #include "gfx/renderer.h"
 #include "platform/platform.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
@@ -80,7 +81,7 @@ RenderSettings look(bool hdr, float bloom, RenderSettings::Antialias aa) {
 // The renderer settings of a quality preset ("" for Settings::defaults()).
 RenderSettings preset_look(const std::string& preset) {
   Settings s = Settings::defaults();
-  if (!preset.empty()) s.apply_preset_file(ARCFIRE_SOURCE_DIR "/assets/settings/quality.json", preset);
+  if (!preset.empty()) s.apply_preset_file(arc::data_root() + "/assets/settings/quality.json", preset);
   Renderer probe(RendererDesc{.offscreen = true});
   probe.apply_settings(s);
   return probe.render_settings();
@@ -132,7 +133,7 @@ double clipped_share(const Image& img) {
 // The gallery's first second, every fourth tick; the frame with the most clipped pixels with
 // HDR off is the explosion's brightest, and both figures are taken there.
 void measure_clipping(Renderer& r) {
-  const std::string root = ARCFIRE_SOURCE_DIR;
+  const std::string root = arc::data_root();
   GameOptions options;
   options.root_dir = root;
   Game game = Game::load_level(root + "/levels/gallery.json", options);

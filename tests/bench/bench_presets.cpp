@@ -25,6 +25,7 @@
 #include "game/sim/input.h"
 #include "gfx/renderer.h"
 #include "platform/platform.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
@@ -35,13 +36,13 @@ constexpr size_t kReference = 3;
 
 Settings preset(const std::string& name) {
   Settings s = Settings::defaults();
-  s.apply_preset_file(std::string(ARCFIRE_SOURCE_DIR) + "/assets/settings/quality.json", name);
+  s.apply_preset_file(arc::data_root() + "/assets/settings/quality.json", name);
   return s;
 }
 
 GameOptions game_options(const Settings& s) {
   GameOptions o;
-  o.root_dir = ARCFIRE_SOURCE_DIR;
+  o.root_dir = arc::data_root();
   apply_simulation_settings(s, o);
   return o;
 }
@@ -67,7 +68,7 @@ void image_error(const Image& want, const Image& got, double* mean, double* off)
 }  // namespace
 
 ARCFIRE_SCENE(quality_presets) {
-  const std::string root = ARCFIRE_SOURCE_DIR;
+  const std::string root = arc::data_root();
   std::vector<Settings> settings;
   for (const char* name : kPresets) settings.push_back(preset(name));
 

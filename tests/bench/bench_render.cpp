@@ -43,6 +43,7 @@
 #include "gfx/renderer.h"
 #include "platform/platform.h"
 #include "scene_models.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
@@ -221,11 +222,10 @@ Figures measure(Renderer& r, const RenderView& view, const BenchEnv& env) {
   // Soft-edge ratios from frames side by side: for each method, every round, soft edges off,
   // the method, the method again and off again (the order mirrored every other round), the
   // ratio of the method's two frames to off's two. In the interleaved rounds above a ratio's two
-  // frames lie several configurations apart, and two identical configurations added there came
-  // out 0.97–1.08 apart by their places in the list (the gallery, its wall and battle, three
-  // runs), as much as the 10 % the ratio is meant to tell. Method 0 is the control: off against
-  // itself, reported as soft_edge_cost_ratio_control. Twice as many rounds as the list above:
-  // over 32 the control came out anywhere in 0.99–1.05 from run to run.
+  // frames lie several configurations apart, and a configuration's place in that list alone
+  // moves a ratio by as much as the 10 % it is meant to tell. Method 0 is the control: off
+  // against itself, reported as soft_edge_cost_ratio_control (docs/performance.md gives its
+  // spread). Twice as many rounds as the list above, which narrows the control's spread.
   std::vector<double> side_by_side[9];
   const int side_rounds = 2 * rounds;
   auto frame_ms = [&](size_t k) {
@@ -287,8 +287,7 @@ Figures measure(Renderer& r, const RenderView& view, const BenchEnv& env) {
   // The same pair timed by GL_TIME_ELAPSED in rounds of their own (reading a query back
   // stalls mid-frame, which the rounds above must not pay): on a GPU the pass's own time,
   // without the CPU's culling, sorting and upload. Not on Mesa's software rasterisers, whose
-  // timer does not cover rasterisation (llvmpipe gave 0.13 ms for the 40 full-screen quads
-  // that take 54 ms by the clock).
+  // timer does not cover rasterisation (it reports a small fraction of the clock's time).
   const std::string gl = r.gl_version();
   const bool software = bench::software_rasteriser(gl);
   r.time_gpu_passes(!software);
@@ -359,7 +358,7 @@ ARCFIRE_SCENE(render_particle_gallery) {
   const BenchEnv env = read_env();
   const std::unique_ptr<HeadlessContext> ctx = bench::context_or_skip();
   if (!ctx) return;
-  const std::string root = ARCFIRE_SOURCE_DIR;
+  const std::string root = arc::data_root();
   RendererDesc desc;
   desc.offscreen = true;
   desc.shader_dir = root + "/shaders";

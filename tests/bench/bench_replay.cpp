@@ -15,10 +15,11 @@
 #include "core/json.h"
 #include "game/app/replay_player.h"
 #include "replay/script.h"
+#include "core/data_root.h"
 
 namespace {
 
-const std::string kDuel = std::string(ARCFIRE_SOURCE_DIR) + "/tests/replays/ai_duel_normal.replay";
+const std::string kDuel = arc::build_source_tree() + "/tests/replays/ai_duel_normal.replay";
 
 double speed(const arc::ReplayRunOptions& o, arc::ReplayOutcome* outcome) {
   *outcome = arc::play_replay(o);
@@ -29,7 +30,7 @@ arc::ReplayRunOptions options(const std::string& script) {
   arc::ReplayRunOptions o;
   o.script_path = script;
   o.quiet = true;
-  o.game.root_dir = ARCFIRE_SOURCE_DIR;
+  o.game.root_dir = arc::data_root();
   o.out_dir = (std::filesystem::temp_directory_path() / "arcfire-bench-replay").string();
   return o;
 }

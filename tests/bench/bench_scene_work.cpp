@@ -1,4 +1,4 @@
-// scene_work: "model only what a scene requires", frame by frame (issue 19 item 5). The arena
+// scene_work: "model only what a scene requires", frame by frame. The arena
 // battle from tick 420 to 600, every third tick drawn at 1280×720 with the default settings
 // from the chase camera; each frame prints the work done beside the work skipped:
 //   clusters  animated / culled (outside the view or beyond particles.cull_distance: their
@@ -27,6 +27,7 @@
 #include "game/sim/world.h"
 #include "gfx/renderer.h"
 #include "platform/platform.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
@@ -63,7 +64,7 @@ double share(long long part, long long whole) { return whole > 0 ? double(part) 
 ARCFIRE_SCENE(scene_work) {
   const std::unique_ptr<HeadlessContext> ctx = bench::context_or_skip();
   if (!ctx) return;
-  const std::string root = ARCFIRE_SOURCE_DIR;
+  const std::string root = arc::data_root();
   GameOptions options;
   options.root_dir = root;
   Game game = Game::load_level(root + "/levels/arena.json", options);

@@ -7,11 +7,12 @@
 #include "game/render/render_view_builder.h"
 #include "game/sim/game.h"
 #include "game/sim/input.h"
+#include "core/data_root.h"
 
 namespace arc::bench {
 
 RenderView level_view(Renderer& r, const std::string& level, int ticks, int width, int height) {
-  const std::string root = ARCFIRE_SOURCE_DIR;
+  const std::string root = arc::data_root();
   GameOptions options;
   options.root_dir = root;
   Game game = Game::load_level(root + "/" + level, options);

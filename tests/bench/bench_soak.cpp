@@ -34,6 +34,7 @@
 #include "game/sim/game.h"
 #include "game/sim/world.h"
 #include "gfx/renderer.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
@@ -82,7 +83,7 @@ bool finite_view(const RenderView& view) {
 }
 
 struct SoakRun {
-  std::string root = ARCFIRE_SOURCE_DIR;
+  std::string root = arc::data_root();
   uint64_t seed = 1;
   int restarts = 0;
   int64_t decided_at = -1;  // game tick (of the soak) a battle was decided

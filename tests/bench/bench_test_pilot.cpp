@@ -1,6 +1,6 @@
 // The test pilot's duel (tests/unit/game/test_pilot.h): a person who sees only the HUD, reacts
 // after 200 ms and aims with a wandering hand, against the AI of levels/duel.json over 20 seeds
-// per difficulty, and a pilot who does nothing. Targets (issue 12): wins >= 90 % on easy,
+// per difficulty, and a pilot who does nothing. Targets: wins >= 90 % on easy,
 // 50–80 % on normal, 15–45 % on hard, median time to win under 90 s on normal, and the idle
 // pilot loses every fight. Simulation only (no GL); about a minute on two shared cores.
 //   test_pilot_win_rate_easy / _normal / _hard   share of fights won
@@ -10,6 +10,7 @@
 
 #include "bench_registry.h"
 #include "test_pilot.h"
+#include "core/data_root.h"
 
 ARCFIRE_SCENE(test_pilot) {
   const char* names[] = {"easy", "normal", "hard"};
@@ -17,8 +18,8 @@ ARCFIRE_SCENE(test_pilot) {
   int idle_fights = 0, idle_losses = 0;
   for (int d = 0; d < 3; ++d) {
     const double start = arc::bench::now_seconds();
-    const arc::DuelRates r = arc::duel_rates(ARCFIRE_SOURCE_DIR, d, kSeeds, arc::PilotKind::Person);
-    const arc::DuelRates idle = arc::duel_rates(ARCFIRE_SOURCE_DIR, d, kSeeds, arc::PilotKind::Idle);
+    const arc::DuelRates r = arc::duel_rates(arc::data_root(), d, kSeeds, arc::PilotKind::Person);
+    const arc::DuelRates idle = arc::duel_rates(arc::data_root(), d, kSeeds, arc::PilotKind::Idle);
     idle_fights += idle.fights;
     idle_losses += idle.losses;
     std::printf("  %-6s person won %2d, lost %2d, undecided %2d of %d (median win %.1f s); idle lost %d of %d  [%.1f s]\n",

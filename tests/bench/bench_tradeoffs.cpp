@@ -1,5 +1,5 @@
 // tradeoffs: every setting that trades speed for accuracy, measured against the reference
-// preset in one run (issue 19). Rows go to out/tradeoffs.csv (tools/plot_tradeoffs.py draws
+// preset in one run. Rows go to out/tradeoffs.csv (tools/plot_tradeoffs.py draws
 // them, with the Pareto front and the presets, into out/tradeoffs.png).
 //
 // Rendering: the reference preset with ONE render key changed per row (soft-edge method,
@@ -55,12 +55,13 @@
 #include "gfx/renderer.h"
 #include "particles/world_state.h"
 #include "platform/platform.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
 
 constexpr int kWidth = 1280, kHeight = 720;
-const char* const kQuality = ARCFIRE_SOURCE_DIR "/assets/settings/quality.json";
+const std::string kQuality = arc::data_root() + "/assets/settings/quality.json";
 const char* const kPresets[] = {"low", "medium", "high", "reference"};
 
 Settings preset(const std::string& name) {
@@ -87,11 +88,11 @@ struct Row {
   double cost = 0;  // frame or tick ratio against the reference
 };
 
-// Whole configurations the presets were chosen from (applied to Settings::defaults(), as a
-// preset is): cheap and accurate combinations of the settings above. Two more were chosen and
-// are measured as the presets now: "accurate_s1.25_msaa2" (scale 1.25, msaa2, sky 512, bloom
-// high, full-resolution particles) became high, "s1_aa_off" (scale 1, no AA, bloom high,
-// full-resolution particles) medium; the old high and medium are kept here for comparison.
+// Whole configurations the presets are chosen from (applied to Settings::defaults(), as a
+// preset is): cheap and accurate combinations of the settings above. The high preset (scale
+// 1.25, msaa2, sky 512, bloom high, full-resolution particles) and medium (scale 1, no AA,
+// bloom high, full-resolution particles) are measured as presets; "old_high" and "old_medium"
+// are FXAA configurations kept as points of comparison.
 const std::pair<const char*, const char*> kCandidates[] = {
     {"accurate_s1.5_aa_off", "render.scale=1.5 render.antialias=off render.sky_resolution=512 render.bloom=high render.hdr=true"
                              " render.particle_resolution=full"},
@@ -203,7 +204,7 @@ double timed_frame(Renderer& r, const Row& row, const RenderView& view) {
 // One scene: every row's frame in interleaved rounds, then its image against the reference's.
 // Long: the renderers per target key, the warm-up, the rounds and the comparison belong together.
 void measure_scene(const Scene& sc, std::vector<Row>& rows, int rounds) {
-  const std::string root = ARCFIRE_SOURCE_DIR;
+  const std::string root = arc::data_root();
   GameOptions options;
   options.root_dir = root;
   Game game = Game::load_level(root + "/" + sc.level, options);
@@ -320,7 +321,7 @@ uint64_t admitted_since(const ParticleWorld& pw, std::map<uint64_t, uint32_t>& s
 
 // The arena's first 600 ticks under every row's simulation keys, stepped tick by tick in turn.
 void measure_simulation(std::vector<Row>& rows) {
-  const std::string root = ARCFIRE_SOURCE_DIR;
+  const std::string root = arc::data_root();
   std::vector<Game> games;
   for (const Row& row : rows) {
     GameOptions o;

@@ -9,7 +9,8 @@ rm -rf "$out"; mkdir -p "$out/alone" "$out/broken"
 cp "$arcfire" "$out/alone/arcfire"
 cp "$arcfire" "$out/broken/arcfire"
 echo "not a shared library" >"$out/broken/libarcfire_image_codec.so"
-run=(--headless --level levels/duel.json --ticks 30 --every 30 --size 160x90)
+# A copy away from the build has no arcfire-data-root beside it: the data is named (core/data_root.h).
+run=(--data . --headless --level levels/duel.json --ticks 30 --every 30 --size 160x90)
 
 "$out/alone/arcfire" "${run[@]}" --out "$out/alone/frames" >/dev/null 2>"$out/alone/stderr" ||
   { echo "alone: exit $?, expected 0:"; cat "$out/alone/stderr"; exit 1; }

@@ -5,6 +5,7 @@
 #include "core/snapshot_io.h"
 #include "fuzz_target.h"
 #include "game/sim/game.h"
+#include "core/data_root.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace arc::snapshot;
@@ -16,7 +17,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     for (int i = 0; i < 8; ++i) bytes[size - kFrameTrailer + size_t(i)] = uint8_t(sum >> (8 * i));
   }
   arc::GameOptions options;
-  options.root_dir = ARCFIRE_SOURCE_DIR;
-  arc::fuzz::expect_clean([&] { arc::Game::restore(bytes, std::string(ARCFIRE_SOURCE_DIR) + "/levels/duel.json", options); });
+  options.root_dir = arc::data_root();
+  arc::fuzz::expect_clean([&] { arc::Game::restore(bytes, arc::data_root() + "/levels/duel.json", options); });
   return 0;
 }

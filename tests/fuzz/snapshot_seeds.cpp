@@ -4,6 +4,7 @@
 #include <fstream>
 #include <string>
 #include "game/sim/game.h"
+#include "core/data_root.h"
 
 int main(int argc, char** argv) {
   if (argc != 2) {
@@ -11,8 +12,8 @@ int main(int argc, char** argv) {
     return 2;
   }
   arc::GameOptions options;
-  options.root_dir = ARCFIRE_SOURCE_DIR;
-  arc::Game game = arc::Game::load_level(std::string(ARCFIRE_SOURCE_DIR) + "/levels/duel.json", options);
+  options.root_dir = arc::data_root();
+  arc::Game game = arc::Game::load_level(arc::data_root() + "/levels/duel.json", options);
   arc::InputFrame fire{};
   fire.buttons = 1;
   for (int tick : {0, 30, 240}) {

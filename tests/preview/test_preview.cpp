@@ -9,11 +9,12 @@
 #include "core/json.h"
 #include "game/app/effect_preview.h"
 #include "gfx/image_compare.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
 
-const std::string kRoot = ARCFIRE_SOURCE_DIR;
+const std::string kRoot = arc::data_root();
 
 std::string out_dir(const std::string& name) {
   const char* base = std::getenv("ARCFIRE_PREVIEW_OUT");
@@ -27,7 +28,7 @@ nlohmann::json filmstrip_matches_golden(const std::string& name, PreviewOptions 
   std::filesystem::remove_all(o.out_dir);
   EXPECT_EQ(run_preview(o), 0);
   const Image actual = load_image(o.out_dir + "/filmstrip.png");
-  const std::string golden = kRoot + "/tests/preview/golden/" + name + ".png";
+  const std::string golden = arc::build_source_tree() + "/tests/preview/golden/" + name + ".png";
   const char* update = std::getenv("ARCFIRE_UPDATE_GOLDEN");
   if (update && std::string(update) == "1") save_image(golden, actual);
   const ImageDiff d = compare_images(load_image(golden), actual);

@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
-# tools/gpu/measure.sh OUT_DIR [SECONDS] — README's GPU rows on a machine with a GPU, with the
-# bench packed by tools/gpu/pack.sh: the gallery (soft_edge_cost_ratio, burn_blend_cost_ratio,
-# particle_fill_efficiency and their GL_TIME_ELAPSED twins), combat_view (combat p50 / p99 from
-# both cameras; the slowest frames saved as PNGs), particle_scale (particles within 4 ms at
-# 1920x1080) and particle_prep (the CPU's share per particle). Then the gallery and combat_view again, while SECONDS (default 420) allow, for
-# ranges over runs. Everything goes to OUT_DIR/bench.log as it is printed.
+# tools/gpu/measure.sh OUT_DIR [SECONDS] — docs/performance.md's GPU figures on a machine with a
+# GPU, with the bench packed by tools/gpu/pack.sh: the gallery (soft_edge_cost_ratio,
+# burn_blend_cost_ratio, particle_fill_efficiency and their GL_TIME_ELAPSED twins), combat_view
+# (combat p50 / p99 from both cameras; the slowest frames saved as PNGs), particle_scale
+# (particles within 4 ms at 1920x1080) and particle_prep (the CPU's share per particle). Then the
+# gallery and combat_view again, while SECONDS (default 420) allow, for ranges over runs.
+# Everything goes to OUT_DIR/bench.log as it is printed.
 set -uo pipefail
 if [ $# -lt 1 ] || [ $# -gt 2 ]; then
   echo "tools/gpu/measure.sh: usage: tools/gpu/measure.sh OUT_DIR [SECONDS]" >&2

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # tools/gpu/pack.sh [BUILD_DIR] — packs build/arcfire-bench into .gpu/ for a bare GPU machine
 # that has a driver but none of Debian's packages (the lent NVIDIA machines: no OpenImageIO,
-# no network). README's GPU rows are measured with it:
+# no network). docs/performance.md's GPU figures are measured with it:
 #
 #   tools/gpu/pack.sh                      # here, after a build
 #   tools/gpu/run.sh --scene particle_scale  # there, from the repository root, with .gpu/ carried

@@ -20,4 +20,6 @@ for d in /usr/local/nvidia/lib64 /usr/local/nvidia/lib; do
   [ -d "$d" ] && LD_LIBRARY_PATH="$LD_LIBRARY_PATH:$d"
 done
 cd "$root"
+# The packed bench has no build folder beside it: the data is this checkout's (core/data_root.h).
+export ARCFIRE_DATA="${ARCFIRE_DATA:-$root}"
 exec "$pack/bin/arcfire-bench" "$@"

@@ -9,11 +9,12 @@
 #include "game/sim/game.h"
 #include "game/sim/world.h"
 #include "test_helpers.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
 
-const std::string kSounds = std::string(ARCFIRE_SOURCE_DIR) + "/assets/sounds/sounds.json";
+const std::string kSounds = arc::data_root() + "/assets/sounds/sounds.json";
 
 Game shooter_and_drone() {
   const std::string ships = R"({ "name": "Shooter", "class": "viper", "team": "blue", "player": true },

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/json.h"
+#include "game/app/menu.h"
 #include "game/app/replay_player.h"
 #include "game/app/serialization_test.h"
 #include "game/app/session_recorder.h"
@@ -31,6 +32,29 @@ TEST(BannerExample, ReplayPlayer) {
   EXPECT_EQ(outcome.failures, 0);
   EXPECT_GT(outcome.checks, 0);
   EXPECT_EQ(outcome.ticks, replay::load_script(options.script_path).last_tick());
+}
+
+TEST(BannerExample, Menu) {
+  const UserFiles files;
+  const Bindings bindings = load_bindings("assets/settings/bindings.json");
+  PauseState paused;
+  MissionResult result;
+  result.victory = true;
+
+  Menu menu(load_mission_catalog("levels", "."), files, bindings, bindings, "assets/settings/quality.json");
+  menu.handle(UiInput::press(UiKey::Accept));  // Play: mission select
+  menu.handle(UiInput::press(UiKey::Accept));  // the first mission's briefing
+  std::vector<MenuRequest> go = menu.handle(UiInput::press(UiKey::Accept));  // Launch
+  menu.pause(paused);                          // the game paused: Resume, Restart, ... Quit
+  std::vector<MenuRequest> resume = menu.handle(UiInput::press(UiKey::Back));  // Esc: Resume
+  menu.show_results(go[0].level, go[0].difficulty, result);  // the fight decided
+
+  ASSERT_EQ(go.size(), 1u);
+  EXPECT_EQ(go[0].kind, MenuRequest::Kind::Launch);
+  EXPECT_EQ(go[0].level, "levels/duel.json");
+  ASSERT_EQ(resume.size(), 1u);
+  EXPECT_EQ(resume[0].kind, MenuRequest::Kind::Resume);
+  EXPECT_EQ(menu.screen(), MenuScreen::Results);
 }
 
 TEST(BannerExample, SessionRecorder) {

@@ -4,9 +4,10 @@
 #include "core/json.h"
 #include "game/app/contact_sheet.h"
 #include "game/app/input_bindings.h"
+#include "core/data_root.h"
 
 namespace {
-const std::string kDefaultBindings = std::string(ARCFIRE_SOURCE_DIR) + "/assets/settings/bindings.json";
+const std::string kDefaultBindings = arc::data_root() + "/assets/settings/bindings.json";
 
 std::string write_temp(const std::string& name, const std::string& text) {
   std::string p = testing::TempDir() + "/" + name;

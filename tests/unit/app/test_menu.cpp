@@ -1,22 +1,25 @@
 // The menu (game/app/menu.h) driven headless by scripted UI inputs: main menu → mission select
 // → briefing with a difficulty → launch → the fight → results → next mission; settings and key
-// remapping; mouse hovering and clicking on the laid-out items. Each screen is checked as text
-// (describe_page), the snapshot of what it shows.
+// remapping; mouse hovering and clicking on the laid-out items; the pause screen over a game,
+// with and without the main menu. Each screen is checked as text (describe_page,
+// menu_snapshots.h), the snapshot of what it shows.
 #include <filesystem>
 #include <gtest/gtest.h>
 
 #include "game/app/key_remap.h"
 #include "game/app/menu.h"
 #include "game/app/menu_input.h"
+#include "game/app/menu_snapshots.h"
 #include "game/render/menu_layout.h"
 #include "game/sim/game.h"
 #include "game/sim/world.h"
 #include "platform/platform.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
 
-const std::string kRoot = ARCFIRE_SOURCE_DIR;
+const std::string kRoot = arc::data_root();
 
 Menu make_menu() {
   Bindings b = load_bindings(kRoot + "/assets/settings/bindings.json");
@@ -285,6 +288,170 @@ TEST(MenuInput, KeysGamepadAndMouseBecomeUiInputs) {
   in = menu_inputs(before, esc, true, boxes);
   ASSERT_EQ(in.size(), 1u);
   EXPECT_EQ(in[0].key, UiKey::Back);
+}
+
+// The pause screen, as a game started with --level has it: no main menu behind.
+PauseState undecided_pause() {
+  PauseState s;
+  s.playing = s.next = Difficulty::Normal;
+  s.volume = 0.7;
+  return s;
+}
+
+std::vector<MenuRequest::Kind> kinds(const std::vector<MenuRequest>& r) {
+  std::vector<MenuRequest::Kind> out;
+  for (const MenuRequest& q : r) out.push_back(q.kind);
+  return out;
+}
+
+TEST(PauseMenu, OpensWithThePauseAndListsItsItems) {
+  Menu m{UserFiles{}};
+  EXPECT_FALSE(m.open());
+  EXPECT_FALSE(m.has_main());
+  EXPECT_TRUE(run(m, "accept down back").empty()) << "closed: no input acts";
+  m.pause(undecided_pause());
+  ASSERT_EQ(m.screen(), MenuScreen::Pause);
+  EXPECT_TRUE(m.open());
+  EXPECT_FALSE(m.over_game()) << "the ship keeps its devices' state, the game is paused";
+  EXPECT_EQ(describe_page(m.page()),
+            "title: PAUSED\n"
+            "> Resume\n  Restart\n  Difficulty: < normal >\n  Sound: on (M)\n  Volume: < 70% >\n  Quit\n");
+  EXPECT_NE(m.page().hint.find("Esc: resume"), std::string::npos);
+  run(m, "down down");
+  m.pause(undecided_pause());  // shown again each frame: the selection stays
+  EXPECT_TRUE(has_line(m.page(), "> Difficulty"));
+  m.close_pause();
+  EXPECT_FALSE(m.open());
+  m.pause(undecided_pause());  // paused again: from the top
+  EXPECT_TRUE(has_line(m.page(), "> Resume"));
+}
+
+TEST(PauseMenu, LabelsFollowTheRecordingTheOutcomeAndTheNextDifficulty) {
+  Menu m{UserFiles{}};
+  PauseState s = undecided_pause();
+  s.recording = true;
+  s.next = Difficulty::Hard;
+  s.muted = true;
+  m.pause(s);
+  EXPECT_EQ(m.page().items, (std::vector<std::string>{"Resume", "Restart (ends the recording)",
+                                                      "Difficulty: < hard > (applies on restart)", "Sound: muted (M)",
+                                                      "Volume: < 70% >", "Quit"}));
+  m.close_pause();
+  s.outcome = "DEFEAT";
+  s.outcome_tone = -1;
+  s.recording = false;
+  m.pause(s);
+  const MenuPage p = m.page();
+  EXPECT_EQ(p.title, "DEFEAT");
+  EXPECT_EQ(p.title_tone, -1);
+  EXPECT_EQ(p.items[0], "Retry");
+  EXPECT_EQ(p.items[1], "Resume");
+  EXPECT_EQ(p.items[2], "Difficulty: < hard > (applies on retry)");
+  EXPECT_EQ(p.selection, 0);
+  EXPECT_EQ(kinds(run(m, "accept")), std::vector<MenuRequest::Kind>{MenuRequest::Kind::Restart});
+}
+
+TEST(PauseMenu, ItemsAskForWhatTheyDo) {
+  using K = MenuRequest::Kind;
+  Menu m{UserFiles{}};
+  PauseState s = undecided_pause();
+  m.pause(s);
+  EXPECT_EQ(kinds(run(m, "accept")), std::vector<K>{K::Resume});
+  EXPECT_EQ(kinds(run(m, "back")), std::vector<K>{K::Resume}) << "Esc resumes";
+  EXPECT_EQ(kinds(run(m, "down accept")), std::vector<K>{K::Restart});
+  EXPECT_EQ(kinds(run(m, "up up accept")), std::vector<K>{K::Quit}) << "the list wraps";
+  // Difficulty: Left/Right step it, Enter steps it up and wraps; it is the next restart's.
+  std::vector<MenuRequest> r = run(m, "down down down right");
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_EQ(r[0].kind, K::SetDifficulty);
+  EXPECT_EQ(r[0].difficulty, Difficulty::Hard);
+  EXPECT_EQ(run(m, "left")[0].difficulty, Difficulty::Easy);
+  s.next = Difficulty::Hard;
+  m.pause(s);
+  EXPECT_EQ(run(m, "accept")[0].difficulty, Difficulty::Easy);
+  EXPECT_EQ(kinds(run(m, "down accept")), std::vector<K>{K::ToggleMute});
+  EXPECT_TRUE(run(m, "left right").empty()) << "Sound has no steps";
+  // Volume: tenths by Left/Right; Enter one up, from full back to silent.
+  r = run(m, "down left right right");
+  ASSERT_EQ(r.size(), 3u);
+  EXPECT_EQ(r[0].kind, K::StepVolume);
+  EXPECT_EQ(r[0].steps, -1);
+  EXPECT_EQ(r[2].steps, 1);
+  EXPECT_EQ(run(m, "accept")[0].steps, 1);
+  s.volume = 1.0;
+  m.pause(s);
+  EXPECT_EQ(run(m, "accept")[0].steps, -10);
+  EXPECT_EQ(kinds(run(m, "down accept")), std::vector<K>{K::Quit}) << "no main menu behind --level";
+}
+
+// Started from the main menu the pause screen leads back there; it never covers another screen.
+TEST(PauseMenu, FromTheMainMenuItLeadsBack) {
+  Menu m = make_menu();
+  m.pause(undecided_pause());
+  EXPECT_EQ(m.screen(), MenuScreen::Main) << "the menu is not a paused game";
+  const std::vector<MenuRequest> launch = run(m, "accept accept accept");  // Play, Duel, Launch
+  ASSERT_EQ(kinds(launch), std::vector<MenuRequest::Kind>{MenuRequest::Kind::Launch});
+  PauseState s = undecided_pause();
+  s.recording = true;
+  m.pause(s);
+  ASSERT_EQ(m.screen(), MenuScreen::Pause);
+  EXPECT_TRUE(has_line(m.page(), "  Main menu (ends the recording)\n  Quit\n"));
+  EXPECT_EQ(kinds(run(m, "up up accept")), std::vector<MenuRequest::Kind>{MenuRequest::Kind::MainMenu});
+  m.open_main();
+  EXPECT_EQ(m.screen(), MenuScreen::Main);
+  // The fight decided while paused: the results replace the pause screen.
+  run(m, "accept accept accept");
+  m.pause(s);
+  ASSERT_EQ(m.screen(), MenuScreen::Pause);
+  m.show_results(launch[0].level, Difficulty::Normal, {true, 40, 1});
+  EXPECT_EQ(m.screen(), MenuScreen::Results);
+  m.close_pause();
+  m.pause(s);
+  EXPECT_EQ(m.screen(), MenuScreen::Results);
+}
+
+TEST(PauseMenu, StateOfADecidedWorld) {
+  GameOptions o;
+  o.root_dir = kRoot;
+  o.difficulty = Difficulty::Hard;
+  o.difficulty_override = true;
+  Game g = Game::load_level(kRoot + "/levels/duel.json", o);
+  EXPECT_EQ(pause_state_of(g.world()).outcome, "");
+  EXPECT_EQ(pause_state_of(g.world()).playing, Difficulty::Hard);
+  g.world_mut().outcome = Outcome::Victory;
+  EXPECT_EQ(pause_state_of(g.world()).outcome, "VICTORY");
+  EXPECT_EQ(pause_state_of(g.world()).outcome_tone, 1);
+  g.world_mut().outcome = Outcome::Defeat;
+  EXPECT_EQ(pause_state_of(g.world()).outcome_tone, -1);
+}
+
+// Drawn by layout_menu: the verdict above the items, every label on screen, and the mouse
+// hovers and clicks the items.
+TEST(PauseMenu, LaidOutWithTheVerdictAboveAndMouseBoxes) {
+  Menu m = make_menu();
+  run(m, "accept accept accept");
+  PauseState s = undecided_pause();
+  s.outcome = "DEFEAT";
+  s.outcome_tone = -1;
+  s.next = Difficulty::Hard;
+  s.recording = true;
+  m.pause(s);
+  HudLayer layer;
+  std::vector<HudBox> boxes;
+  layout_menu(m.page(), 1280, 720, layer, &boxes);
+  ASSERT_EQ(boxes.size(), 7u);
+  const HudText* title = nullptr;
+  for (const HudText& t : layer.texts) {
+    if (t.text == "DEFEAT") title = &t;
+    const HudBox b = text_box(t);
+    EXPECT_GE(b.x0, 0.0) << t.text;
+    EXPECT_LE(b.x1, 1280.0) << t.text;
+  }
+  ASSERT_NE(title, nullptr);
+  EXPECT_LT(text_box(*title).y1, boxes[0].y0);
+  m.handle(UiInput::hover(menu_item_at(boxes, (boxes[1].x0 + boxes[1].x1) / 2, (boxes[1].y0 + boxes[1].y1) / 2)));
+  EXPECT_TRUE(has_line(m.page(), "> Resume"));
+  EXPECT_EQ(kinds(m.handle(UiInput::click(5))), std::vector<MenuRequest::Kind>{MenuRequest::Kind::MainMenu});
 }
 
 TEST(Menu, BadScriptWordsArePositioned) {

@@ -9,12 +9,13 @@
 #include "game/app/key_remap.h"
 #include "game/app/user_settings.h"
 #include "platform/platform.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
 
 namespace fs = std::filesystem;
-const std::string kRoot = ARCFIRE_SOURCE_DIR;
+const std::string kRoot = arc::data_root();
 const std::string kQuality = kRoot + "/assets/settings/quality.json";
 
 // A fresh folder under the build's temp dir for each test.

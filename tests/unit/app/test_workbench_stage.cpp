@@ -9,13 +9,14 @@
 #include "game/workbench/effect_document.h"
 #include "game/workbench/orbit_camera.h"
 #include "game/workbench/workbench_stage.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
 
 std::unique_ptr<EffectDocument> open_effect(const char* name) {
   std::string error;
-  auto doc = EffectDocument::open(std::string(ARCFIRE_SOURCE_DIR) + "/assets/effects/" + name + ".json", error);
+  auto doc = EffectDocument::open(arc::data_root() + "/assets/effects/" + name + ".json", error);
   EXPECT_TRUE(doc) << error;
   return doc;
 }

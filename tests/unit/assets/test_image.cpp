@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "oiio_write.h"
 #include "test_util.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
@@ -70,7 +71,7 @@ TEST(LoadImage, FloatIsClampedAndScaled) {
 
 TEST(LoadImage, CorruptPngAnswersWithOneLineAndPrintsNothing) {
   // Found by tests/fuzz (sprite): libpng printed its own lines to stderr beside the error.
-  const std::string path = std::string(ARCFIRE_SOURCE_DIR) + "/tests/fuzz/regression/sprite/idat_bad_code_lengths.png";
+  const std::string path = arc::build_source_tree() + "/tests/fuzz/regression/sprite/idat_bad_code_lengths.png";
   testing::internal::CaptureStderr();
   try {
     load_image(path);

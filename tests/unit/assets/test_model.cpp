@@ -64,7 +64,7 @@ TEST_P(GeneratedShip, LoadsAsAWellFormedShipFacingMinusZ) {
   EXPECT_GT(glow_z / double(glow_vertices), 0.0);
 }
 
-// Hull detail (issue 14 item 4): the hull's material carries the plating texture, mapped by
+// Hull detail: the hull's material carries the plating texture, mapped by
 // UVs, with dark panel lines on mostly light plates; a red running light to port (−X) and a
 // green one to starboard (+X) glow; hull and trim have a highlight (not fully rough).
 TEST_P(GeneratedShip, HullHasPlatingAndRunningLights) {

@@ -36,7 +36,7 @@ fs::path scratch(const char* name) {
 TEST(ScreenshotWriter, QuickShotsTakeTheNextFreeNumbersAndAllReachTheDisk) {
   const fs::path dir = scratch("numbers");
   fs::create_directories(dir);
-  write_file_checked((dir / "arcfire_0001.png").string(), "taken");  // a shot from an earlier session
+  write_file_checked((dir / "arcfire_0001.png").string(), "taken");  // a shot from an earlier run of the game
   std::set<std::string> paths;
   std::vector<Image> images;
   {

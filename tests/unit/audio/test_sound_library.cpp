@@ -7,11 +7,12 @@
 #include "audio/sound_library.h"
 #include "audio/synth.h"
 #include "core/error.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
 
-const std::string kSounds = std::string(ARCFIRE_SOURCE_DIR) + "/assets/sounds/sounds.json";
+const std::string kSounds = arc::data_root() + "/assets/sounds/sounds.json";
 
 std::string error_of(const std::string& text) {
   try {

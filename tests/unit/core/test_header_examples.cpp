@@ -12,10 +12,11 @@
 #include <sstream>
 #include <string>
 #include <vector>
+#include "core/data_root.h"
 
 namespace {
 
-const std::string kRoot = ARCFIRE_SOURCE_DIR;
+const std::string kRoot = arc::build_source_tree();  // the sources, found through the build
 
 std::string read(const std::filesystem::path& p) {
   std::ifstream f(p, std::ios::binary);

@@ -83,7 +83,7 @@ void expect_linear(const std::function<std::string(size_t)>& make, size_t n, con
 }  // namespace
 
 TEST(InputLimits, DeepNestingIsRefusedWithOneLineAndLittleMemory) {
-  // The case of issue 18: 200 KB of '[' grew to 15 GB before the limit.
+  // 200 KB of '[': without the depth limit the parse tree would take gigabytes.
   const std::string text(200000, '[');
   std::string e;
   const Cost c = cost_of([&] { e = error_of([&] { arc::JsonDoc::parse(text, "nested.json"); }); });
@@ -176,8 +176,8 @@ TEST(InputLimits, LongListIsRefusedAtItsKey) {
 }
 
 TEST(InputLimits, MessagesStayOneLineWhateverTheFileHolds) {
-  // Found by tests/fuzz (level, effect): a value with an escaped newline was echoed back in
-  // "got ...", splitting the one line of a bad-input exit in two.
+  // A case tests/fuzz finds (level, effect): a value with an escaped newline echoed back in
+  // "got ..." would split the one line of a bad-input exit in two.
   const auto doc = arc::JsonDoc::parse("{\"type\": \"last\\nteam\\u0001\"}", "m.json");
   arc::JsonObject root(doc, "", &doc->root());
   const std::string e = error_of([&] { root.choice("type", "a", {"a", "b"}); });

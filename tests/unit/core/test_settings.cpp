@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "core/settings.h"
+#include "core/data_root.h"
 
 TEST(Settings, DefaultsAreDocumentedAndValid) {
   auto s = arc::Settings::defaults();
@@ -23,7 +24,7 @@ TEST(Settings, SetChecksKeyTypeAndRange) {
 }
 
 TEST(Settings, EveryShippedPresetApplies) {
-  std::string path = std::string(ARCFIRE_SOURCE_DIR) + "/assets/settings/quality.json";
+  std::string path = arc::data_root() + "/assets/settings/quality.json";
   auto names = arc::Settings::preset_names(path);
   ASSERT_EQ(names.size(), 4u);
   for (const auto& n : names) {
@@ -68,7 +69,7 @@ TEST(Settings, HdrBloomExposureAndAntialiasAreValidated) {
 }
 
 TEST(Settings, PresetsSetTheLook) {
-  const std::string path = std::string(ARCFIRE_SOURCE_DIR) + "/assets/settings/quality.json";
+  const std::string path = arc::data_root() + "/assets/settings/quality.json";
   auto s = arc::Settings::defaults();
   s.apply_preset_file(path, "low");
   EXPECT_FALSE(s.flag("render.hdr"));

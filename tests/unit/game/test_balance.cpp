@@ -129,7 +129,7 @@ double survived(double death_s, const FightStats& st) { return death_s < 0 ? st.
 const uint64_t kSeeds[] = {0, 11, 23, 37};
 
 // An idle player on normal: long enough to see the enemy come, turn and fight back. Weapons pay
-// off now (test_weapon_payoff.cpp): the AI needs about 4 s to reach beam range and about 10 s
+// off (test_weapon_payoff.cpp): the AI needs about 4 s to reach beam range and about 10 s
 // of fire, so an idle Viper lasts about 16 s in the duel.
 TEST(Balance, IdlePlayerHasTimeToReactOnNormal) {
   for (uint64_t seed : kSeeds) {

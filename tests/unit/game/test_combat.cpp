@@ -7,6 +7,7 @@
 #include "game/sim/damage.h"
 #include "game/sim/geometry.h"
 #include "test_helpers.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
@@ -267,7 +268,7 @@ TEST(Ai, HoldsFireWhileAnAllyIsInTheLineOfFire) {
 // the tail after the difficulty's tail_limit_s (assets/settings/ai.json), so the player gets a
 // window to turn; on hard it stays there.
 TEST(Ai, BreaksOffThePlayersTailOnEasyAndNormal) {
-  const AiDifficultyTable ai = load_ai_difficulties(ARCFIRE_SOURCE_DIR);
+  const AiDifficultyTable ai = load_ai_difficulties(arc::data_root());
   const char* names[] = {"easy", "normal", "hard"};
   for (int d = 0; d < 3; ++d) {
     SCOPED_TRACE(names[d]);
@@ -307,7 +308,7 @@ TEST(Ai, BreaksOffThePlayersTailOnEasyAndNormal) {
 }
 
 TEST(Ai, HarderDifficultyAimsTighterAndReactsFaster) {
-  const AiDifficultyTable ai = load_ai_difficulties(ARCFIRE_SOURCE_DIR);
+  const AiDifficultyTable ai = load_ai_difficulties(arc::data_root());
   EXPECT_GT(ai[0].aim_error, ai[1].aim_error);
   EXPECT_GT(ai[1].aim_error, ai[2].aim_error);
   EXPECT_GT(ai[0].reaction_s, ai[2].reaction_s);

@@ -1,7 +1,7 @@
-// Particles attached to a ship are drawn at the same interpolated moment as its mesh (issue 11,
-// item 7): for any alpha between ticks, the offset of the player's exhaust cluster from the
-// player's drawn mesh is the offset at the tick. Before, particles were collected at the tick
-// while the mesh was interpolated, so the exhaust sat up to one tick's travel ahead of the hull.
+// Particles attached to a ship are drawn at the same interpolated moment as its mesh: for any
+// alpha between ticks, the offset of the player's exhaust cluster from the player's drawn mesh
+// is the offset at the tick. Particles collected at the tick under an interpolated mesh would
+// sit up to one tick's travel ahead of the hull.
 #include <gtest/gtest.h>
 
 #include "game/render/render_view_builder.h"

@@ -87,6 +87,33 @@ TEST(Flight, AfterburnerRaisesAssistedSpeed) {
   EXPECT_NEAR(glm::length(s.velocity), c.max_speed * c.afterburner_speed, 1e-9);
 }
 
+// The afterburner is full boost forward whatever the set throttle: from a standstill at zero
+// (or reverse) throttle it reaches the boosted speed, assisted or not.
+TEST(Flight, AfterburnerBoostsFromZeroAndReverseThrottle) {
+  ShipClassDef c = test_class();
+  for (int8_t throttle : {int8_t(0), int8_t(-127), int8_t(40)}) {
+    for (uint16_t buttons : {uint16_t(0), uint16_t(kFlightAssist)}) {
+      Ship s = ship_of(c);
+      s.controls.throttle = throttle;
+      s.controls.buttons = buttons;
+      s.afterburner_on = true;
+      for (int i = 0; i < 120; ++i) integrate_flight(s, kDt);
+      EXPECT_GT(-s.velocity.z, 0.8 * c.max_speed * c.afterburner_speed) << int(throttle) << " " << buttons;
+    }
+  }
+}
+
+TEST(Flight, AfterburnerOffReturnsToTheSetThrottle) {
+  ShipClassDef c = test_class();
+  Ship s = ship_of(c);
+  s.afterburner_on = true;
+  for (int i = 0; i < 240; ++i) integrate_flight(s, kDt);
+  EXPECT_NEAR(glm::length(s.velocity), c.max_speed * c.afterburner_speed, 1e-9);
+  s.afterburner_on = false;
+  for (int i = 0; i < 240; ++i) integrate_flight(s, kDt);
+  EXPECT_NEAR(glm::length(s.velocity), 0.0, 1e-9);
+}
+
 TEST(Flight, StickAxesTurnTheNoseTheExpectedWay) {
   ShipClassDef c = test_class();
   Ship yaw = ship_of(c), pitch = ship_of(c);

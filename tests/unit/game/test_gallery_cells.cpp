@@ -1,4 +1,4 @@
-// The effect gallery as a grid of cells (issue 14 item 5), checked on the laid-out HUD and the
+// The effect gallery as a grid of cells, checked on the laid-out HUD and the
 // particle world without GL: its labels neither overlap nor leave a 1280x720 screen, and each
 // hangs below its own effect; a level's lightning channel aimed with "to" stays between its two
 // points; an effect with a "velocity" travels from its position and starts there again.

@@ -1,5 +1,5 @@
-// tests/unit/game/test_gallery_frames.cpp — the effect gallery rendered headless at 1280x720
-// (issue 14 item 5): in every cell of its 4 × 3 grid the effect covers a readable share of the
+// tests/unit/game/test_gallery_frames.cpp — the effect gallery rendered headless at 1280x720:
+// in every cell of its 4 × 3 grid the effect covers a readable share of the
 // cell at its fullest, and stays mostly within it. The share is measured as the pixels the
 // particles change (the frame against the same frame without particles), over ticks that catch
 // each effect's phases. ARCFIRE_GFX_DUMP=DIR saves the frames.
@@ -19,6 +19,7 @@
 #include "gfx/renderer.h"
 #include "gfx_test_util.h"
 #include "test_helpers.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
@@ -53,7 +54,7 @@ TEST(GalleryFrames, EveryEffectFillsAReadablePartOfItsCell) {
   Game game = Game::load_level(test::repo("levels/gallery.json"), test::options());
   Renderer renderer(RendererDesc{.offscreen = true});
   renderer.apply_settings(Settings::defaults());
-  const std::vector<ModelId> models = load_scene_resources(renderer, game.world(), ARCFIRE_SOURCE_DIR);
+  const std::vector<ModelId> models = load_scene_resources(renderer, game.world(), arc::data_root());
   HudState no_hud;
   no_hud.show_hud = false;
   std::array<double, kColumns * kRows> fullest{};

@@ -1,6 +1,6 @@
-// The effect gallery left running: repeated level effects must end as well as start (issue 12
-// item 9: a lightning channel spawned as a free level effect had no owner and no end, so the
-// gallery gained a bolt every 2 s for good). Ten minutes of game time, no rendering.
+// The effect gallery left running: repeated level effects must end as well as start (a
+// lightning channel spawned as a free level effect needs an owner and an end, or the gallery
+// would gain a bolt every 2 s for good). Ten minutes of game time, no rendering.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -25,6 +25,7 @@
 #include "platform/platform.h"
 #include "gfx_test_util.h"
 #include "test_helpers.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
@@ -70,7 +71,7 @@ Coverage own_effect_coverage(bool cockpit, const std::string& dump_name) {
 
   Renderer renderer(RendererDesc{.offscreen = true});
   renderer.apply_settings(Settings::defaults());
-  const std::vector<ModelId> models = load_scene_resources(renderer, w, ARCFIRE_SOURCE_DIR);
+  const std::vector<ModelId> models = load_scene_resources(renderer, w, arc::data_root());
   HudState no_hud;
   no_hud.show_hud = false;
   RenderView view;
@@ -141,12 +142,12 @@ int pixels_where(const Image& img, int x0, int x1, bool (*test)(float r, float g
 
 TEST(TeamColors, ShipModelsMarkTheirTeamRegions) {
   for (const char* name : {"viper", "dart", "warden"}) {
-    const ModelData m = load_model(std::string(ARCFIRE_SOURCE_DIR "/assets/models/") + name + ".glb");
+    const ModelData m = load_model(arc::data_root() + "/assets/models/" + name + ".glb");
     int team = 0;
     for (const Material& mat : m.materials) team += mat.team_color > 0.0f ? 1 : 0;
     EXPECT_EQ(team, 2) << name << ": stripes and engine glow";
   }
-  for (const Material& mat : load_model(ARCFIRE_SOURCE_DIR "/assets/models/asteroid.glb").materials)
+  for (const Material& mat : load_model(arc::data_root() + "/assets/models/asteroid.glb").materials)
     EXPECT_EQ(mat.team_color, 0.0f);
 }
 
@@ -164,7 +165,7 @@ TEST(TeamColors, BlueAndRedVipersWearTheirColours) {
   game.step(InputFrame{});
   Renderer renderer(RendererDesc{.offscreen = true});
   renderer.apply_settings(Settings::defaults());
-  const std::vector<ModelId> models = load_scene_resources(renderer, game.world(), ARCFIRE_SOURCE_DIR);
+  const std::vector<ModelId> models = load_scene_resources(renderer, game.world(), arc::data_root());
   HudState no_hud;
   no_hud.show_hud = false;
   RenderView view;

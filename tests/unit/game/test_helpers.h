@@ -4,16 +4,18 @@
 
 #include "game/sim/game.h"
 #include "game/sim/world.h"
+#include "core/data_root.h"
 
 namespace arc::test {
 
 inline GameOptions options() {
   GameOptions o;
-  o.root_dir = ARCFIRE_SOURCE_DIR;
+  o.root_dir = arc::data_root();
   return o;
 }
 
-inline std::string repo(const std::string& rel) { return std::string(ARCFIRE_SOURCE_DIR) + "/" + rel; }
+// A file of the source tree (the game's levels and the tests' own), found through the build.
+inline std::string repo(const std::string& rel) { return arc::build_source_tree() + "/" + rel; }
 
 // A level file in the build's temporary folder, so Game::load_level reads it like any other.
 std::string write_level(const std::string& name, const std::string& text);

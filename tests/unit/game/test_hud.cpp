@@ -2,10 +2,12 @@
 // (game/render/hud_*.h), checked on the laid-out HudLayer without GL.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "core/error.h"
+#include "game/render/hud_aim.h"
 #include "game/render/hud_draw.h"
 #include "game/render/hud_radar.h"
 #include "game/render/render_view_builder.h"
@@ -34,6 +36,14 @@ HudLayer hud_of(const World& w, int width = 1280, int height = 720) {
   build_render_view(w, {}, 1.0, CameraSettings{}, HudState{}, width, height, v);
   return v.hud;
 }
+
+bool has_exact_text(const HudLayer& h, const std::string& s) {
+  for (const HudText& t : h.texts)
+    if (t.text == s) return true;
+  return false;
+}
+
+void place(World& w, size_t ship, glm::dvec3 p) { w.ships[ship].position = w.ships[ship].prev_position = p; }
 
 // Lines drawn across a diagonal of the crosshair at screen centre: the hit marker's strokes.
 int diagonal_strokes_near_centre(const HudLayer& h, double cx, double cy) {
@@ -197,6 +207,72 @@ TEST(Hud, EverySizeScalesWithTheWindowHeight) {
   }
   for (size_t i = 0; i < small.lines.size(); ++i) EXPECT_FLOAT_EQ(large.lines[i].width, 2.0f * small.lines[i].width);
   for (size_t i = 0; i < small.quads.size(); ++i) EXPECT_NEAR(large.quads[i].h, 2.0f * small.quads[i].h, 0.01f);
+}
+
+// The ring tells the truth: it lights exactly when holding the trigger does damage.
+TEST(HudAim, BeamRingLightsWhenTheBeamWouldHit) {
+  for (double side : {0.0, 60.0}) {
+    Game g = range_game();
+    place(g.world_mut(), 1, glm::dvec3(side, 0, -300));
+    const bool lit = has_exact_text(hud_of(g.world()), "BEAM");
+    EXPECT_EQ(lit, beam_would_hit(g.world(), g.world().ships[0]));
+    const double before = g.world().ships[1].shield + g.world().ships[1].hull;
+    InputFrame fire;
+    fire.buttons = kFirePrimary;
+    for (int i = 0; i < 20; ++i) g.step(fire);
+    const bool hurt = g.world().ships[1].shield + g.world().ships[1].hull < before;
+    EXPECT_EQ(lit, side == 0.0) << side << " m beside the nose";
+    EXPECT_EQ(lit, hurt) << side << " m beside the nose";
+  }
+}
+
+// Missiles home, so their cue is on the target ("MSL"); plasma flies straight and has a lead
+// point ("PLS"); neither shows the other's cue.
+TEST(HudAim, EachSecondaryWeaponHasItsOwnLabelledCue) {
+  Game g = range_game();
+  const HudLayer missiles = hud_of(g.world());
+  EXPECT_TRUE(has_exact_text(missiles, "MSL"));
+  EXPECT_FALSE(has_exact_text(missiles, "PLS"));
+  g.step(InputFrame{}, {Command::SwitchWeapon});
+  ASSERT_EQ(g.world().ships[0].secondary, SecondaryWeapon::Plasma);
+  const HudLayer plasma = hud_of(g.world());
+  EXPECT_TRUE(has_exact_text(plasma, "PLS"));
+  EXPECT_FALSE(has_exact_text(plasma, "MSL"));
+}
+
+TEST(HudAim, MissileReadyWithinReachAndCone) {
+  Game g = range_game();
+  World& w = g.world_mut();
+  EXPECT_TRUE(missile_ready(w.ships[0], w.ships[1]));  // 300 m dead ahead
+  place(w, 1, glm::dvec3(0, 0, -3000));                 // beyond 230 m/s × 8 s
+  EXPECT_FALSE(missile_ready(w.ships[0], w.ships[1]));
+  place(w, 1, glm::dvec3(0, 0, 300));                   // behind
+  EXPECT_FALSE(missile_ready(w.ships[0], w.ships[1]));
+}
+
+// The distance sits under the brackets at any range, and beside the arrow when out of view.
+TEST(HudAim, DistanceUnderTheBracketsAndBesideTheArrow) {
+  Game g = range_game();
+  World& w = g.world_mut();
+  for (double z : {-300.0, -900.0, -5000.0}) {
+    place(w, 1, glm::dvec3(0, 0, z));
+    EXPECT_TRUE(has_exact_text(hud_of(w), fmt("%.0f m", -z))) << z;
+  }
+  place(w, 1, glm::dvec3(300, 0, 250));  // behind on the right: the arrow
+  EXPECT_TRUE(has_exact_text(hud_of(w), "391 m"));
+}
+
+// A target far away still gets brackets of a readable size: 24 pixels at 720p, more above.
+TEST(HudAim, BracketsNeverSmallerThanReadable) {
+  Game g = range_game();
+  place(g.world_mut(), 1, glm::dvec3(0, 0, -6000));
+  for (int height : {720, 1440}) {
+    double x0 = 1e9, x1 = -1e9;
+    for (const HudLine& l : hud_of(g.world(), height * 16 / 9, height).lines)
+      if (l.color == kHudRed)
+        x0 = std::min({x0, double(l.x0), double(l.x1)}), x1 = std::max({x1, double(l.x0), double(l.x1)});
+    EXPECT_GE(x1 - x0, 24.0 * height / 720.0) << height;
+  }
 }
 
 // The usage example of game/render/hud_rules.h, word for word.

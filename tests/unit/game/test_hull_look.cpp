@@ -1,4 +1,4 @@
-// tests/unit/game/test_hull_look.cpp — hulls that read in battle (issue 14 item 4), rendered
+// tests/unit/game/test_hull_look.cpp — hulls that read in battle, rendered
 // headless through EGL at 1280x720 with the game's own models and mesh shader:
 // ClassesReadApartAt300Metres: a Viper, a Dart and a Warden of one team 300 m away each cover
 // a readable patch, stand out from the sky and differ from one another in colour;
@@ -21,6 +21,7 @@
 #include "gfx/renderer.h"
 #include "gfx_test_util.h"
 #include "test_helpers.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
@@ -43,7 +44,7 @@ Frames render_ships(const std::string& level, const glm::vec3& light, const char
   Settings settings = Settings::defaults();
   settings.set("render.antialias", "off", "test_hull_look");
   renderer.apply_settings(settings);
-  const std::vector<ModelId> models = load_scene_resources(renderer, game.world(), ARCFIRE_SOURCE_DIR);
+  const std::vector<ModelId> models = load_scene_resources(renderer, game.world(), arc::data_root());
   HudState no_hud;
   no_hud.show_hud = false;
   Frames f;

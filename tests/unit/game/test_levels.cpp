@@ -12,11 +12,12 @@
 #include "game/sim/defs.h"
 #include "game/sim/effects.h"
 #include "test_helpers.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
 
-const std::string kRoot = ARCFIRE_SOURCE_DIR;
+const std::string kRoot = arc::data_root();
 
 // Parses level text and returns the error message ("" when it loads).
 std::string error_of(const std::string& text) {
@@ -309,7 +310,7 @@ TEST(LevelMissions, BlockIsReadAndErrorsArePositioned) {
 // levels/README.md states the position limit once; the loader takes exactly that limit, and a
 // value just over it is reported with the digits that show why (not "got 1e+12").
 TEST(LevelFiles, PositionLimitIsTheReadmesAndItsErrorShowsEveryDigit) {
-  const std::string readme = read_text_file(kRoot + "/levels/README.md");
+  const std::string readme = read_text_file(build_source_tree() + "/levels/README.md");
   const std::regex limit_rx("within ±([0-9.e+]+)");
   ASSERT_EQ(std::distance(std::sregex_iterator(readme.begin(), readme.end(), limit_rx), std::sregex_iterator()), 1)
       << "the README must state the position limit exactly once";

@@ -7,7 +7,7 @@
 // axes and key commands. fly_duel() plays levels/duel.json against the AI; the game tests check
 // its win rates with wide bounds and `arcfire-bench --scene test_pilot` prints them.
 //
-//   DuelResult r = fly_duel(ARCFIRE_SOURCE_DIR, /*difficulty=*/1, /*seed=*/7, PilotKind::Person);
+//   DuelResult r = fly_duel(arc::data_root(), /*difficulty=*/1, /*seed=*/7, PilotKind::Person);
 #pragma once
 #include <cstdint>
 #include <deque>
@@ -16,6 +16,7 @@
 #include <glm/vec2.hpp>
 
 #include "game/sim/input.h"
+#include "core/data_root.h"
 
 namespace arc {
 

@@ -15,6 +15,7 @@
 #include "game/sim/geometry.h"
 #include "game/sim/world.h"
 #include "test_pilot.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
@@ -24,8 +25,8 @@ const char* const kDifficulty[] = {"easy", "normal", "hard"};
 
 TEST(TestPilot, HudReadingFollowsTheTarget) {
   GameOptions o;
-  o.root_dir = ARCFIRE_SOURCE_DIR;
-  Game g = Game::load_level(std::string(ARCFIRE_SOURCE_DIR) + "/levels/duel.json", o);
+  o.root_dir = arc::data_root();
+  Game g = Game::load_level(arc::data_root() + "/levels/duel.json", o);
   HudReading h = read_hud(g.world());
   EXPECT_FALSE(h.has_target);
   g.step(InputFrame{}, {Command::TargetNextHostile});
@@ -42,7 +43,7 @@ TEST(TestPilot, HudReadingFollowsTheTarget) {
 TEST(TestPilot, WinsTheDuelAtRatesThatFollowTheDifficulty) {
   const double lowest[] = {0.8, 0.4, 0.05}, highest[] = {1.0, 0.9, 0.55};
   for (int d = 0; d < 3; ++d) {
-    const DuelRates r = duel_rates(ARCFIRE_SOURCE_DIR, d, kSeeds, PilotKind::Person);
+    const DuelRates r = duel_rates(arc::data_root(), d, kSeeds, PilotKind::Person);
     std::printf("test pilot on %s: %d of %d won, median win %.1f s\n", kDifficulty[d], r.wins, r.fights,
                 r.median_win_s);
     RecordProperty(std::string("win_rate_") + kDifficulty[d], std::to_string(r.win_rate));
@@ -56,7 +57,7 @@ TEST(TestPilot, WinsTheDuelAtRatesThatFollowTheDifficulty) {
 
 TEST(TestPilot, IdlePilotLosesOnEveryDifficulty) {
   for (int d = 0; d < 3; ++d) {
-    const DuelRates r = duel_rates(ARCFIRE_SOURCE_DIR, d, kSeeds, PilotKind::Idle);
+    const DuelRates r = duel_rates(arc::data_root(), d, kSeeds, PilotKind::Idle);
     EXPECT_EQ(r.losses, r.fights) << kDifficulty[d];
   }
 }
@@ -65,12 +66,12 @@ TEST(TestPilot, DISABLED_Report) {
   for (int d = 0; d < 3; ++d) {
     std::printf("%-7s", kDifficulty[d]);
     for (int s = 1; s <= kSeeds; ++s) {
-      const DuelResult r = fly_duel(ARCFIRE_SOURCE_DIR, d, static_cast<uint64_t>(s), PilotKind::Person);
+      const DuelResult r = fly_duel(arc::data_root(), d, static_cast<uint64_t>(s), PilotKind::Person);
       std::printf(" %c%.0f", r.won ? 'W' : r.lost ? 'L' : '-', r.seconds);
     }
     std::printf("\n%-7s", "idle");
     for (int s = 1; s <= kSeeds; ++s) {
-      const DuelResult r = fly_duel(ARCFIRE_SOURCE_DIR, d, static_cast<uint64_t>(s), PilotKind::Idle);
+      const DuelResult r = fly_duel(arc::data_root(), d, static_cast<uint64_t>(s), PilotKind::Idle);
       std::printf(" %c%.0f", r.won ? 'W' : r.lost ? 'L' : '-', r.seconds);
     }
     std::printf("\n");
@@ -83,12 +84,12 @@ TEST(TestPilot, DISABLED_Trace) {
   const int d = std::getenv("TRACE_DIFF") ? std::atoi(std::getenv("TRACE_DIFF")) : 1;
   const uint64_t seed = std::getenv("TRACE_SEED") ? std::strtoull(std::getenv("TRACE_SEED"), nullptr, 10) : 1;
   GameOptions o;
-  o.root_dir = ARCFIRE_SOURCE_DIR;
+  o.root_dir = arc::data_root();
   o.difficulty_override = true;
   o.difficulty = static_cast<Difficulty>(d);
   o.seed_override = true;
   o.seed = seed;
-  Game g = Game::load_level(std::string(ARCFIRE_SOURCE_DIR) + "/levels/duel.json", o);
+  Game g = Game::load_level(arc::data_root() + "/levels/duel.json", o);
   const World& w = g.world();
   TestPilot pilot(seed);
   InputFrame in;

@@ -20,6 +20,7 @@
 #include "gfx/renderer.h"
 #include "gfx_test_util.h"
 #include "test_helpers.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
@@ -39,7 +40,7 @@ DepthReads gallery_depth_reads(const std::string& soft_edges) {
   Game game = Game::load_level(test::repo("levels/gallery.json"), test::options());
   Renderer r(RendererDesc{.offscreen = true});
   r.apply_settings(s);
-  const std::vector<ModelId> models = load_scene_resources(r, game.world(), ARCFIRE_SOURCE_DIR);
+  const std::vector<ModelId> models = load_scene_resources(r, game.world(), arc::data_root());
   HudState no_hud;
   no_hud.show_hud = false;
   RenderView view;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "gfx_test_util.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
@@ -15,10 +16,10 @@ TEST(RendererExample, DrawsAView) {
   REQUIRE_CONTEXT();
   // example begin
   Renderer renderer({.offscreen = true});
-  ModelId ship = renderer.add_model(load_model(ARCFIRE_SOURCE_DIR "/assets/models/viper.glb"));
+  ModelId ship = renderer.add_model(load_model(data_root() + "/assets/models/viper.glb"));
   RenderView view;
   view.meshes.push_back({ship, {0, 0, -20}});
-  renderer.set_sprites({load_sprite(ARCFIRE_SOURCE_DIR "/assets/textures/sprite_smoke.png")});
+  renderer.set_sprites({load_sprite(data_root() + "/assets/textures/sprite_smoke.png")});
   renderer.apply_settings(Settings::defaults());
   renderer.render(view, 640, 360);
   Image frame = renderer.read_pixels();

@@ -9,6 +9,7 @@
 
 #include "gfx/color_space.h"
 #include "gfx_test_util.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
@@ -154,7 +155,7 @@ RenderView ship_view(Renderer& r) {
   v.light_color = glm::vec3(1.4f);
   v.ambient = glm::vec3(0.3f);
   v.light_direction = glm::vec3(1.0f, -0.3f, -0.3f);  // from the side: no highlight on the wall
-  ModelId ship = r.add_model(load_model(ARCFIRE_SOURCE_DIR "/assets/models/viper.glb"));
+  ModelId ship = r.add_model(load_model(arc::data_root() + "/assets/models/viper.glb"));
   // A black wall behind it hides the stars, whose single-pixel points would dominate the measure.
   v.meshes.push_back({r.add_model(scenes::wall_model(400, 400, {0, 0, 0, 1}, glm::vec3(0))), {0, 0, -80}});
   v.meshes.push_back({ship, {0, 0, -14}, glm::angleAxis(glm::radians(7.0), glm::dvec3(0, 0, 1)) *
@@ -248,7 +249,7 @@ TEST(Antialias, MsaaKeepsSoftEdges) {
 TEST(Hdr, QualityPresetsSetTheLook) {
   REQUIRE_CONTEXT();
   auto r = make_renderer(false);
-  const std::string quality = ARCFIRE_SOURCE_DIR "/assets/settings/quality.json";
+  const std::string quality = arc::data_root() + "/assets/settings/quality.json";
   Settings s = Settings::defaults();
   r->apply_settings(s);
   EXPECT_FALSE(r->render_settings().hdr) << "the default keeps the 8-bit scene";

@@ -12,6 +12,7 @@
 #include "gfx/gl_features.h"
 #include "gfx/image_compare.h"
 #include "gfx_test_util.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
@@ -159,7 +160,7 @@ TEST(Renderer, LargeCoordinatesRenderLikeTheOrigin) {
   r->render(offset_scene(*r, wall, box, glm::dvec3(0)), 320, 180);
   Image a = r->read_pixels();
   test::dump_if_asked("origin", a);
-  for (double far : {1e9, 1e12}) {  // 1e12: the level files' limit (game/sim/defs.cpp)
+  for (double far : {1e9, 1e12}) {  // 1e12: the level files' limit (kSpace, game/sim/def_parsing.h)
     r->render(offset_scene(*r, wall, box, glm::dvec3(far, -far, far)), 320, 180);
     Image b = r->read_pixels();
     test::dump_if_asked(far > 1e10 ? "level_limit" : "far_away", b);
@@ -605,7 +606,7 @@ TEST(Renderer, ShaderReloadKeepsOldProgramsOnError) {
   namespace fs = std::filesystem;
   fs::path dir = fs::temp_directory_path() / ("arcfire_shaders_" + std::to_string(::getpid()));
   fs::remove_all(dir);
-  fs::copy(ARCFIRE_SOURCE_DIR "/shaders", dir);
+  fs::copy(arc::data_root() + "/shaders", dir);
   RendererDesc d;
   d.offscreen = true;
   d.shader_dir = dir.string();
@@ -627,7 +628,7 @@ TEST(Renderer, AppliesQualitySettings) {
   REQUIRE_CONTEXT();
   auto r = make_renderer();
   Settings s = Settings::defaults();
-  s.apply_preset_file(ARCFIRE_SOURCE_DIR "/assets/settings/quality.json", "low");
+  s.apply_preset_file(arc::data_root() + "/assets/settings/quality.json", "low");
   s.set_from_text("render.depth_mode=standard", "--set");
   r->apply_settings(s);
   EXPECT_EQ(r->render_settings().soft_override, int(SoftEdge::Off));
@@ -636,10 +637,10 @@ TEST(Renderer, AppliesQualitySettings) {
   EXPECT_DOUBLE_EQ(r->render_settings().scale, 0.5);
   EXPECT_FALSE(r->render_settings().sky_exact);
   EXPECT_EQ(r->render_settings().sky_resolution, 128);
-  s.apply_preset_file(ARCFIRE_SOURCE_DIR "/assets/settings/quality.json", "high");
+  s.apply_preset_file(arc::data_root() + "/assets/settings/quality.json", "high");
   r->apply_settings(s);
   EXPECT_EQ(r->render_settings().soft_override, -1);
-  s.apply_preset_file(ARCFIRE_SOURCE_DIR "/assets/settings/quality.json", "reference");
+  s.apply_preset_file(arc::data_root() + "/assets/settings/quality.json", "reference");
   r->apply_settings(s);
   EXPECT_TRUE(r->render_settings().sky_exact);
 }

@@ -14,6 +14,7 @@
 #include "gfx/particle_batch.h"
 #include "gfx/sprite_trim.h"
 #include "gfx_test_util.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
@@ -183,7 +184,7 @@ TEST(SpriteTrim, TrimmedQuadsDrawTheWholeQuadsPicture) {
   Renderer r(RendererDesc{.offscreen = true});
   std::vector<Image> sprites;
   for (const char* name : {"blob", "glow", "spark", "flare", "smoke", "shield"})
-    sprites.push_back(load_sprite(std::string(ARCFIRE_SOURCE_DIR) + "/assets/textures/sprite_" + name + ".png"));
+    sprites.push_back(load_sprite(arc::data_root() + "/assets/textures/sprite_" + name + ".png"));
   r.set_sprites(sprites);
   RenderView v = test::dark_view();
   for (int i = 0; i < 90; ++i) {
@@ -248,7 +249,7 @@ TEST(SpriteTrim, TrimmedBoxesHoldEveryLitPixel) {
   REQUIRE_CONTEXT();
   std::vector<Image> sprites;
   for (const char* name : {"blob", "glow", "spark", "flare", "smoke", "shield"})
-    sprites.push_back(load_sprite(std::string(ARCFIRE_SOURCE_DIR) + "/assets/textures/sprite_" + name + ".png"));
+    sprites.push_back(load_sprite(arc::data_root() + "/assets/textures/sprite_" + name + ".png"));
   Renderer r(RendererDesc{.offscreen = true});
   r.set_sprites(sprites);
   RenderView v = test::dark_view();

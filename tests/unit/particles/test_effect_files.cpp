@@ -5,6 +5,7 @@
 
 #include "core/error.h"
 #include "particles/effect_library.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
@@ -116,7 +117,7 @@ TEST(EffectFiles, ScreenPriorityIsLowNormalOrHigh) {
   expect_error(with("\"sprite\": \"spark\",", "\"sprite\": \"spark\", \"screen_priority\": \"urgent\","), "\"urgent\"",
                "\"low\", \"normal\"");
   EffectLibrary lib;
-  lib.load_directory(ARCFIRE_SOURCE_DIR "/assets/effects");
+  lib.load_directory(arc::data_root() + "/assets/effects");
   EXPECT_EQ(lib.get("lightning_beam").clusters[0].screen_priority, ScreenPriority::High);
   EXPECT_EQ(lib.get("hull_sparks").clusters[0].screen_priority, ScreenPriority::Low);
   EXPECT_EQ(lib.get("shield_sphere").clusters[0].screen_priority, ScreenPriority::Normal);

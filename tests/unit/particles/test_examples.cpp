@@ -1,7 +1,7 @@
 // The usage examples of the particle headers' banners, as tests: each TEST body holds its
 // banner's example line for line (HeaderExamples.MatchTheirTests in tests/unit/core checks
 // that), so an example that stops compiling or working fails here. Also the drawn-owner
-// placement collect() offers the renderer (issue 11, item 7).
+// placement collect() offers the renderer.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,11 +9,12 @@
 
 #include "particles/effect_library.h"
 #include "particles/particle_world.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
 
-const std::string kRoot = ARCFIRE_SOURCE_DIR;
+const std::string kRoot = arc::data_root();
 
 glm::dvec3 mean_position(const std::vector<ParticleInstance>& ps, uint32_t cluster) {
   glm::dvec3 sum(0.0);

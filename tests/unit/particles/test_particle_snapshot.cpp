@@ -15,6 +15,7 @@
 #include "particles/particle_world.h"
 #include "core/snapshot_io.h"
 #include "particles/world_state.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
@@ -23,7 +24,7 @@ namespace {
 const EffectLibrary& effects() {
   static EffectLibrary lib = [] {
     EffectLibrary l;
-    l.load_directory(std::string(ARCFIRE_SOURCE_DIR) + "/assets/effects");
+    l.load_directory(arc::data_root() + "/assets/effects");
     return l;
   }();
   return lib;

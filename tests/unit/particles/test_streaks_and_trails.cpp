@@ -1,5 +1,5 @@
 // Velocity billboards (sparks stretched along their motion) and trails emitted by distance
-// travelled ("spacing"): issue 12, item 8.
+// travelled ("spacing").
 #include <gtest/gtest.h>
 
 #include <algorithm>

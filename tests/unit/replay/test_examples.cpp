@@ -7,13 +7,14 @@
 #include <vector>
 
 #include "replay/script.h"
+#include "core/data_root.h"
 
 namespace arc::replay {
 namespace {
 
 TEST(ScriptExample, LoadWalkWrite) {
   const std::filesystem::path cwd = std::filesystem::current_path();
-  std::filesystem::current_path(ARCFIRE_SOURCE_DIR);
+  std::filesystem::current_path(arc::build_source_tree());
   std::vector<uint64_t> ticks;
 
   Script s = load_script("tests/replays/range_course.replay");  // or parse_script(text, path)

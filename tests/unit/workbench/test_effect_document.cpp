@@ -8,6 +8,7 @@
 
 #include "game/workbench/effect_document.h"
 #include "tests/unit/workbench/workbench_files.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
@@ -134,7 +135,7 @@ TEST(EffectDocument, ADragIsOneUndoStep) {
 
 TEST(EffectDocument, SavingAnUntouchedFileWritesTheSameBytesForEveryEffect) {
   ScratchDir dir("untouched");
-  for (const auto& e : std::filesystem::directory_iterator(std::string(ARCFIRE_SOURCE_DIR) + "/assets/effects")) {
+  for (const auto& e : std::filesystem::directory_iterator(arc::data_root() + "/assets/effects")) {
     if (e.path().extension() != ".json") continue;
     const std::string path = dir.copy(e.path().stem().string());
     const std::string before = ScratchDir::read(path);

@@ -10,6 +10,7 @@
 
 #include "game/workbench/effect_document.h"
 #include "tests/unit/workbench/workbench_files.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
@@ -183,7 +184,7 @@ TEST(EffectSchema, KeysApplyOnlyWhereTheyHaveAnEffect) {
 
 // Every key the game's effect files use is in the schema, and applies where it is used.
 TEST(EffectSchema, CoversEveryKeyOfTheGamesEffects) {
-  for (const auto& e : std::filesystem::directory_iterator(std::string(ARCFIRE_SOURCE_DIR) + "/assets/effects")) {
+  for (const auto& e : std::filesystem::directory_iterator(arc::data_root() + "/assets/effects")) {
     if (e.path().extension() != ".json") continue;
     const json j = json::parse(test::ScratchDir::read(e.path().string()), nullptr, true, true);
     for (const auto& [k, v] : j.items()) EXPECT_TRUE(effect_field_at("/" + k)) << e.path() << " " << k;

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "game/workbench/effect_timeline.h"
+#include "core/data_root.h"
 
 namespace arc {
 namespace {
@@ -17,7 +18,7 @@ ParticleCamera stage_camera() {
 
 std::shared_ptr<const EffectLibrary> game_effects() {
   auto fx = std::make_shared<EffectLibrary>();
-  fx->load_directory(std::string(ARCFIRE_SOURCE_DIR) + "/assets/effects");
+  fx->load_directory(arc::data_root() + "/assets/effects");
   return fx;
 }
 

@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include "core/data_root.h"
 
 namespace arc::test {
 
@@ -21,7 +22,7 @@ class ScratchDir {
     return path;
   }
   std::string copy(const std::string& effect) const {
-    return write(effect + ".json", read(std::string(ARCFIRE_SOURCE_DIR) + "/assets/effects/" + effect + ".json"));
+    return write(effect + ".json", read(arc::data_root() + "/assets/effects/" + effect + ".json"));
   }
   static std::string read(const std::string& path) {
     std::ifstream in(path, std::ios::binary);

@@ -1,0 +1,176 @@
+// The aim cues: the crosshair's beam ring, the target's brackets, missile cue, plasma lead and
+// the off-screen arrow.
+#include "game/render/hud_aim.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+#include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include "game/render/hud_combat.h"
+#include "game/render/hud_draw.h"
+#include "game/sim/beams.h"
+#include "game/sim/geometry.h"
+#include "game/sim/world.h"
+
+namespace arc {
+namespace {
+
+constexpr double kTwoPi = 6.283185307179586;
+constexpr double kBeamRingRadius = 20.0;
+
+void centred_text(HudLayer& h, double cx, double y, double scale, const glm::vec4& c, const std::string& s) {
+  text(h, cx - 0.5 * kGlyphAdvance * scale * double(s.size()), y, scale, c, s);
+}
+
+// A circle of `segments` strokes; `every` > 1 draws only every such stroke (a broken circle).
+void circle(HudLayer& h, glm::dvec2 c, double r, const glm::vec4& col, float width, int segments, int every = 1) {
+  for (int i = 0; i < segments; i += every) {
+    const double a0 = kTwoPi * i / segments, a1 = kTwoPi * (i + 1) / segments;
+    line(h, c.x + r * std::cos(a0), c.y + r * std::sin(a0), c.x + r * std::cos(a1), c.y + r * std::sin(a1), col, width);
+  }
+}
+
+void crosshair(const World& w, const Ship& me, const Projector& pr, double alpha, double canvas_w, double canvas_h,
+               HudLayer& h) {
+  glm::dvec2 c(canvas_w * 0.5, canvas_h * 0.5);
+  pr.project(crosshair_point(me, alpha), c);
+  line(h, c.x - 14, c.y, c.x - 5, c.y, kHudGreen);
+  line(h, c.x + 5, c.y, c.x + 14, c.y, kHudGreen);
+  line(h, c.x, c.y - 14, c.x, c.y - 5, kHudGreen);
+  line(h, c.x, c.y + 5, c.x, c.y + 14, kHudGreen);
+  if (beam_would_hit(w, me)) {
+    circle(h, c, kBeamRingRadius, kHudGreen, 2.5f, 32);
+    // On the left: the target's own labels stand right of and under it.
+    text(h, c.x - kBeamRingRadius - 12.0 - 4 * kGlyphAdvance, c.y - 6.0, 1.0, kHudGreen, "BEAM");
+  } else {
+    circle(h, c, kBeamRingRadius, faded(kHudGreen, 0.3), 1.0f, 32);
+  }
+}
+
+// The missile cue around the target at `px` (brackets' half-size r): a circle, whole when a
+// missile launched now reaches the target, broken otherwise, and its label.
+void missile_cue(HudLayer& h, glm::dvec2 px, double r, bool ready) {
+  const double radius = r + 10.0;
+  const glm::vec4 col = ready ? kHudYellow : faded(kHudYellow, 0.55);
+  circle(h, px, radius, col, ready ? 2.5f : 1.5f, 32, ready ? 1 : 2);
+  text(h, px.x + radius + 5.0, px.y - 6.0, 1.0, col, "MSL");
+}
+
+// Where plasma bolts fired now meet the target: the diamond and its label.
+void plasma_lead(HudLayer& h, const Ship& me, const Ship& t, const glm::dvec3& drawn, const Projector& pr) {
+  const double speed = me.cls->plasma.speed;
+  const glm::dvec3 rel = t.position - me.position, rv = t.velocity - me.velocity;
+  double time = std::sqrt(glm::dot(rel, rel)) / speed;
+  for (int i = 0; i < 2; ++i) time = std::sqrt(glm::dot(rel + rv * time, rel + rv * time)) / speed;
+  glm::dvec2 lp;
+  if (!pr.project(drawn + rv * time, lp)) return;
+  const double d = 7;
+  line(h, lp.x - d, lp.y, lp.x, lp.y - d, kHudYellow);
+  line(h, lp.x, lp.y - d, lp.x + d, lp.y, kHudYellow);
+  line(h, lp.x + d, lp.y, lp.x, lp.y + d, kHudYellow);
+  line(h, lp.x, lp.y + d, lp.x - d, lp.y, kHudYellow);
+  text(h, lp.x + d + 3.0, lp.y - 6.0, 1.0, kHudYellow, "PLS");
+}
+
+// Below the brackets: the distance and the target's shield and hull as two thin bars.
+void bracket_readout(HudLayer& h, const Ship& t, glm::dvec2 px, double r, double dist, const glm::vec4& col) {
+  const double top = px.y + std::max(r, 14.0) + 6.0, bar_w = std::clamp(2.0 * r, 28.0, 60.0);
+  const double x = px.x - bar_w * 0.5;
+  const double shield = t.cls->shield > 0 ? std::clamp(t.shield / t.cls->shield, 0.0, 1.0) : 0.0;
+  const double hull = std::clamp(t.hull / t.cls->hull, 0.0, 1.0);
+  quad(h, x, top, bar_w, 3.0, kHudBack);
+  quad(h, x, top, bar_w * shield, 3.0, kHudBlue);
+  quad(h, x, top + 4.0, bar_w, 3.0, kHudBack);
+  quad(h, x, top + 4.0, bar_w * hull, 3.0, col);
+  centred_text(h, px.x, top + 10.0, 1.0, faded(kHudWhite, 0.8), fmt("%.0f m", dist));
+}
+
+// Where the off-screen arrow toward `dir` (from the screen centre) points from: where that ray
+// leaves `area`, the part of the screen between the HUD's panels.
+glm::dvec2 offscreen_arrow_tip(glm::dvec2 dir, double canvas_w, double canvas_h, const HudRect& area) {
+  const glm::dvec2 c(std::clamp(canvas_w * 0.5, area.x, area.x + area.w),
+                     std::clamp(canvas_h * 0.5, area.y, area.y + area.h));
+  double t = 1e30;
+  if (dir.x > 1e-9) t = std::min(t, (area.x + area.w - c.x) / dir.x);
+  if (dir.x < -1e-9) t = std::min(t, (area.x - c.x) / dir.x);
+  if (dir.y > 1e-9) t = std::min(t, (area.y + area.h - c.y) / dir.y);
+  if (dir.y < -1e-9) t = std::min(t, (area.y - c.y) / dir.y);
+  return c + dir * std::max(t, 0.0);
+}
+
+void offscreen_arrow(HudLayer& h, const Projector& pr, const glm::dvec3& at, double dist, double canvas_w,
+                     double canvas_h, const HudRect& area, const glm::vec4& col) {
+  const glm::dvec3 v = pr.to_view(at);
+  glm::dvec2 dir(v.x, -v.y);
+  const double len = std::sqrt(dir.x * dir.x + dir.y * dir.y);
+  dir = len > 1e-9 ? dir / len : glm::dvec2(0, 1);
+  const glm::dvec2 tip = offscreen_arrow_tip(dir, canvas_w, canvas_h, area);
+  const glm::dvec2 side(-dir.y, dir.x);
+  const glm::dvec2 b0 = tip - dir * 18.0 + side * 10.0, b1 = tip - dir * 18.0 - side * 10.0;
+  line(h, tip.x, tip.y, b0.x, b0.y, col, 3.0f);
+  line(h, tip.x, tip.y, b1.x, b1.y, col, 3.0f);
+  line(h, b0.x, b0.y, b1.x, b1.y, col, 3.0f);
+  // The distance just inside the arrow's base, kept within the area.
+  const std::string label = fmt("%.0f m", dist);
+  const double half_w = 0.5 * kGlyphAdvance * double(label.size());
+  const glm::dvec2 at_text = tip - dir * (26.0 + std::fabs(dir.x) * half_w + std::fabs(dir.y) * 9.0);
+  const double cx = std::clamp(at_text.x, area.x + half_w, std::max(area.x + half_w, area.x + area.w - half_w));
+  const double y = std::clamp(at_text.y - 6.0, area.y, std::max(area.y, area.y + area.h - 13.0));
+  centred_text(h, cx, y, 1.0, col, label);
+}
+
+}  // namespace
+
+bool beam_would_hit(const World& w, const Ship& me) {
+  if (!me.alive) return false;
+  const glm::dvec3 aim = forward_of(me.orientation);
+  for (const glm::dvec3& mount : me.cls->beam.mounts) {
+    const glm::dvec3 origin = me.position + me.orientation * mount;
+    const BeamHit hit = trace_beam(w, me.id, {origin, origin + aim * me.cls->beam.range});
+    if (hit.ship && w.hostile(me, w.ship(hit.ship))) return true;
+  }
+  return false;
+}
+
+bool missile_ready(const Ship& me, const Ship& t) {
+  const ProjectileWeaponDef& m = me.cls->missile;
+  if (!m.present) return false;
+  const glm::dvec3 rel = t.position - me.position;
+  const double dist = glm::length(rel);
+  if (dist > m.speed * m.lifetime) return false;
+  if (dist < 1e-9) return true;
+  const double off_nose = std::acos(std::clamp(glm::dot(rel / dist, forward_of(me.orientation)), -1.0, 1.0));
+  return off_nose <= std::min(m.turn_rate * kMissileConeSeconds, 180.0) * kDeg;
+}
+
+void layout_aim_cues(const World& w, const Ship& me, const Projector& pr, double alpha, double canvas_w,
+                     double canvas_h, const HudRect& arrow_area, HudLayer& h) {
+  if (w.paused) return;  // the pause menu stands in the middle of the screen
+  crosshair(w, me, pr, alpha, canvas_w, canvas_h, h);
+  if (!me.target || !w.ship(me.target).alive) return;
+  const Ship& t = w.ship(me.target);
+  const glm::dvec3 tp = lerp_pos(t.prev_position, t.position, alpha);
+  const glm::vec4 col = w.hostile(me, t) ? kHudRed : kHudBlue;
+  const double dist = glm::length(t.position - me.position);
+  glm::dvec2 px;
+  double depth = 0;
+  const bool in_front = pr.project(tp, px, &depth);
+  if (!(in_front && px.x >= 0 && px.x <= canvas_w && px.y >= 0 && px.y <= canvas_h)) {
+    offscreen_arrow(h, pr, tp, dist, canvas_w, canvas_h, arrow_area, col);
+    return;
+  }
+  const double r = std::max(t.cls->shield_radius * pr.focal / depth, 14.0);
+  const bool in_range = dist <= me.cls->beam.range;
+  brackets(h, px, r, col, in_range ? 3.0f : 2.0f);
+  layout_range_cue(h, px, r, in_range, col);
+  bracket_readout(h, t, px, r, dist, col);
+  if (!w.hostile(me, t)) return;
+  if (me.secondary == SecondaryWeapon::Plasma && me.cls->plasma.present)
+    plasma_lead(h, me, t, tp, pr);
+  else if (me.secondary == SecondaryWeapon::Missile && me.cls->missile.present)
+    missile_cue(h, px, r, missile_ready(me, t));
+}
+
+}  // namespace arc

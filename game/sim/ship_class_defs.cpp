@@ -1,0 +1,85 @@
+// game/sim/ship_class_defs.cpp — ship classes and their weapons from assets/ships/*.json.
+#include "game/sim/def_parsing.h"
+#include "game/sim/defs.h"
+
+namespace arc {
+using namespace defs_internal;
+
+namespace {
+
+ProjectileWeaponDef projectile_weapon(JsonObject& o, bool homing) {
+  ProjectileWeaponDef w;
+  w.present = true;
+  w.hardpoints = points(o, "hardpoints", 100.0);
+  if (w.hardpoints.empty()) o.fail_key("hardpoints", "'hardpoints' must list at least one [x, y, z]");
+  w.speed = o.number("speed", homing ? 220.0 : 450.0, 1.0, 5000.0);
+  w.damage = o.number("damage", homing ? 45.0 : 18.0, 0.0, kHuge);
+  w.energy = o.number("energy", homing ? 15.0 : 6.0, 0.0, kHuge);
+  w.cooldown = o.number("cooldown", homing ? 2.0 : 0.25, 1.0 / 240.0, 600.0);
+  w.lifetime = o.number("lifetime", homing ? 8.0 : 3.0, 0.05, 600.0);
+  w.turn_rate = homing ? o.number("turn_rate", 120.0, 0.0, 3600.0) : 0.0;
+  w.hit_radius = o.number("hit_radius", 1.0, 0.0, 1000.0);
+  o.finish();
+  return w;
+}
+
+ShipClassDef parse_ship_class_doc(const std::shared_ptr<const JsonDoc>& doc, const std::string& name) {
+  JsonObject r = root_of(doc);
+  ShipClassDef c;
+  c.name = name;
+  c.path = doc->path();
+  c.model = r.require_string("model");
+  c.mass = r.require_number("mass", 1.0, 1.0e9);
+  c.thrust = r.require_number("thrust", 0.0, 1.0e12);
+  c.strafe_thrust = r.number("strafe_thrust", c.thrust * 0.5, 0.0, 1.0e12);
+  glm::dvec3 turn = r.vec3("turn_rates", glm::dvec3(90.0, 90.0, 120.0), 0.0, 3600.0);
+  c.turn_rate[0] = turn.x;
+  c.turn_rate[1] = turn.y;
+  c.turn_rate[2] = turn.z;
+  c.turn_response = r.number("turn_response", 6.0, 0.1, 100.0);
+  c.max_speed = r.require_number("max_speed", 1.0, 1.0e5);
+  c.reverse_fraction = r.number("reverse_fraction", 0.3, 0.0, 1.0);
+  c.afterburner_speed = r.number("afterburner_speed", 1.6, 1.0, 10.0);
+  c.afterburner_energy = r.number("afterburner_energy", 20.0, 0.0, kHuge);
+  c.hull = r.require_number("hull", 1.0, kHuge);
+  c.shield = r.number("shield", 0.0, 0.0, kHuge);
+  c.shield_regen = r.number("shield_regen", 10.0, 0.0, kHuge);
+  c.shield_regen_delay = r.number("shield_regen_delay", 3.0, 0.0, 3600.0);
+  c.energy = r.number("energy", 100.0, 0.0, kHuge);
+  c.energy_regen = r.number("energy_regen", 15.0, 0.0, kHuge);
+  c.collision_radius = r.require_number("collision_radius", 0.1, 1000.0);
+  c.shield_radius = r.number("shield_radius", c.collision_radius * 1.3, 0.1, 1000.0);
+  if (c.shield_radius < c.collision_radius)
+    r.fail_key("shield_radius", "'shield_radius' must be at least 'collision_radius' (" +
+                                    std::to_string(c.collision_radius) + ")");
+  JsonObject beam = r.require_object("beam");
+  c.beam.mounts = points(beam, "mounts", 100.0);
+  if (c.beam.mounts.empty()) beam.fail_key("mounts", "'mounts' must list at least one [x, y, z]");
+  c.beam.range = beam.number("range", 600.0, 1.0, 1.0e5);
+  c.beam.damage_per_second = beam.number("damage_per_second", 40.0, 0.0, kHuge);
+  c.beam.energy_per_second = beam.number("energy_per_second", 25.0, 0.0, kHuge);
+  beam.finish();
+  if (auto m = r.get("missile")) {
+    JsonObject o = m->object();
+    c.missile = projectile_weapon(o, true);
+  }
+  if (auto p = r.get("plasma")) {
+    JsonObject o = p->object();
+    c.plasma = projectile_weapon(o, false);
+  }
+  c.exhausts = points(r, "exhausts", 100.0);
+  r.finish();
+  return c;
+}
+
+}  // namespace
+
+ShipClassDef load_ship_class(const std::string& path, const std::string& name) {
+  return parse_ship_class_doc(JsonDoc::load_file(path), name);
+}
+
+ShipClassDef parse_ship_class(const std::string& text, const std::string& path, const std::string& name) {
+  return parse_ship_class_doc(JsonDoc::parse(text, path), name);
+}
+
+}  // namespace arc

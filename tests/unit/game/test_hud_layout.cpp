@@ -1,0 +1,78 @@
+// tests/unit/game/test_hud_layout.cpp — the HUD's panels at every window size from 640x360 to
+// 3840x2160: none overlaps another and none leaves the screen (game/render/hud_layout.h).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "game/render/hud_layout.h"
+#include "game/render/render_view_builder.h"
+#include "game/sim/world.h"
+#include "test_helpers.h"
+
+namespace arc {
+namespace {
+
+// The firing range with every panel showing: a target, a kill in the feed, the longest
+// objective of the shipped levels, a notice and a reload error.
+Game busy_game() {
+  const std::string level = test::write_level(
+      "hud_layout.json",
+      test::level_text(R"({ "name": "Player", "class": "viper", "team": "blue", "player": true },
+        { "name": "Lancer-2", "class": "warden", "team": "red", "ai": "none", "position": [40, 10, -300] },
+        { "name": "Drone", "class": "dart", "team": "red", "ai": "none", "position": [-200, 0, -500] })"));
+  Game g = Game::load_level(level, test::options());
+  g.world_mut().level.objective = "Destroy all hostile ships before they reach the relay station";
+  g.step(InputFrame{}, {Command::TargetNearest});
+  World& w = g.world_mut();
+  w.ships[2].hull = -1;
+  w.ships[2].last_attacker = ShipId::from_index(0);
+  g.step(InputFrame{});
+  return g;
+}
+
+HudState busy_state() {
+  HudState s;
+  s.notice = "Recording stopped: replays/2026-11-28_12-00-00.replay";
+  s.error_banner = "assets/ships/viper.json:20:14: beam range must be positive (reload kept the old values)";
+  return s;
+}
+
+std::string box_text(const HudPanelBox& p) {
+  return p.name + " [" + std::to_string(int(p.box.x0)) + "," + std::to_string(int(p.box.y0)) + " - " +
+         std::to_string(int(p.box.x1)) + "," + std::to_string(int(p.box.y1)) + "]";
+}
+
+TEST(HudLayout, PanelsNeitherOverlapNorLeaveTheScreenAtEverySize) {
+  Game g = busy_game();
+  const World& w = g.world();
+  ASSERT_TRUE(w.ships[0].target);
+  for (auto [width, height] : {std::pair{640, 360}, {1280, 720}, {1920, 1080}, {3840, 2160}}) {
+    RenderView v;
+    build_render_view(w, {}, 1.0, CameraSettings{}, busy_state(), width, height, v);
+    std::vector<HudPanelBox> panels;
+    layout_hud(w, v.camera, busy_state(), 1.0, width, height, v.hud, &panels);
+    std::vector<std::string> names;
+    for (const HudPanelBox& p : panels) names.push_back(p.name);
+    for (const char* want : {"objective", "kill feed", "own bars", "weapon", "target panel", "radar", "notice",
+                             "error banner"})
+      EXPECT_NE(std::find(names.begin(), names.end(), want), names.end()) << want << " at " << width << "x" << height;
+    for (const HudPanelBox& p : panels)
+      if (p.name == "radar") EXPECT_GE(p.box.y1 - p.box.y0, 0.15 * height) << "radar at " << width << "x" << height;
+    for (size_t i = 0; i < panels.size(); ++i) {
+      const HudBox& a = panels[i].box;
+      EXPECT_TRUE(a.x0 >= 0 && a.y0 >= 0 && a.x1 <= width && a.y1 <= height)
+          << box_text(panels[i]) << " leaves the " << width << "x" << height << " screen";
+      for (size_t j = i + 1; j < panels.size(); ++j) {
+        const HudBox& b = panels[j].box;
+        const bool overlap = a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
+        EXPECT_FALSE(overlap) << box_text(panels[i]) << " overlaps " << box_text(panels[j]) << " at " << width << "x"
+                              << height;
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace arc
