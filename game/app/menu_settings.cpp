@@ -94,7 +94,6 @@ std::vector<Menu::Item> Menu::settings_items() const {
   }
 }
 
-// Long: one label per settings row, in a single switch so the pages read as a table.
 std::string Menu::settings_label(Item item, int index) const {
   const UserSettings& s = files_.settings;
   const std::string asks = confirm_ == index ? "  (Enter again)" : "";
@@ -164,7 +163,7 @@ void Menu::fill_settings_page(MenuPage& p) const {
       break;
     case MenuScreen::Advanced:
       p.title = "ADVANCED";
-      p.subtitle = "raw settings for developers: quality preset " + files_.settings.quality + "; * marks your own values";
+      p.subtitle = "raw settings for developers (preset " + files_.settings.quality + "; * marks yours)";
       p.hint = values;
       scrolled();
       if (selection_ == 0 && confirm_ != 0 && p.message.empty())

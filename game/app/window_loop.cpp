@@ -118,9 +118,10 @@ void WindowSession::update(double frame_seconds) {
   hud_.fps = notices_.fps();
 }
 
-// The pause screen follows the simulation's pause, which a command sets at the next tick.
+// The pause screen follows the simulation's pause, which a command sets at the next tick. The
+// developer panel has the keys while it is open: the pause screen waits until it closes.
 void WindowSession::sync_pause_screen() {
-  if (game_->paused()) menu_->pause(pause_state());
+  if (game_->paused() && !panel_->open()) menu_->pause(pause_state());
   else menu_->close_pause();
 }
 
