@@ -13,7 +13,6 @@
 
 namespace arc {
 
-
 namespace {
 
 std::string clock_text(double seconds) {
