@@ -57,11 +57,12 @@ const PresetCost* preset_cost(const std::string& preset) {
   return nullptr;
 }
 
-// "heavy here", or both classes when the machine is not known.
+// "heavy here", or the class on either kind of machine when this one is not known.
 std::string cost_label(const std::string& preset, const std::string& machine) {
   const PresetCost* c = preset_cost(preset);
   if (!c) return "not rated";
   if (!machine.empty()) return std::string(software_rasteriser(machine) ? c->software : c->gpu) + " here";
+  if (std::string(c->software) == c->gpu) return std::string(c->software) + " anywhere";
   return std::string(c->software) + " on software, " + c->gpu + " on a GPU";
 }
 

@@ -200,6 +200,9 @@ TEST(Menu, GraphicsPageRatesThePresetForThisMachine) {
   EXPECT_TRUE(has_line(m.page(), "< medium >  moderate here\n"));
   m.set_machine("");
   EXPECT_TRUE(has_line(m.page(), "< medium >  heavy on software, moderate on a GPU\n"));
+  run(m, "left");
+  EXPECT_TRUE(has_line(m.page(), "< default >  light anywhere\n"));
+  run(m, "right");
   run(m, "down right");  // resolution scale over medium's 1.0
   EXPECT_EQ(m.settings().render.at("render.scale"), "1.25");
   EXPECT_TRUE(has_line(m.page(), "> Resolution scale: < 1.25 >"));
