@@ -119,6 +119,7 @@ void define_options(CLI::App& app, AppOptions& o, CommandLineText& t) {
   app.add_flag("--fullscreen", o.fullscreen, "start in fullscreen (F11 or Alt+Enter toggles)");
   app.add_flag("--no-vsync", t.no_vsync, "do not wait for vertical sync");
   app.add_flag("--fps", o.show_fps, "show the FPS counter (F3 toggles)");
+  app.add_flag("--dev", o.dev, "F1 opens the developer panel (else only with Settings > Advanced > Developer panel)");
   app.add_option("--frame-times", o.frame_times_path, "window: write each frame's time to this CSV file and print the percentiles at exit");
   app.add_option("--workbench", o.workbench_effect,
                  "open the effect workbench on an effect file (default: the first in assets/effects)")

@@ -42,6 +42,7 @@ struct AppOptions {
   bool fullscreen = false;
   bool vsync = true;
   bool show_fps = false;
+  bool dev = false;         // --dev: F1 opens the developer panel whatever the player's settings say
   Settings settings = Settings::defaults();
   GameOptions game;
 };

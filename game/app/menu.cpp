@@ -8,23 +8,12 @@
 
 #include "core/error.h"
 #include "game/app/key_remap.h"
+#include "game/app/menu_items.h"
 #include "game/sim/world.h"
 
 namespace arc {
 
-enum class Menu::Item {
-  Play, Effects, Settings, Quit,                                   // main
-  Mission, Effect, Difficulty, Launch, Back,                       // lists and briefing
-  Quality, RenderSettings, Sensitivity, InvertY, Deadzone, Fov,     // settings
-  Fullscreen, Vsync, RenderKey, ResetRender,
-  Controls, ResetProgress, Action, ResetKeys,                      // settings, controls
-  Retry, Next, ToMenu,                                             // results
-  Resume, Restart, PauseDifficulty, Sound, Volume, MainMenu        // pause (and Quit)
-};
-
 namespace {
-
-constexpr int kControlRows = 13;  // rows of the controls and render lists on screen at once
 
 std::string clock_text(double seconds) {
   char buf[32];
@@ -40,11 +29,6 @@ std::string number_text(const char* format, double v) {
 }
 
 std::string percent(double share) { return number_text("%.0f %%", share * 100.0); }
-std::string on_off(bool v) { return v ? "on" : "off"; }
-
-double stepped(double v, int step, double by, double lo, double hi) {
-  return std::clamp(std::round((v + step * by) / by) * by, lo, hi);
-}
 
 std::string result_text(const MissionResult& r) {
   return std::string(r.victory ? "won in " : "lost after ") + clock_text(r.seconds) + ", " + std::to_string(r.kills) +
@@ -74,8 +58,11 @@ const char* menu_screen_name(MenuScreen s) {
     case MenuScreen::Effects: return "effects";
     case MenuScreen::Briefing: return "briefing";
     case MenuScreen::Settings: return "settings";
-    case MenuScreen::Render: return "render";
+    case MenuScreen::Graphics: return "graphics";
+    case MenuScreen::Sound: return "sound";
     case MenuScreen::Controls: return "controls";
+    case MenuScreen::Keys: return "keys";
+    case MenuScreen::Advanced: return "advanced";
     case MenuScreen::Results: return "results";
     case MenuScreen::Pause: return "pause";
     case MenuScreen::Closed: return "closed";
@@ -132,20 +119,11 @@ std::vector<Menu::Item> Menu::items() const {
     }
     case MenuScreen::Briefing: return {Item::Launch, Item::Difficulty, Item::Back};
     case MenuScreen::Settings:
-      return {Item::Quality,    Item::RenderSettings, Item::Sensitivity, Item::InvertY,       Item::Deadzone, Item::Fov,
-              Item::Fullscreen, Item::Vsync,          Item::Controls,    Item::ResetProgress, Item::Back};
-    case MenuScreen::Render: {
-      std::vector<Item> v(effective_.all().size(), Item::RenderKey);
-      v.push_back(Item::ResetRender);
-      v.push_back(Item::Back);
-      return v;
-    }
-    case MenuScreen::Controls: {
-      std::vector<Item> v(remap_actions().size(), Item::Action);
-      v.push_back(Item::ResetKeys);
-      v.push_back(Item::Back);
-      return v;
-    }
+    case MenuScreen::Graphics:
+    case MenuScreen::Sound:
+    case MenuScreen::Controls:
+    case MenuScreen::Keys:
+    case MenuScreen::Advanced: return settings_items();
     case MenuScreen::Results: {
       std::vector<Item> v{Item::Retry};
       if (next_mission(catalog_, chosen_)) v.push_back(Item::Next);
@@ -156,7 +134,7 @@ std::vector<Menu::Item> Menu::items() const {
       // After victory or defeat Retry comes first.
       std::vector<Item> v = pause_.outcome.empty() ? std::vector<Item>{Item::Resume, Item::Restart}
                                                    : std::vector<Item>{Item::Restart, Item::Resume};
-      v.insert(v.end(), {Item::PauseDifficulty, Item::Sound, Item::Volume});
+      v.insert(v.end(), {Item::PauseDifficulty, Item::PauseSound, Item::Volume});
       if (has_main_) v.push_back(Item::MainMenu);
       v.push_back(Item::Quit);
       return v;
@@ -172,7 +150,6 @@ std::string Menu::best_text(const std::string& level) const {
 }
 
 std::string Menu::item_label(Item item, int index) const {
-  const UserSettings& s = files_.settings;
   switch (item) {
     case Item::Play: return "Play";
     case Item::Effects: return "Effects";
@@ -188,36 +165,13 @@ std::string Menu::item_label(Item item, int index) const {
     case Item::Difficulty: return std::string("Difficulty: < ") + difficulty_name(difficulty_) + " >";
     case Item::Launch: return "Launch";
     case Item::Back: return "Back";
-    case Item::Quality: return "Quality preset: < " + s.quality + " >";
-    case Item::RenderSettings:
-      return "Render settings (" + std::to_string(s.render.size()) + " of yours over the preset)";
-    case Item::RenderKey: {
-      const SettingDef& d = effective_.all()[size_t(index)];
-      std::string label = d.key;
-      label.resize(std::max<size_t>(label.size() + 1, 30), ' ');
-      return label + "< " + d.value + " >" + (s.render.count(d.key) ? "  *" : "");
-    }
-    case Item::ResetRender: return "Back to the preset's values";
-    case Item::Sensitivity: return number_text("Mouse sensitivity: < %.2f > deg/px", s.mouse_sensitivity);
-    case Item::InvertY: return "Invert Y: " + on_off(s.invert_y);
-    case Item::Deadzone: return number_text("Gamepad dead zone: < %.2f >", s.pad_deadzone);
-    case Item::Fov: return number_text("Field of view: < %.0f > deg", s.fov);
-    case Item::Fullscreen: return "Fullscreen: " + on_off(s.fullscreen);
-    case Item::Vsync: return "VSync: " + on_off(s.vsync);
-    case Item::Controls: return "Controls (remap keys)";
-    case Item::ResetProgress: return confirm_reset_ ? "Reset progress: press again to confirm" : "Reset progress";
-    case Item::Action: {
-      const RemapAction& a = remap_actions()[size_t(index)];
-      std::string label = a.label;
-      label.resize(24, ' ');
-      const bool waiting = capturing_ && index == selection_;
-      return label + (waiting ? "press a key..." : key_label(bound_key(bindings_, a.id)));
-    }
-    case Item::ResetKeys: return "Reset keys to defaults";
     case Item::Retry: return "Retry";
     case Item::Next: return "Next mission: " + next_mission(catalog_, chosen_)->title;
     case Item::ToMenu: return "Menu";
-    default: return pause_label(item);
+    default: {
+      const std::string pause = pause_label(item);
+      return pause.empty() ? settings_label(item, index) : pause;
+    }
   }
 }
 
@@ -261,23 +215,11 @@ MenuPage Menu::page() const {
     case MenuScreen::Effects: p.title = "EFFECTS"; p.subtitle = "every particle effect, on its own"; break;
     case MenuScreen::Briefing: fill_briefing_page(p); break;
     case MenuScreen::Settings:
-      p.title = "SETTINGS";
-      p.hint = "Left/Right: change   Enter: toggle or open   Esc: back (saved as you go)";
-      break;
-    case MenuScreen::Render:
-      p.title = "RENDER SETTINGS";
-      p.subtitle = "quality preset " + files_.settings.quality + "; * marks your own values";
-      p.hint = "Left/Right: change   Esc: back (saved as you go)";
-      p.first = std::clamp(selection_ - kControlRows / 2, 0, std::max(0, int(p.items.size()) - kControlRows));
-      p.rows = kControlRows;
-      if (selection_ < int(effective_.all().size())) p.message = effective_.all()[size_t(selection_)].doc;
-      break;
+    case MenuScreen::Graphics:
+    case MenuScreen::Sound:
     case MenuScreen::Controls:
-      p.title = "CONTROLS";
-      p.hint = capturing_ ? "press the new key or mouse button   Esc: cancel" : "Enter: remap   Esc: back";
-      p.first = std::clamp(selection_ - kControlRows / 2, 0, std::max(0, int(p.items.size()) - kControlRows));
-      p.rows = kControlRows;
-      break;
+    case MenuScreen::Keys:
+    case MenuScreen::Advanced: fill_settings_page(p); break;
     case MenuScreen::Results: fill_results_page(p); break;
     case MenuScreen::Pause:
       p.title = pause_.outcome.empty() ? "PAUSED" : pause_.outcome;
@@ -292,7 +234,7 @@ MenuPage Menu::page() const {
 void Menu::go(MenuScreen s) {
   screen_ = s;
   selection_ = 0;
-  confirm_reset_ = false;
+  confirm_ = -1;
   capturing_ = false;
 }
 
@@ -317,11 +259,13 @@ std::vector<MenuRequest> Menu::handle(const UiInput& in) {
   switch (in.kind) {
     case UiInput::Kind::Bind: return {};
     case UiInput::Kind::Hover:
-      if (in.item >= 0 && in.item < count && in.item != selection_) selection_ = in.item, confirm_reset_ = false;
+      if (in.item < 0 || in.item >= count || in.item == selection_) return {};
+      selection_ = in.item;
+      if (confirm_ >= 0) confirm_ = -1, message_.clear();
       return {};
     case UiInput::Kind::Click:
       if (in.item < 0 || in.item >= count) return {};
-      if (in.item != selection_) confirm_reset_ = false;
+      if (in.item != selection_) confirm_ = -1;
       selection_ = in.item;
       return accept(list[size_t(selection_)], selection_);
     case UiInput::Kind::Key: break;
@@ -330,10 +274,12 @@ std::vector<MenuRequest> Menu::handle(const UiInput& in) {
     case UiKey::Up:
     case UiKey::Down:
       selection_ = (selection_ + (in.key == UiKey::Down ? 1 : -1) + count) % count;
-      confirm_reset_ = false;
+      if (confirm_ >= 0) confirm_ = -1, message_.clear();
       return {};
-    case UiKey::Left: return adjust(list[size_t(selection_)], -1);
-    case UiKey::Right: return adjust(list[size_t(selection_)], 1);
+    case UiKey::Left:
+    case UiKey::Right:
+      if (confirm_ >= 0) confirm_ = -1, message_.clear();
+      return adjust(list[size_t(selection_)], in.key == UiKey::Right ? 1 : -1);
     case UiKey::Accept: return accept(list[size_t(selection_)], selection_);
     case UiKey::Back: return back();
   }
@@ -342,7 +288,6 @@ std::vector<MenuRequest> Menu::handle(const UiInput& in) {
 
 std::vector<MenuRequest> Menu::accept(Item item, int index) {
   using K = MenuRequest::Kind;
-  UserSettings& s = files_.settings;
   switch (item) {
     case Item::Play: go(MenuScreen::Missions); return {};
     case Item::Effects: go(MenuScreen::Effects); return {};
@@ -361,32 +306,6 @@ std::vector<MenuRequest> Menu::accept(Item item, int index) {
       go(MenuScreen::Closed);
       return {{K::Launch, chosen_, difficulty_}};
     case Item::Back: return back();
-    case Item::InvertY: s.invert_y = !s.invert_y; return {{K::SaveSettings}, {K::ApplyBindings}};
-    case Item::Fullscreen: s.fullscreen = !s.fullscreen; return {{K::SaveSettings}};
-    case Item::Vsync: s.vsync = !s.vsync; return {{K::SaveSettings}};
-    case Item::Controls: go(MenuScreen::Controls); return {};
-    case Item::RenderSettings: go(MenuScreen::Render); return {};
-    case Item::ResetRender:
-      s.render.clear();
-      refresh_effective();
-      message_ = "Render settings follow the " + s.quality + " preset again";
-      return {{K::SaveSettings}};
-    case Item::ResetProgress:
-      if (!confirm_reset_) {
-        confirm_reset_ = true;
-        return {};
-      }
-      confirm_reset_ = false;
-      files_.progress = {};
-      message_ = "Progress reset: every best result is cleared";
-      return {{K::SaveProgress}};
-    case Item::Action: capturing_ = true; message_.clear(); return {};
-    case Item::ResetKeys:
-      s.keys.clear();
-      bindings_ = default_bindings_;
-      apply_user_settings(s, bindings_);
-      message_ = "Keys reset to the defaults";
-      return {{K::SaveSettings}, {K::ApplyBindings}};
     case Item::Retry:
       go(MenuScreen::Closed);
       return {{K::Launch, chosen_, difficulty_}};
@@ -399,74 +318,24 @@ std::vector<MenuRequest> Menu::accept(Item item, int index) {
     case Item::Resume:
     case Item::Restart:
     case Item::PauseDifficulty:
-    case Item::Sound:
+    case Item::PauseSound:
     case Item::Volume:
     case Item::MainMenu: return pause_accept(item);
-    default: return adjust(item, 1);  // values: Enter steps them up, like Right
+    default: return settings_accept(item);
   }
 }
 
 std::vector<MenuRequest> Menu::adjust(Item item, int step) {
   using K = MenuRequest::Kind;
-  UserSettings& s = files_.settings;
   switch (item) {
     case Item::Mission:
     case Item::Launch:
     case Item::Difficulty: difficulty_ = Difficulty((int(difficulty_) + step + 3) % 3); return {};
-    case Item::Quality: {
-      if (presets_.empty()) return {};
-      auto it = std::find(presets_.begin(), presets_.end(), s.quality);
-      const int at = it == presets_.end() ? 0 : int(it - presets_.begin()), n = int(presets_.size());
-      s.quality = presets_[size_t((at + step + n) % n)];
-      refresh_effective();
-      return {{K::SaveSettings}};
-    }
-    case Item::Sensitivity:
-      s.mouse_sensitivity = stepped(s.mouse_sensitivity, step, 0.01, 0.01, 1.0);
-      return {{K::SaveSettings}, {K::ApplyBindings}};
-    case Item::Deadzone:
-      s.pad_deadzone = stepped(s.pad_deadzone, step, 0.02, 0.0, 0.5);
-      return {{K::SaveSettings}, {K::ApplyBindings}};
-    case Item::Fov: s.fov = stepped(s.fov, step, 5.0, 40.0, 110.0); return {{K::SaveSettings}};
-    case Item::InvertY:
-    case Item::Fullscreen:
-    case Item::Vsync: return accept(item, selection_);
-    case Item::RenderKey: return adjust_render(selection_, step);
     case Item::PauseDifficulty:
       return {{K::SetDifficulty, "", Difficulty((int(pause_.next) + step + 3) % 3)}};
     case Item::Volume: return {{K::StepVolume, "", Difficulty::Normal, step}};
-    default: return {};
+    default: return settings_adjust(item, step);
   }
-}
-
-// One step of a render setting: the next choice, the flag flipped, a number by a twentieth of
-// its range (a range over a hundredfold by halves and doubles), kept as the user's own value.
-std::vector<MenuRequest> Menu::adjust_render(int index, int step) {
-  const SettingDef& d = effective_.all()[size_t(index)];
-  std::string value;
-  switch (d.kind) {
-    case SettingDef::Kind::Choice: {
-      auto it = std::find(d.choices.begin(), d.choices.end(), d.value);
-      const int n = int(d.choices.size()), at = it == d.choices.end() ? 0 : int(it - d.choices.begin());
-      value = d.choices[size_t((at + step + n) % n)];
-      break;
-    }
-    case SettingDef::Kind::Flag: value = d.value == "true" ? "false" : "true"; break;
-    case SettingDef::Kind::Number:
-    case SettingDef::Kind::Integer: {
-      const double v = std::stod(d.value);
-      const bool wide = d.min > 0 && d.max / d.min > 100;
-      const bool integer = d.kind == SettingDef::Kind::Integer;
-      const double by = integer ? std::max(1.0, std::round((d.max - d.min) / 20)) : (d.max - d.min) / 20;
-      double next = wide ? (step > 0 ? v * 2 : v / 2) : v + step * by;
-      next = std::clamp(integer ? std::round(next) : next, d.min, d.max);
-      value = d.kind == SettingDef::Kind::Integer ? std::to_string(int64_t(next)) : number_text("%.4g", next);
-      break;
-    }
-  }
-  files_.settings.render[d.key] = value;
-  refresh_effective();
-  return {{MenuRequest::Kind::SaveSettings}};
 }
 
 std::vector<MenuRequest> Menu::back() {
@@ -480,10 +349,10 @@ std::vector<MenuRequest> Menu::back() {
         if (list[i]->path == chosen_) selection_ = int(i);
       break;
     }
-    case MenuScreen::Controls: go(MenuScreen::Settings); selection_ = 8; break;
-    case MenuScreen::Render: go(MenuScreen::Settings); selection_ = 1; break;
     case MenuScreen::Main: break;
-    default: go(MenuScreen::Main); break;
+    default:
+      if (!settings_back()) go(MenuScreen::Main);
+      break;
   }
   return {};
 }
@@ -541,7 +410,7 @@ std::string Menu::pause_label(Item item) const {
     case Item::PauseDifficulty:
       return std::string("Difficulty: < ") + difficulty_name(pause_.next) + " >" +
              (pause_.next != pause_.playing ? (decided ? " (applies on retry)" : " (applies on restart)") : "");
-    case Item::Sound: return pause_.muted ? "Sound: muted (M)" : "Sound: on (M)";
+    case Item::PauseSound: return pause_.muted ? "Sound: muted (M)" : "Sound: on (M)";
     case Item::Volume: return "Volume: < " + std::to_string(int(std::lround(pause_.volume * 100))) + "% >";
     case Item::MainMenu: return "Main menu" + ends;
     default: return "";
@@ -555,7 +424,7 @@ std::vector<MenuRequest> Menu::pause_accept(Item item) {
     case Item::Resume: return {{K::Resume}};
     case Item::Restart: return {{K::Restart}};
     case Item::PauseDifficulty: return adjust(item, 1);
-    case Item::Sound: return {{K::ToggleMute}};
+    case Item::PauseSound: return {{K::ToggleMute}};
     case Item::Volume: return adjust(item, pause_.volume >= 1.0 ? -10 : 1);
     case Item::MainMenu: return {{K::MainMenu}};
     default: return {};

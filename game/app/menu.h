@@ -2,6 +2,10 @@
 // settings, key remapping, the results screen and the pause screen, as a state machine over
 // plain UI inputs.
 //
+// Settings holds Graphics, Sound, Controls (with key remapping), Advanced (every raw setting
+// and the developer panel's switch) and Reset progress. A value changes only by Left/Right;
+// Enter or a click on a value row asks first and changes it on a second Enter or click.
+//
 // No GL and no window: the window loop turns keys, mouse and gamepad into UiInputs, feeds
 // them to handle(), carries out the MenuRequests it returns (launch a level, save settings,
 // resume, quit) and draws page() with layout_menu() (game/render/menu_layout.h). Tests drive
@@ -48,7 +52,11 @@ struct UiInput {
 // the player ship's kills, damage and accuracy).
 MissionResult mission_result(const World& w);
 
-enum class MenuScreen { Main, Missions, Effects, Briefing, Settings, Render, Controls, Results, Pause, Closed };
+enum class MenuScreen {
+  Main, Missions, Effects, Briefing,
+  Settings, Graphics, Sound, Controls, Keys, Advanced,  // Settings and its pages
+  Results, Pause, Closed
+};
 const char* menu_screen_name(MenuScreen s);
 
 // What the pause screen shows of the game behind it; the window fills it while the game is
@@ -107,6 +115,9 @@ class Menu {
   // The game runs again: the pause screen closes.
   void close_pause();
   void set_message(std::string m) { message_ = std::move(m); }
+  // What draws the frames (the GL renderer's name, "" if unknown): the Graphics page rates the
+  // quality presets for it (a software rasteriser or a GPU).
+  void set_machine(std::string gl_renderer) { machine_ = std::move(gl_renderer); }
 
   const UserSettings& settings() const { return files_.settings; }
   const Progress& progress() const { return files_.progress; }
@@ -137,6 +148,18 @@ class Menu {
   Settings effective_;  // the render settings as they apply: the preset, then the user's values
   void refresh_effective();
   std::vector<MenuRequest> adjust_render(int index, int step);
+  // menu_settings.cpp: the settings screen and its pages.
+  std::vector<Item> settings_items() const;
+  std::string settings_label(Item item, int index) const;
+  void fill_settings_page(MenuPage& p) const;
+  std::string quality_note() const;
+  std::vector<MenuRequest> settings_accept(Item item);
+  std::vector<MenuRequest> settings_adjust(Item item, int step);
+  std::vector<MenuRequest> set_user_value(const std::string& key, const std::string& value);
+  std::vector<MenuRequest> step_user_number(const std::string& key, int step, double by);
+  bool settings_back();
+  std::string machine_;
+  int confirm_ = -1;  // the value row whose change waits for a second Enter (or click)
   MenuScreen screen_ = MenuScreen::Main;
   int selection_ = 0;
   Difficulty difficulty_ = Difficulty::Normal;
@@ -144,7 +167,6 @@ class Menu {
   MissionResult last_;
   bool last_is_best_ = false;
   bool capturing_ = false;
-  bool confirm_reset_ = false;
   std::string message_;
   bool has_main_ = true;
   PauseState pause_;

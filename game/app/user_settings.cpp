@@ -162,6 +162,7 @@ UserSettings parse_settings(const std::string& text, const std::string& path,
   s.fov = r.number("fov", s.fov, 30.0, 120.0);
   s.fullscreen = r.boolean("fullscreen", s.fullscreen);
   s.vsync = r.boolean("vsync", s.vsync);
+  s.developer_panel = r.boolean("developer_panel", s.developer_panel);
   parse_keys(r, s);
   parse_render(r, s);
   if (auto m = r.get("mods")) {
@@ -208,6 +209,7 @@ std::string settings_json(const UserSettings& s) {
   j["fov"] = s.fov;
   j["fullscreen"] = s.fullscreen;
   j["vsync"] = s.vsync;
+  j["developer_panel"] = s.developer_panel;
   j["keys"] = nlohmann::ordered_json::object();
   for (const auto& [id, key] : s.keys) j["keys"][id] = key;
   j["render"] = nlohmann::ordered_json::object();

@@ -2,8 +2,9 @@
 //
 // Two JSON files in user_config_dir() ($XDG_CONFIG_HOME/arcfire, default ~/.config/arcfire):
 //   settings.json  quality preset and single render settings over it, mouse sensitivity and Y
-//                  inversion, gamepad dead zone, field of view, fullscreen, vsync, and the
-//                  keys the player remapped (action → key), the mod folders to play with
+//                  inversion, gamepad dead zone, field of view, fullscreen, vsync, the
+//                  developer panel's switch, the keys the player remapped (action → key)
+//                  and the mod folders to play with
 //   progress.json  the best result per mission and difficulty
 // Both are written atomically (core/json.h write_file_atomic). A file that does not parse or
 // validate is never lost silently: load_user_files() copies it to NAME.bak, writes the defaults
@@ -39,6 +40,7 @@ struct UserSettings {
   double fov = 60.0;                // degrees, vertical, for chase and cockpit cameras
   bool fullscreen = false;
   bool vsync = true;
+  bool developer_panel = false;     // F1 opens the tweak panel in the game (always with --dev)
   std::map<std::string, std::string> keys;  // remap action id (key_remap.h) → key name
   std::map<std::string, std::string> render;  // setting key (core/settings.h) → value, over the preset
   std::vector<std::string> mods;  // mod folders laid over the data in a window (core/data_layers.h) unless --mod is given

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <epoxy/gl.h>
 
 #include "core/data_layers.h"
 #include "core/error.h"
@@ -65,6 +66,8 @@ void WindowSession::setup() {
   wd.title = "Arcfire" + (options_.level_given ? " — " + std::filesystem::path(level_).stem().string() : "");
   window_ = open_window(wd);
   renderer_ = make_renderer();
+  const GLubyte* gl_name = glGetString(GL_RENDERER);  // the Graphics page rates the presets for it
+  menu_->set_machine(gl_name ? reinterpret_cast<const char*>(gl_name) : "");
   panel_ = std::make_unique<GamePanel>(game_options_.root_dir);
   models_ = load_scene_resources(*renderer_, game_->world(), game_options_.root_dir);
   clock_.emplace(int(std::lround(1.0 / game_->tick_seconds())));
@@ -99,7 +102,9 @@ void WindowSession::update(double frame_seconds) {
   handle_actions(menu_->over_game());
   if (menu_open) update_menu();
   handle_sound_keys(menu_open);
-  if (presses_between(previous_devices_, devices_, key_code("F1")) > 0) panel_->toggle();
+  const bool f1 = presses_between(previous_devices_, devices_, key_code("F1")) > 0;
+  if (f1 && f1_toggles_panel(options_.dev, menu_->settings().developer_panel, panel_->open())) panel_->toggle();
+  if (auto c = panel_gate_.follow(panel_->open(), !menu_->over_game(), game_->paused())) pending_.push_back(*c);
   const bool capture = !game_->paused() && !menu_->open() && !panel_->open();
   if (capture != mouse_captured_) {
     window_->set_mouse_captured(capture);
@@ -117,9 +122,10 @@ void WindowSession::update(double frame_seconds) {
   hud_.fps = notices_.fps();
 }
 
-// The pause screen follows the simulation's pause, which a command sets at the next tick.
+// The pause screen follows the simulation's pause, which a command sets at the next tick. The
+// developer panel has the keys while it is open: the pause screen waits until it closes.
 void WindowSession::sync_pause_screen() {
-  if (game_->paused()) menu_->pause(pause_state());
+  if (game_->paused() && !panel_->open()) menu_->pause(pause_state());
   else menu_->close_pause();
 }
 

@@ -17,6 +17,7 @@
 #include "core/clock.h"
 #include "game/app/app_options.h"
 #include "game/app/audio_session.h"
+#include "game/app/dev_panel_gate.h"
 #include "game/app/hot_reload.h"
 #include "game/app/input_bindings.h"
 #include "game/app/menu.h"
@@ -90,6 +91,7 @@ class WindowSession {
   bool recording_started_ = false;  // --record from the menu: only the first launched mission
   std::unique_ptr<Window> window_;
   std::unique_ptr<Renderer> renderer_;
+  DevPanelGate panel_gate_;            // the panel pauses the fight while it is open
   std::unique_ptr<GamePanel> panel_;  // F1: every setting live, and the effects (game/workbench/game_panel.h)
   std::vector<ModelId> models_;  // the renderer's id of each of the level's model slots
   std::unique_ptr<Game> game_;

@@ -1,5 +1,8 @@
 // game/workbench/game_panel.h — the F1 panel of the running game (ImGui over the game window).
 //
+// For developers: F1 opens it only with --dev or the player's "developer panel" setting, and it
+// pauses the fight while open (game/app/dev_panel_gate.h).
+//
 // Two tabs: every setting `--list-settings` prints, each with the widget its kind wants over its
 // allowed range, and the effect list, where an effect opens in the workbench's field editor
 // (game/workbench/panel_fields.h) and Save writes it, so the game's hot reload restarts the

@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # menu_window.sh ARCFIRE OUT_DIR
 # The main menu in a window (under xvfb-run -a, keys and mouse fed by xdotool), as a new player
-# would use it: Settings by a mouse click, mouse sensitivity up twice, Controls, Fire beam
-# remapped to V, back and Quit. Then a second start with the same config folder: the saved
-# settings.json must hold both changes, and nothing may have been kept as a .bak.
+# would use it: Settings by a mouse click, Controls, mouse sensitivity up twice, Remap keys,
+# Fire beam remapped to V, back and Quit. Then a second start with the same config folder: the
+# saved settings.json must hold both changes, and nothing may have been kept as a .bak.
 # Exits 77 (ctest: skipped) when xvfb-run or xdotool is missing; it installs nothing.
 set -u
 arcfire="$(realpath "$1")"; out="$(realpath -m "$2")"
@@ -34,10 +34,10 @@ run_menu() {
 # Settings is the third item of the main menu; at 1280x720 its row is at y 228.
 run_menu "$out/first.log" '
   xdotool mousemove --window "$win" 640 228; sleep 0.5; xdotool click --window "$win" 1; sleep 0.5
-  key Down; key Down; key Right; key Right
-  key Down Down Down Down Down Down; key Return
+  key Down Down; key Return; key Right; key Right
+  key Down Down Down; key Return
   key Return; key v
-  key Escape; key Escape; key Down Down Down; key Return' || exit 1
+  key Escape; key Escape; key Escape; key Down Down Down; key Return' || exit 1
 settings="$XDG_CONFIG_HOME/arcfire/settings.json"
 [ -s "$settings" ] || { echo "menu_window: no $settings"; cat "$out/first.log"; exit 1; }
 grep -q '"mouse_sensitivity": 0.14' "$settings" || { echo "menu_window: sensitivity not kept"; cat "$settings"; exit 1; }

@@ -1,11 +1,13 @@
 // The menu (game/app/menu.h) driven headless by scripted UI inputs: main menu → mission select
-// → briefing with a difficulty → launch → the fight → results → next mission; settings and key
-// remapping; mouse hovering and clicking on the laid-out items; the pause screen over a game,
-// with and without the main menu. Each screen is checked as text (describe_page,
+// → briefing with a difficulty → launch → the fight → results → next mission; the settings
+// pages (graphics, sound, controls with key remapping, advanced) and their no-silent-change
+// rule; the developer panel's F1 gate; mouse hovering and clicking on the laid-out items; the
+// pause screen over a game, with and without the main menu. Each screen is checked as text (describe_page,
 // menu_snapshots.h), the snapshot of what it shows.
 #include <filesystem>
 #include <gtest/gtest.h>
 
+#include "game/app/dev_panel_gate.h"
 #include "game/app/key_remap.h"
 #include "game/app/menu.h"
 #include "game/app/menu_input.h"
@@ -147,20 +149,105 @@ TEST(Menu, EffectsListTheGalleryAndLaunchIt) {
   EXPECT_EQ(r[0].level, kRoot + "/levels/gallery.json");
 }
 
-TEST(Menu, SettingsChangeSaveAndRemapWithConflicts) {
+int saves(const std::vector<MenuRequest>& r) {
+  int n = 0;
+  for (const MenuRequest& q : r) n += q.kind == MenuRequest::Kind::SaveSettings ? 1 : 0;
+  return n;
+}
+
+// The settings screen leads to pages for players; the raw keys are under Advanced.
+TEST(Menu, SettingsScreenListsItsPages) {
   Menu m = make_menu();
   run(m, "down down accept");
   ASSERT_EQ(m.screen(), MenuScreen::Settings);
-  EXPECT_TRUE(has_line(m.page(), "> Quality preset: < default >"));
-  std::vector<MenuRequest> r = run(m, "right down down right right right down accept");
+  EXPECT_EQ(describe_page(m.page()),
+            "title: SETTINGS\n> Graphics\n  Sound\n  Controls\n"
+            "  Advanced: raw settings (0 of yours over the preset)\n  Reset progress\n  Back\n");
+  const std::vector<MenuScreen> pages = {MenuScreen::Graphics, MenuScreen::Sound, MenuScreen::Controls,
+                                         MenuScreen::Advanced};
+  for (int row = 0; row < 4; ++row) {
+    run(m, "accept");
+    EXPECT_EQ(m.screen(), pages[size_t(row)]) << row;
+    run(m, "back");
+    EXPECT_EQ(m.screen(), MenuScreen::Settings);
+    EXPECT_EQ(m.page().selection, row) << "back on the row that opened it";
+    run(m, "down");
+  }
+}
+
+// Graphics: the preset rated for the machine that draws, resolution scale, window, view.
+TEST(Menu, GraphicsPageRatesThePresetForThisMachine) {
+  Menu m = make_menu();
+  m.set_machine("llvmpipe (LLVM 15.0.7, 256 bits)");
+  run(m, "down down accept accept");
+  ASSERT_EQ(m.screen(), MenuScreen::Graphics);
+  EXPECT_EQ(describe_page(m.page()),
+            "title: GRAPHICS\n"
+            "subtitle: this machine: llvmpipe, a software rasteriser\n"
+            "> Quality preset: < default >  light here\n"
+            "  Resolution scale: < 1.00 >\n  Fullscreen: < off >\n  VSync: < on >\n  Field of view: < 60 > deg\n"
+            "  Back\n"
+            "message: default: made for a software rasteriser. Here: low light, default light, medium heavy, "
+            "high too heavy, reference far too heavy\n");
+  EXPECT_EQ(saves(run(m, "right")), 1);
   EXPECT_EQ(m.settings().quality, "medium");
+  EXPECT_TRUE(has_line(m.page(), "> Quality preset: < medium >  heavy here\n"));
+  EXPECT_TRUE(run(m, "right right right").size() == 2u) << "stops at reference";
+  EXPECT_EQ(m.settings().quality, "reference");
+  run(m, "left left left left left left");
+  EXPECT_EQ(m.settings().quality, "low") << "stops at low: Left never wraps to reference";
+  m.set_machine("NVIDIA H200/PCIe/SSE2");
+  run(m, "right right");
+  EXPECT_TRUE(has_line(m.page(), "< medium >  moderate here\n"));
+  m.set_machine("");
+  EXPECT_TRUE(has_line(m.page(), "< medium >  heavy on software, moderate on a GPU\n"));
+  run(m, "left");
+  EXPECT_TRUE(has_line(m.page(), "< default >  light anywhere\n"));
+  run(m, "right");
+  run(m, "down right");  // resolution scale over medium's 1.0
+  EXPECT_EQ(m.settings().render.at("render.scale"), "1.25");
+  EXPECT_TRUE(has_line(m.page(), "> Resolution scale: < 1.25 >"));
+  EXPECT_EQ(saves(run(m, "down right down left down left")), 3);
+  EXPECT_TRUE(m.settings().fullscreen);
+  EXPECT_FALSE(m.settings().vsync);
+  EXPECT_DOUBLE_EQ(m.settings().fov, 55);
+}
+
+// Sound: the master and effects volumes and mute, kept as the player's own audio.* values.
+// There is no music to set.
+TEST(Menu, SoundPageSetsTheVolumes) {
+  Menu m = make_menu();
+  run(m, "down down accept down accept");
+  ASSERT_EQ(m.screen(), MenuScreen::Sound);
+  EXPECT_EQ(describe_page(m.page()),
+            "title: SOUND\n> Master volume: < 80 % >\n  Effects volume: < 100 % >\n  Mute (M in the game): < off >\n"
+            "  Back\n");
+  EXPECT_EQ(saves(run(m, "right down left left down right")), 4);
+  EXPECT_EQ(m.settings().render.at("audio.volume"), "0.9");
+  EXPECT_EQ(m.settings().render.at("audio.effects_volume"), "0.8");
+  EXPECT_EQ(m.settings().render.at("audio.mute"), "true");
+  const Settings s = user_quality_settings(m.settings(), kRoot + "/assets/settings/quality.json");
+  EXPECT_DOUBLE_EQ(s.number("audio.volume"), 0.9);
+  EXPECT_TRUE(s.flag("audio.mute"));
+  run(m, "up up right right");
+  EXPECT_TRUE(has_line(m.page(), "> Master volume: < 100 % >")) << "no louder than full";
+}
+
+// Controls: mouse and gamepad, and the key remapping (a key another action has is swapped).
+TEST(Menu, ControlsPageAndKeyRemapping) {
+  Menu m = make_menu();
+  run(m, "down down accept down down accept");
+  ASSERT_EQ(m.screen(), MenuScreen::Controls);
+  EXPECT_EQ(describe_page(m.page()),
+            "title: CONTROLS\n> Mouse sensitivity: < 0.12 > deg/px\n  Invert Y: < off >\n"
+            "  Gamepad dead zone: < 0.12 >\n  Remap keys\n  Back\n");
+  std::vector<MenuRequest> r = run(m, "right right right down right down left");
   EXPECT_DOUBLE_EQ(m.settings().mouse_sensitivity, 0.15);
   EXPECT_TRUE(m.settings().invert_y);
-  int saves = 0;
-  for (const MenuRequest& q : r) saves += q.kind == MenuRequest::Kind::SaveSettings ? 1 : 0;
-  EXPECT_EQ(saves, 5);
-  run(m, "down down down down down accept");  // Controls
-  ASSERT_EQ(m.screen(), MenuScreen::Controls);
+  EXPECT_DOUBLE_EQ(m.settings().pad_deadzone, 0.10);
+  EXPECT_EQ(saves(r), 5);
+  run(m, "down accept");  // Remap keys
+  ASSERT_EQ(m.screen(), MenuScreen::Keys);
   EXPECT_TRUE(has_line(m.page(), "> Fire beam               MOUSE_LEFT"));
   run(m, "accept");
   EXPECT_TRUE(m.capturing());
@@ -176,18 +263,25 @@ TEST(Menu, SettingsChangeSaveAndRemapWithConflicts) {
   ASSERT_EQ(r.size(), 2u);
   EXPECT_EQ(r[1].kind, MenuRequest::Kind::ApplyBindings);
   run(m, "up accept");  // Back (the list wraps)
-  EXPECT_EQ(m.screen(), MenuScreen::Settings);
-  EXPECT_TRUE(has_line(m.page(), "> Controls (remap keys)"));
-  run(m, "accept up up accept");  // Controls, Reset keys
+  EXPECT_EQ(m.screen(), MenuScreen::Controls);
+  EXPECT_TRUE(has_line(m.page(), "> Remap keys"));
+  run(m, "accept up up accept");  // Remap keys, Reset keys
   EXPECT_TRUE(m.settings().keys.empty());
   EXPECT_EQ(bound_key(m.bindings(), "fire_primary"), key_code("MOUSE_LEFT"));
 }
 
-// Single render settings over the preset: stepped, marked as the player's, saved, reset.
-TEST(Menu, RenderSettingsOverThePreset) {
+// Advanced: the developer panel's switch, then every raw setting over the preset, stepped,
+// marked as the player's, saved, reset.
+TEST(Menu, AdvancedPageHoldsTheRawSettings) {
   Menu m = make_menu();
-  run(m, "down down accept down accept");  // Settings, Render settings
-  ASSERT_EQ(m.screen(), MenuScreen::Render);
+  run(m, "down down accept up up up accept");  // Settings, Advanced
+  ASSERT_EQ(m.screen(), MenuScreen::Advanced);
+  EXPECT_EQ(m.page().title, "ADVANCED");
+  EXPECT_NE(m.page().subtitle.find("raw settings for developers"), std::string::npos);
+  EXPECT_TRUE(has_line(m.page(), "> Developer panel (F1): < off >"));
+  EXPECT_EQ(saves(run(m, "right")), 1);
+  EXPECT_TRUE(m.settings().developer_panel);
+  run(m, "down");
   EXPECT_TRUE(has_line(m.page(), "> render.soft_edges"));
   EXPECT_FALSE(m.page().message.empty()) << "the selected setting's doc line";
   std::vector<MenuRequest> r = run(m, "right");
@@ -198,10 +292,36 @@ TEST(Menu, RenderSettingsOverThePreset) {
   EXPECT_TRUE(has_line(m.page(), "< " + chosen + " >  *"));
   EXPECT_EQ(user_quality_settings(m.settings(), kRoot + "/assets/settings/quality.json").choice("render.soft_edges"),
             chosen);
-  run(m, "up up accept");  // Back to the preset's values
+  run(m, "up up up accept");  // Back to the preset's values
   EXPECT_TRUE(m.settings().render.empty());
   run(m, "back");
-  EXPECT_TRUE(has_line(m.page(), "> Render settings (0 of yours over the preset)"));
+  EXPECT_TRUE(has_line(m.page(), "> Advanced: raw settings (0 of yours over the preset)"));
+}
+
+// No value changes by Enter or a click alone: the first asks, a second confirms, and any
+// other input in between takes the question back. Every value row of every settings page.
+TEST(Menu, NoSettingChangesWithoutLeftRightOrAConfirmation) {
+  const std::vector<std::pair<std::string, int>> pages = {
+      {"accept", 5}, {"down accept", 3}, {"down down accept", 3}, {"up up up accept", 2}};
+  for (const auto& [open, values] : pages) {
+    for (int row = 0; row < values; ++row) {
+      Menu m = make_menu();
+      run(m, "down down accept " + open);
+      for (int i = 0; i < row; ++i) run(m, "down");
+      const std::string where = open + " row " + std::to_string(row);
+      const UserSettings before = m.settings();
+      EXPECT_TRUE(run(m, "accept").empty()) << where;
+      EXPECT_EQ(m.settings(), before) << where << ": Enter alone changed it";
+      EXPECT_NE(describe_page(m.page()).find("Enter again to change it"), std::string::npos) << where;
+      EXPECT_TRUE(run(m, "down up accept").empty()) << where << ": moving away takes the question back";
+      EXPECT_EQ(m.settings(), before) << where;
+      run(m, "down up");
+      EXPECT_TRUE(m.handle(UiInput::click(row)).empty()) << where << ": a click asks too";
+      EXPECT_EQ(m.settings(), before) << where;
+      EXPECT_GE(saves(m.handle(UiInput::click(row))), 1) << where << ": the second click confirms";
+      EXPECT_NE(m.settings(), before) << where;
+    }
+  }
 }
 
 TEST(Menu, ResettingProgressAsksTwice) {
@@ -209,7 +329,7 @@ TEST(Menu, ResettingProgressAsksTwice) {
   m.show_results(kRoot + "/levels/duel.json", Difficulty::Normal, {true, 40, 1});
   run(m, "down down accept");  // Results: Retry, Next, Menu
   run(m, "down down accept");  // Settings
-  for (int i = 0; i < 9; ++i) run(m, "down");
+  run(m, "up up");
   EXPECT_TRUE(has_line(m.page(), "> Reset progress"));
   EXPECT_TRUE(run(m, "accept").empty());
   EXPECT_TRUE(has_line(m.page(), "> Reset progress: press again to confirm"));
@@ -218,6 +338,25 @@ TEST(Menu, ResettingProgressAsksTwice) {
   ASSERT_EQ(r.size(), 1u);
   EXPECT_EQ(r[0].kind, MenuRequest::Kind::SaveProgress);
   EXPECT_TRUE(m.progress().best.empty());
+}
+
+// F1: the developer panel only with --dev or the player's setting; it pauses a fight while
+// open and resumes what it paused.
+TEST(DevPanel, F1NeedsDevOrTheSettingAndPausesTheFight) {
+  EXPECT_FALSE(f1_toggles_panel(false, false, false)) << "a player's game: F1 does nothing";
+  EXPECT_TRUE(f1_toggles_panel(true, false, false));
+  EXPECT_TRUE(f1_toggles_panel(false, true, false));
+  EXPECT_TRUE(f1_toggles_panel(false, false, true)) << "an open panel always closes";
+  DevPanelGate gate;
+  EXPECT_EQ(gate.follow(false, true, false), std::nullopt);
+  EXPECT_EQ(gate.follow(true, true, false), Command::Pause);
+  EXPECT_EQ(gate.follow(true, true, true), std::nullopt);
+  EXPECT_EQ(gate.follow(false, true, true), Command::Resume);
+  // Over a game the player had paused, or over the menu: nothing to pause, nothing to resume.
+  EXPECT_EQ(gate.follow(true, true, true), std::nullopt);
+  EXPECT_EQ(gate.follow(false, true, true), std::nullopt);
+  EXPECT_EQ(gate.follow(true, false, false), std::nullopt);
+  EXPECT_EQ(gate.follow(false, false, false), std::nullopt);
 }
 
 // The mouse: items are hit-tested against the boxes the layout drew.
@@ -237,8 +376,8 @@ TEST(Menu, MouseHoverAndClickFollowTheLayout) {
   m.handle(UiInput::click(2));
   EXPECT_EQ(m.screen(), MenuScreen::Settings);
   // The long controls list scrolls: only the rows on screen get boxes.
-  run(m, "up up up accept");
-  ASSERT_EQ(m.screen(), MenuScreen::Controls);
+  run(m, "down down accept down down down accept");  // Controls, Remap keys
+  ASSERT_EQ(m.screen(), MenuScreen::Keys);
   layout_menu(m.page(), 1280, 720, layer, &boxes);
   EXPECT_GT(boxes.size(), 20u);
   EXPECT_GE(boxes[0].x1, 0);

@@ -45,6 +45,7 @@ TEST(UserSettings, RoundTripThroughTheFolder) {
   s.fov = 75;
   s.fullscreen = true;
   s.vsync = false;
+  s.developer_panel = true;
   s.keys["fire_primary"] = "SPACE";
   s.keys["strafe_up"] = "NONE";
   s.render["render.sorting"] = "cluster";
@@ -58,6 +59,14 @@ TEST(UserSettings, RoundTripThroughTheFolder) {
   EXPECT_EQ(f.settings, s);
   EXPECT_EQ(f.progress, p);
   EXPECT_EQ(f.progress.best.count("duel/hard"), 1u);
+  EXPECT_NE(read(dir.path / "settings.json").find("\"developer_panel\": true"), std::string::npos);
+}
+
+// The developer panel's switch is a boolean; anything else is refused at its position.
+TEST(UserSettings, DeveloperPanelIsAFlag) {
+  EXPECT_FALSE(parse_settings("{\"format\": 1}", "s.json", {}).developer_panel);
+  EXPECT_TRUE(parse_settings("{\"format\": 1, \"developer_panel\": true}", "s.json", {}).developer_panel);
+  EXPECT_THROW(parse_settings("{\"format\": 1, \"developer_panel\": \"yes\"}", "s.json", {}), InputError);
 }
 
 TEST(UserSettings, MissingFilesGiveDefaultsWithoutAMessage) {

@@ -1,0 +1,20 @@
+// game/app/menu_items.h — the menu's row kinds, shared by menu.cpp and menu_settings.cpp only.
+#pragma once
+#include "game/app/menu.h"
+
+namespace arc {
+
+enum class Menu::Item {
+  Play, Effects, Settings, Quit,                                   // main
+  Mission, Effect, Difficulty, Launch, Back,                       // lists and briefing
+  Graphics, Sound, Controls, Advanced, ResetProgress,              // the settings screen
+  Quality, Scale, Fullscreen, Vsync, Fov,                          // graphics
+  MasterVolume, EffectsVolume, Mute,                               // sound
+  Sensitivity, InvertY, Deadzone, RemapKeys,                       // controls
+  Action, ResetKeys,                                               // key remapping
+  DevPanel, RenderKey, ResetRender,                                // advanced
+  Retry, Next, ToMenu,                                             // results
+  Resume, Restart, PauseDifficulty, PauseSound, Volume, MainMenu   // pause (and Quit)
+};
+
+}  // namespace arc
