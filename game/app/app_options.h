@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/settings.h"
+#include "game/app/all_settings.h"
 #include "game/sim/game.h"
 
 namespace arc {
@@ -42,7 +43,7 @@ struct AppOptions {
   bool fullscreen = false;
   bool vsync = true;
   bool show_fps = false;
-  Settings settings = Settings::defaults();
+  Settings settings = all_settings();
   GameOptions game;
 };
 

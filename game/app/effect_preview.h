@@ -14,6 +14,7 @@
 #include <string>
 
 #include "core/settings.h"
+#include "game/app/all_settings.h"
 
 namespace arc {
 
@@ -24,7 +25,7 @@ struct PreviewOptions {
   int frame_height = 240;
   int frames = 8;
   std::string backdrop = "space";  // "space", "wall" or a model name in assets/models
-  Settings settings = Settings::defaults();
+  Settings settings = all_settings();
   std::string root_dir = ARCFIRE_SOURCE_DIR;
 };
 

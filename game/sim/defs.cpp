@@ -18,7 +18,7 @@ constexpr double kSpace = 1.0e12;  // positions: world space is big but bounded 
 
 std::vector<glm::dvec3> points(JsonObject& o, const std::string& key, double limit) {
   std::vector<glm::dvec3> out;
-  check_list_length(o, key, kMaxShipPoints);
+  o.check_list_length(key, kMaxShipPoints);
   auto v = o.get(key);
   if (!v) return out;
   for (const JsonValue& p : v->array()) out.push_back(p.vec3(-limit, limit));
@@ -160,7 +160,7 @@ void load_class_of(LevelDef& L, const ShipSpawnDef& d, const JsonValue& cls, con
 
 void parse_ships(JsonObject& r, LevelDef& L, const std::string& root_dir) {
   bool have_player = false;
-  check_list_length(r, "ships", kMaxLevelShips);
+  r.check_list_length("ships", kMaxLevelShips);
   for (JsonObject s : r.objects("ships")) {
     ShipSpawnDef d;
     d.name = s.require_string("name");
@@ -187,7 +187,7 @@ void parse_ships(JsonObject& r, LevelDef& L, const std::string& root_dir) {
 }
 
 void parse_props(JsonObject& r, LevelDef& L) {
-  check_list_length(r, "props", kMaxLevelProps);
+  r.check_list_length("props", kMaxLevelProps);
   for (JsonObject p : r.objects("props")) {
     PropDef d;
     d.model = p.require_string("model");
@@ -226,7 +226,7 @@ void parse_effect_motion(JsonObject& e, EffectSpawnDef& d, const EffectLibrary* 
 }
 
 void parse_effects(JsonObject& r, LevelDef& L, const EffectLibrary* fx) {
-  check_list_length(r, "effects", kMaxLevelEffects);
+  r.check_list_length("effects", kMaxLevelEffects);
   for (JsonObject e : r.objects("effects")) {
     EffectSpawnDef d;
     JsonValue name = e.require("effect");

@@ -11,13 +11,14 @@
 #include <string>
 
 #include "core/settings.h"
+#include "game/app/all_settings.h"
 
 namespace arc {
 
 struct WorkbenchOptions {
   std::string root_dir = ARCFIRE_SOURCE_DIR;  // assets/, shaders/
   std::string effect_path;                    // "" = the first effect of assets/effects
-  Settings settings = Settings::defaults();   // render.* and particles.budget
+  Settings settings = all_settings();   // render.* and particles.budget
   int width = 1280, height = 720;
   bool vsync = true;
 };

@@ -7,6 +7,7 @@
 
 #include "bench_registry.h"
 #include "core/settings.h"
+#include "game/app/all_settings.h"
 #include "game/app/audio_session.h"
 #include "game/sim/game.h"
 #include "game/sim/world.h"
@@ -18,7 +19,7 @@ ARCFIRE_SCENE(audio_arena) {
   GameOptions options;
   options.root_dir = ARCFIRE_SOURCE_DIR;
   Game game = Game::load_level(std::string(ARCFIRE_SOURCE_DIR) + "/levels/arena.json", options);
-  AudioSession audio(std::string(ARCFIRE_SOURCE_DIR) + "/assets/sounds/sounds.json", Settings::defaults(), true);
+  AudioSession audio(std::string(ARCFIRE_SOURCE_DIR) + "/assets/sounds/sounds.json", all_settings(), true);
   if (!audio.engine().active()) return;
   std::vector<float> block(800 * 2);
   std::vector<double> ms;
