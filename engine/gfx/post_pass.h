@@ -16,6 +16,7 @@
 // filtered taps a pixel; a one-tap copy pass alone is 1.1); MSAA 1.6–2.3 (llvmpipe gives 4
 // samples for msaa2 as well).
 //
+// Example, compiled as GlExamples.PostPass in tests/unit/gfx/test_gl_examples.cpp:
 //   PostPass post;
 //   post.run({targets.scene_color(), scene_w, scene_h, bloom_tex, 0.1f, 1.0f, true, true}, programs, targets,
 //            1280, 720);

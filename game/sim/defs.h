@@ -5,6 +5,7 @@
 // ShipClassDef comes from assets/ships/*.json, LevelDef from levels/*.json, the AI pilots'
 // difficulties from assets/settings/ai.json (see levels/README.md for every key). Paths inside files are relative to GameOptions::root_dir.
 //
+// Example, compiled as GameExamples.LoadALevel in tests/unit/game/test_game_examples.cpp:
 //   LevelDef level = load_level_def("levels/duel.json", ".");   // also loads the ship classes
 #pragma once
 #include <array>
