@@ -93,6 +93,6 @@ TEST(Settings, PresetsApplyOrNameTheirFault) {
     ADD_FAILURE() << "no error";
   } catch (const arc::InputError& e) {
     const std::string m = e.what();
-    EXPECT_EQ(m.rfind("q.json:5:17: unknown setting 'render.fuzz'", 0), 0u) << m;
+    EXPECT_EQ(m.rfind("q.json:5:18: unknown setting 'render.fuzz'", 0), 0u) << m;
   }
 }
