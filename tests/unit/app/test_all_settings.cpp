@@ -50,8 +50,9 @@ TEST(AllSettings, EachModuleRegistersItsOwnKeys) {
     for (const std::string& k : keys) EXPECT_EQ(k.rfind(m.prefix, 0), 0u) << k << " is not a " << m.prefix << " key";
     assembled.insert(assembled.end(), keys.begin(), keys.end());
   }
+  const Settings settings = all_settings();
   std::vector<std::string> all;
-  for (const SettingDef& d : all_settings().all()) all.push_back(d.key);
+  for (const SettingDef& d : settings.all()) all.push_back(d.key);
   EXPECT_EQ(all, assembled) << "all_settings() is the modules' keys in this order";
 }
 
