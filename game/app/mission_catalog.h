@@ -4,6 +4,7 @@
 // --level), keeps those with a "mission" block and sorts them by category, then order. Two
 // levels of one category with the same order are an InputError at the second one's `order`.
 //
+// Example, compiled as AppExamples.NextMission in tests/unit/app/test_app_examples.cpp:
 //   std::vector<MissionInfo> all = load_mission_catalog("levels", ".");
 //   const MissionInfo* next = next_mission(all, "levels/duel.json");   // skirmish
 #pragma once
