@@ -6,8 +6,9 @@
 // through core/file_writer.h (checked, atomic; WriteError). Other failures throw
 // arc::InputError("path: what is wrong").
 //
+// Example, compiled as AssetExamples.LoadAndSaveAnImage in tests/unit/assets/test_asset_examples.cpp:
 //   arc::Image smoke = arc::load_sprite("assets/textures/sprite_smoke.png");
-//   arc::save_image("out/smoke.png", smoke);
+//   arc::save_image(out_dir + "/smoke.png", smoke);
 #pragma once
 #include <cstdint>
 #include <string>

@@ -8,6 +8,7 @@
 // naming its path and the loader's reason (ImageCodecUnavailable), thrown again at every
 // later use.
 //
+// Example, compiled as AssetExamples.DecodeThroughTheModule in tests/unit/assets/test_asset_examples.cpp:
 //   const ImageCodec& codec = image_codec();
 //   char* err = nullptr;
 //   ArcCodecReader* r = codec.open(data, size, "png", name.c_str(), &w, &h, &channels, &err);

@@ -12,6 +12,7 @@
 // bufferView range is checked against its buffer before a byte is read, and a .glb container is
 // checked before tinygltf sees it. Textures are decoded through OpenImageIO like load_image().
 //
+// Example, compiled as AssetExamples.LoadAModel in tests/unit/assets/test_asset_examples.cpp:
 //   arc::ModelData ship = arc::load_model("assets/models/viper.glb");
 #pragma once
 #include <cstdint>

@@ -6,10 +6,11 @@
 // free number in the folder, counting the shots still being written, so quick presses never share
 // a name. The destructor waits for every shot (nothing is lost at exit).
 //
+// Example, compiled as AssetExamples.ShotsInTheBackground in tests/unit/assets/test_asset_examples.cpp:
 //   ScreenshotWriter shots("out/screenshots", "arcfire");
-//   shots.save(read_window_pixels(w, h));            // returns out/screenshots/arcfire_0001.png
+//   std::string path = shots.save(frame);            // out/screenshots/arcfire_0001.png
 //   for (const ScreenshotWriter::Done& d : shots.finished())
-//     d.error.empty() ? announce(d.path) : show(d.error);
+//     notices.push_back(d.error.empty() ? "saved " + d.path : d.error);
 #pragma once
 #include <future>
 #include <string>

@@ -15,6 +15,7 @@
 #include <glm/geometric.hpp>
 
 #include "audio/synth.h"
+#include "core/file_writer.h"
 #include "core/json.h"
 
 namespace arc {

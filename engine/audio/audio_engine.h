@@ -19,6 +19,7 @@
 // inverse-distance-clamped model with each sound's reference distance; Doppler comes from the
 // source's velocity relative to the listener.
 //
+// Example, compiled as AudioExamples.PlayAndRender in tests/unit/audio/test_audio_examples.cpp:
 //   AudioDesc desc;  desc.loopback = true;                      // or the default device
 //   AudioEngine audio(desc);                                    // audio.notice() if it is silent
 //   audio.load(load_sound_library("assets/sounds/sounds.json"));

@@ -4,6 +4,7 @@
 // every other data file; the caller exits 2 at start-up, or keeps the last good library when
 // a hot reload fails.
 //
+// Example, compiled as AudioExamples.SynthesiseOne in tests/unit/audio/test_audio_examples.cpp:
 //   SoundLibraryDef lib = load_sound_library("assets/sounds/sounds.json");
 //   std::vector<float> boom = synthesise(*lib.find("explosion"), 48000);   // audio/synth.h
 #pragma once

@@ -4,6 +4,7 @@
 // can and interpolates between the last two simulated states by `alpha`. A long frame (a
 // hitch, a breakpoint) is clamped to `max_frame` seconds so the loop cannot spiral.
 //
+// Example, compiled as CoreExamples.FixedStepClock in tests/unit/core/test_core_examples.cpp:
 //   FixedStepClock clock{60};
 //   int n = clock.advance(frame_seconds);   // run n ticks now
 //   double a = clock.alpha();               // interpolation factor in [0, 1)

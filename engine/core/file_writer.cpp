@@ -143,9 +143,12 @@ void FileWriter::commit() {
   tmp_.clear();
 }
 
-void write_file_checked(const std::string& path, const std::string& bytes) {
+void write_file_checked(const std::string& path, const std::string& bytes) { write_file_atomic(path, bytes); }
+
+void write_file_atomic(const std::string& path, const std::string& text, const std::function<void()>& before_rename) {
   FileWriter out(path);
-  out.write(bytes);
+  out.write(text);
+  if (before_rename) before_rename();  // a throw here leaves the old file: ~FileWriter removes the temporary
   out.commit();
 }
 

@@ -16,12 +16,14 @@
 // set_write_limit(N) in a test) makes every checked write beyond N bytes in all fail with
 // ENOSPC, as a full disk would (tests/cli/full_disk.sh).
 //
+// Example, compiled as CoreExamples.WriteAFile in tests/unit/core/test_core_examples.cpp:
 //   FileWriter out("out/summary.json");
 //   out.write(text);
 //   out.commit();  // renamed into place; without commit() the destructor removes the temporary
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
 
 #include "core/error.h"
@@ -59,6 +61,10 @@ class FileWriter {
 
 // The whole of `bytes` to `path` through a FileWriter.
 void write_file_checked(const std::string& path, const std::string& bytes);
+// The same, with `before_rename` run between the write and the rename (tests throw from it to
+// stand for a crash there: the old file stays whole); WriteError on failure.
+void write_file_atomic(const std::string& path, const std::string& text,
+                       const std::function<void()>& before_rename = {});
 
 // Writes all of `size` bytes to an open descriptor (append-mode files such as recordings), under
 // the same write limit; returns 0 or the errno of the failure.

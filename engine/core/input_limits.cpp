@@ -4,7 +4,6 @@
 #include <vector>
 
 #include "core/error.h"
-#include "core/json.h"
 
 namespace arc {
 namespace {
@@ -147,20 +146,6 @@ void check_text_size(size_t size, const std::string& path, size_t max_bytes, con
 void check_json_text(const char* text, size_t size, const std::string& path, const JsonLimits& limits) {
   check_text_size(size, path, limits.max_bytes, limits.kind);
   JsonScanner(text, size, path, limits).run();
-}
-
-void check_list_length(const JsonObject& o, const std::string& key, size_t max) {
-  if (!o.has(key)) return;
-  const nlohmann::json& list = o.raw()[key];
-  if (list.is_array() && list.size() > max)
-    o.fail_key(key, "'" + key + "' lists " + std::to_string(list.size()) + " entries; at most " + std::to_string(max) +
-                        " are allowed");
-}
-
-void check_list_length(const JsonValue& v, size_t max) {
-  if (v.is_array() && v.raw().size() > max)
-    v.fail("'" + v.name() + "' lists " + std::to_string(v.raw().size()) + " entries; at most " + std::to_string(max) +
-           " are allowed");
 }
 
 }  // namespace arc

@@ -7,6 +7,7 @@
 // the position recorder (core/json.cpp) see it: the recorder keeps one pointer string per value,
 // so bounded pointers keep its cost linear in the file size.
 //
+// Example, compiled as CoreExamples.CheckBeforeParsing in tests/unit/core/test_core_examples.cpp:
 //   check_file_size("levels/duel.json", kMaxDataFileBytes, "a data file");  // throws InputError
 //   check_json_text(text, path, kDataJsonLimits);                           // path:line:col: ...
 //
@@ -39,7 +40,7 @@ constexpr size_t kMaxScriptLineBytes = 4096;
 // Binary world snapshots.
 constexpr size_t kMaxSnapshotBytes = size_t(256) << 20;
 
-// Lists in data files, each checked before its elements are read.
+// Lists in data files, each checked before its elements are read (JsonObject::check_list_length).
 constexpr size_t kMaxLevelShips = 256;
 constexpr size_t kMaxLevelProps = 1024;
 constexpr size_t kMaxLevelEffects = 1024;
@@ -77,12 +78,5 @@ void check_json_text(const char* text, size_t size, const std::string& path, con
 inline void check_json_text(const std::string& text, const std::string& path, const JsonLimits& limits) {
   check_json_text(text.data(), text.size(), path, limits);
 }
-
-class JsonObject;
-class JsonValue;
-// Throws at the key's position when o[key] is an array of more than `max` elements.
-void check_list_length(const JsonObject& o, const std::string& key, size_t max);
-// Throws at the value's position when it is an array of more than `max` elements.
-void check_list_length(const JsonValue& v, size_t max);
 
 }  // namespace arc

@@ -8,7 +8,6 @@
 #include <sstream>
 
 #include "core/error.h"
-#include "core/file_writer.h"
 #include "core/input_limits.h"
 
 namespace arc {
@@ -381,6 +380,12 @@ std::vector<JsonValue> JsonValue::array() const {
   return out;
 }
 
+void JsonValue::check_list_length(size_t max) const {
+  if (j_->is_array() && j_->size() > max)
+    fail("'" + name() + "' lists " + std::to_string(j_->size()) + " entries; at most " + std::to_string(max) +
+         " are allowed");
+}
+
 // ---- JsonObject ------------------------------------------------------------------------------
 
 JsonObject::JsonObject(std::shared_ptr<const JsonDoc> doc, std::string pointer, const nlohmann::json* j)
@@ -451,6 +456,14 @@ std::vector<JsonObject> JsonObject::objects(const std::string& key) {
   return out;
 }
 
+void JsonObject::check_list_length(const std::string& key, size_t max) const {
+  if (!has(key)) return;
+  const nlohmann::json& list = (*j_)[key];
+  if (list.is_array() && list.size() > max)
+    fail_key(key, "'" + key + "' lists " + std::to_string(list.size()) + " entries; at most " + std::to_string(max) +
+                      " are allowed");
+}
+
 void JsonObject::fail_key(const std::string& key, const std::string& message) const {
   throw InputError(doc_->where(ptr_ + "/" + json_pointer_escape(key)) + ": " + message);
 }
@@ -467,15 +480,6 @@ void JsonObject::finish() const {
                            (ptr_.empty() ? std::string() : " in '" + name() + "'") +
                            "; allowed: " + join_allowed(allowed));
   }
-}
-
-// ---- files -----------------------------------------------------------------------------------
-
-void write_file_atomic(const std::string& path, const std::string& text, const std::function<void()>& before_rename) {
-  FileWriter out(path);
-  out.write(text);
-  if (before_rename) before_rename();  // a throw here leaves the old file: ~FileWriter removes the temporary
-  out.commit();
 }
 
 }  // namespace arc

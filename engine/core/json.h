@@ -8,14 +8,14 @@
 // Loaders read through JsonObject, which checks types, ranges and finiteness and, at
 // finish(), rejects every key that was not read ("unknown key 'hul'; allowed: hull, shield").
 //
-//   JsonDoc doc = JsonDoc::load_file("levels/duel.json");   // throws InputError
-//   JsonObject root = doc.root_object();
+// Example, compiled as CoreExamples.ReadALevel in tests/unit/core/test_core_examples.cpp:
+//   std::shared_ptr<const JsonDoc> doc = JsonDoc::load_file("levels/duel.json");  // throws InputError
+//   JsonObject root(doc, "", &doc->root());
 //   uint64_t seed = root.integer("seed", 1, 0, UINT32_MAX);
-//   for (JsonObject s : root.objects("ships")) { ... s.finish(); }
-//   root.finish();
+//   root.check_list_length("ships", kMaxLevelShips);  // before reading a list (core/input_limits.h)
+//   for (JsonObject s : root.objects("ships")) names.push_back(s.require_string("name"));
 #pragma once
 #include <cstdint>
-#include <functional>
 #include <initializer_list>
 #include <map>
 #include <memory>
@@ -84,6 +84,9 @@ class JsonValue {
   std::vector<double> numbers(double min, double max) const;
   JsonObject object() const;
   std::vector<JsonValue> array() const;
+  // Throws at the value's position when it is an array of more than `max` elements (checked
+  // before a loader reads them: core/input_limits.h has each list's limit).
+  void check_list_length(size_t max) const;
   bool is_object() const { return j_->is_object(); }
   bool is_array() const { return j_->is_array(); }
   bool is_string() const { return j_->is_string(); }
@@ -117,6 +120,8 @@ class JsonObject : public JsonValue {
   glm::dvec4 vec4(const std::string& key, glm::dvec4 fallback, double min, double max);
   JsonObject require_object(const std::string& key);
   std::vector<JsonObject> objects(const std::string& key);  // optional array of objects; missing → empty
+  // Throws at the key's position when the member is an array of more than `max` elements.
+  void check_list_length(const std::string& key, size_t max) const;
   // Error at a member's key position.
   [[noreturn]] void fail_key(const std::string& key, const std::string& message) const;
   // Throws for the first key that was never read, listing the allowed ones.
@@ -133,11 +138,6 @@ std::string json_pointer_escape(const std::string& key);
 // "a, b or c" for messages.
 std::string join_allowed(const std::vector<std::string>& names);
 
-// Writes text to path atomically through core/file_writer.h's FileWriter (every write checked,
-// a temporary file in the same folder, then rename); WriteError on failure. `before_rename` runs
-// between the two (tests throw from it to stand for a crash there: the old file stays whole).
-void write_file_atomic(const std::string& path, const std::string& text,
-                       const std::function<void()>& before_rename = {});
 std::string read_text_file(const std::string& path);  // throws InputError "path: cannot read file"
 
 }  // namespace arc

@@ -5,9 +5,10 @@
 // change a simulation. The mixer is SplitMix64's finaliser applied in a chain over the key
 // words (each word is folded in with a distinct odd constant).
 //
+// Example, compiled as CoreExamples.KeyedRng in tests/unit/core/test_core_examples.cpp:
 //   arc::Rng r{seed, stream, tick};         // a generator for one (seed, stream, tick)
 //   float u = r.uniform(i);                 // i-th value in [0, 1)
-//   glm::dvec3 d = r.unit_vector(i);        // uses indices i*4 .. i*4+3 internally
+//   glm::dvec3 d = r.unit_vector(i);        // uses indices i*4 and i*4+1
 #pragma once
 #include <cmath>
 #include <cstdint>

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
+#include <stdexcept>
 
 #include "core/error.h"
 #include "core/json.h"
@@ -33,79 +34,24 @@ std::string allowed_text(const SettingDef& d) {
 
 }  // namespace
 
-Settings Settings::defaults() {
-  Settings s;
-  // Rendering
-  s.define_choice("render.soft_edges", "effect",
-                  {"effect", "off", "linear", "contrast", "average_density", "density_extent"},
-                  "soft-edge method: 'effect' uses each effect's own, others override all effects");
-  s.define_choice("render.sorting", "full", {"off", "cluster", "full"},
-                  "back-to-front order of non-additive particles: none, by cluster, or per particle");
-  s.define_choice("render.depth_mode", "reversed", {"reversed", "standard"},
-                  "reversed-Z float depth (needs clip control) or standard depth");
-  s.define_flag("render.infinite_far", true, "infinite far plane");
-  s.define_choice("render.texture_filter", "mipmap_nearest", {"nearest", "linear", "mipmap_nearest", "mipmap"},
-                  "sprite and model texture filtering: mipmap_nearest is bilinear within one mip level, mipmap trilinear"
-                  " (between two levels: about 1.5 times the particle cost on llvmpipe)");
-  s.define_number("render.scale", 1.0, 0.25, 2.0, "render resolution relative to the window");
-  s.define_number("render.particle_size_clamp", 0.5, 0.01, 4.0,
-                  "largest particle size on screen, as a fraction of screen height");
-  s.define_number("render.near_fade", 2.0, 0.0, 100.0,
-                  "distance in world units over which particles fade out toward the camera");
-  s.define_number("render.contrast_power", 2.0, 0.5, 8.0, "exponent of the contrast soft-edge curve");
-  s.define_choice("render.sky", "baked", {"baked", "exact"},
-                  "nebula background: baked once per level into a cube map, or evaluated per pixel every frame");
-  s.define_integer("render.sky_resolution", 256, 16, 1024, "texels along each face of the baked nebula cube map");
-  s.define_integer("render.sky_grid", 32, 0, 64, "baked nebula looked up every N pixels and interpolated between (0: at every pixel)");
-  s.define_number("render.overdraw_budget", 3.0, 0.0, 64.0,
-                  "screen layers of particle blending per frame before the nearest, largest particles are shrunk,"
-                  " faded and dropped (low screen priority first); 0: no budget");
-  s.define_choice("render.particle_resolution", "auto", {"full", "half", "auto"},
-                  "particles blended at the scene's resolution, or at half its width and height and put over it"
-                  " (a quarter of the blending, softer particles), or auto: half while they blend more than one"
-                  " screen layer, full again under 0.6");
-  s.define_number("render.overdraw_near", 40.0, 1.0, 1e6,
-                  "distance in world units within which the overdraw budget reduces particles at full strength");
-  // The look (HDR, bloom, edge filter) is the high and reference presets' and the attract
-  // demo's: on this project's llvmpipe machine the three passes cost about 25 ms at 1280x720,
-  // more than a 60 Hz frame, so the default keeps the 8-bit scene (tests/README.md).
-  s.define_flag("render.hdr", false,
-                "linear-light float scene with a filmic tone curve (on), or 8-bit display colours as before (off)");
-  s.define_number("render.exposure", 1.0, 0.05, 16.0, "scene brightness scale before the tone curve (render.hdr on)");
-  s.define_choice("render.bloom", "off", {"off", "low", "high"},
-                  "glow around light brighter than white (render.hdr on): none, soft or strong");
-  s.define_choice("render.antialias", "off", {"off", "fxaa", "msaa2", "msaa4"},
-                  "edge anti-aliasing: FXAA filter on the final image, or 2x/4x multisampling of the opaque pass");
-  // Particles
-  s.define_integer("particles.budget", 200000, 1000, 4000000, "largest number of live particles");
-  s.define_integer("particles.lightning_interval", 0, 0, 60,
-                   "re-evaluate lightning every n ticks; 0 keeps each effect's own interval");
-  s.define_number("particles.cull_distance", 20000.0, 100.0, 1e12,
-                  "clusters farther than this from the camera are not animated until needed");
-  // Simulation
-  s.define_integer("sim.substeps", 1, 1, 16, "physics sub-steps per tick");
-  // Audio (engine/audio): never part of the simulation or its hash.
-  s.define_number("audio.volume", 0.8, 0.0, 1.0, "master volume");
-  s.define_number("audio.effects_volume", 1.0, 0.0, 1.0, "volume of the game's positional sounds, under the master");
-  s.define_flag("audio.mute", false, "no sound at all (M toggles it in the game)");
-  s.define_integer("audio.voices", 32, 4, 128,
-                   "sounds playing at once; beyond it the lowest priority (sparks before explosions) fades out");
-  return s;
+void Settings::add(SettingDef def) {
+  if (find_mut(def.key)) throw std::logic_error("setting '" + def.key + "' is defined twice");
+  defs_.push_back(std::move(def));
 }
 
 void Settings::define_number(const std::string& key, double def, double min, double max, const std::string& doc) {
-  defs_.push_back({key, SettingDef::Kind::Number, min, max, {}, num_text(def), doc});
+  add({key, SettingDef::Kind::Number, min, max, {}, num_text(def), doc});
 }
 void Settings::define_integer(const std::string& key, int64_t def, int64_t min, int64_t max,
                               const std::string& doc) {
-  defs_.push_back({key, SettingDef::Kind::Integer, double(min), double(max), {}, std::to_string(def), doc});
+  add({key, SettingDef::Kind::Integer, double(min), double(max), {}, std::to_string(def), doc});
 }
 void Settings::define_choice(const std::string& key, const std::string& def, std::vector<std::string> choices,
                              const std::string& doc) {
-  defs_.push_back({key, SettingDef::Kind::Choice, 0, 0, std::move(choices), def, doc});
+  add({key, SettingDef::Kind::Choice, 0, 0, std::move(choices), def, doc});
 }
 void Settings::define_flag(const std::string& key, bool def, const std::string& doc) {
-  defs_.push_back({key, SettingDef::Kind::Flag, 0, 0, {}, def ? "true" : "false", doc});
+  add({key, SettingDef::Kind::Flag, 0, 0, {}, def ? "true" : "false", doc});
 }
 
 const SettingDef& Settings::find(const std::string& key) const {

@@ -1,14 +1,18 @@
 // core/settings.h — every speed-against-accuracy trade is a named runtime setting.
 //
 // Settings are typed (number, integer, choice, flag), each with a default, an allowed range
-// and a one-line doc. Presets (low / medium / high / reference) come from
+// and a one-line doc. Core keeps the mechanism, not the list: each module registers its own
+// keys (gfx/render_settings.h, particles/particle_settings.h, game/sim/sim_settings.h,
+// audio/audio_settings.h), as Quake III's renderer registers its cvars, and
+// game/app/all_settings.h assembles them. Presets (low / medium / high / reference) come from
 // assets/settings/quality.json; `--quality NAME` applies one and `--set key=value` overrides
 // single keys. "reference" is the most accurate and the one other presets are measured against.
 //
-//   Settings s = Settings::defaults();
-//   s.apply_preset_file("assets/settings/quality.json", "high");
-//   s.set_from_text("render.sorting=full", "--set");
-//   std::string m = s.choice("render.soft_edges");
+// Example, compiled as SettingsExample.DefineSetAndRead in tests/unit/core/test_settings.cpp:
+//   Settings s;
+//   s.define_choice("render.sorting", "full", {"off", "cluster", "full"}, "particle order; cheap");
+//   s.set_from_text("render.sorting=cluster", "--set");
+//   std::string m = s.choice("render.sorting");
 #pragma once
 #include <cstdint>
 #include <map>
@@ -32,9 +36,8 @@ struct SettingDef {
 
 class Settings {
  public:
-  // All settings the game knows, at their documented defaults.
-  static Settings defaults();
-
+  // Each key is defined once, by the module that reads it; a second definition of a key is a
+  // programming error (std::logic_error).
   void define_number(const std::string& key, double def, double min, double max, const std::string& doc);
   void define_integer(const std::string& key, int64_t def, int64_t min, int64_t max, const std::string& doc);
   void define_choice(const std::string& key, const std::string& def, std::vector<std::string> choices,
@@ -63,6 +66,7 @@ class Settings {
  private:
   const SettingDef& find(const std::string& key) const;
   SettingDef* find_mut(const std::string& key);
+  void add(SettingDef def);
   void apply_preset_doc(const std::shared_ptr<const JsonDoc>& doc, const std::string& preset);
   std::vector<SettingDef> defs_;
 };

@@ -7,9 +7,10 @@
 // InputError("snapshot: ...") instead of reading past the end. Counts are checked against
 // the bytes left before anything is allocated.
 //
+// Example, compiled as CoreExamples.SnapshotRoundTrip in tests/unit/core/test_core_examples.cpp:
 //   snapshot::Writer out;  out.u64(x);  out.vec3(p);  std::vector<uint8_t> b = out.framed(kMagic, 1);
 //   snapshot::Reader in = snapshot::Reader::unframe(b.data(), b.size(), kMagic, 1, "particle world");
-//   uint64_t x = in.u64();  ...  in.expect_end();
+//   uint64_t x2 = in.u64();  glm::dvec3 p2 = in.vec3();  in.expect_end();
 #pragma once
 #include <bit>
 #include <cmath>

@@ -5,6 +5,7 @@
 // values, that names every field once, in snapshot order (game/sim/world.h and
 // particles/world_state.h hold them):
 //
+// Example, compiled in game/sim/world.h:
 //   template <fields::MaybeConst<ExplosionEvent> E, class V>
 //   void visit_fields(E& e, V&& v) {
 //     v("position", e.position, fields::saved, presentation_hash<0>);

@@ -7,11 +7,12 @@
 // an explicit uint32_t (Id<Tag>{7u}) or a table position (from_index), the only way out is
 // `.value` or index(), so a conversion is always visible at the call.
 //
+// Example, compiled as CoreExamples.TypedId in tests/unit/core/test_core_examples.cpp:
 //   struct ShipTag;
 //   using ShipId = Id<ShipTag>;
 //   ShipId s = ShipId::from_index(3);    // value 4
-//   ships[s.index()];                    // 3
-//   if (!target) ...                     // null: names no ship
+//   std::string name = ships[s.index()];  // ships[3]
+//   bool none = !ShipId{};               // null: names no ship
 #pragma once
 #include <compare>
 #include <cstddef>

@@ -10,6 +10,7 @@
 // only a step down: tent-filtering back up into it would cost more than all the other levels
 // together. Targets are RGBA16F (llvmpipe reads and writes it faster than R11F_G11F_B10F).
 //
+// Example, compiled as GlExamples.BloomPass in tests/unit/gfx/test_gl_examples.cpp:
 //   BloomPass bloom;
 //   GLuint glow = bloom.run(targets.scene_color(), scene_w, scene_h, programs);
 //   // glow: (scene_w / 4) × (scene_h / 4), the sum of levels 1 to 5

@@ -8,6 +8,7 @@
 // straight colour, decodes it, multiplies by alpha and encodes it again, so the sampler's
 // decode gives exactly linear(c)·a.
 //
+// Example, compiled as GfxCpuExamples.LinearLight in tests/unit/gfx/test_gfx_cpu_examples.cpp:
 //   glm::vec3 lin = srgb_to_linear(glm::vec3(1.0f, 0.55f, 0.2f));
 //   Image texels = premultiply_linear_srgb(load_image("assets/textures/sprite_smoke.png"));
 #pragma once

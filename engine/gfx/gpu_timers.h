@@ -8,10 +8,11 @@
 // it stalls, but gives this frame's figure; the ring rests meanwhile (two GL_TIME_ELAPSED
 // queries cannot nest).
 //
+// Example, compiled as GlExamples.GpuTimers in tests/unit/gfx/test_gl_examples.cpp:
 //   GpuTimers timers;
 //   timers.collect_finished();                 // at the start of a frame
 //   timers.begin_particle_pass();
-//   ...                                        // depth copy and particle draw
+//   targets.copy_depth();                      // and the particle draws
 //   double ms = timers.end_particle_pass();    // −1 unless time_passes is on
 #pragma once
 #include <epoxy/gl.h>

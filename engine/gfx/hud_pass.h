@@ -3,6 +3,7 @@
 // Last pass of a frame, after the scene is resolved to the output, so it is sharp at any
 // render scale. hud_font.h turns the HudLayer into triangles over its font atlas.
 //
+// Example, compiled as GlExamples.HudPass in tests/unit/gfx/test_gl_examples.cpp:
 //   HudPass hud;
 //   int draw_calls = hud.draw(view.hud, programs.hud, 1280, 720);
 #pragma once

@@ -4,6 +4,7 @@
 // min_fraction (default 99.9 %) of pixels. On failure write_failure_images() saves the actual
 // image and an amplified difference image as PNG beside the test output.
 //
+// Example, compiled as GfxCpuExamples.CompareImages in tests/unit/gfx/test_gfx_cpu_examples.cpp:
 //   ImageDiff d = compare_images(expected, actual);
 //   if (!d.passed) write_failure_images("build/test-output/soft_edges", actual, expected);
 #pragma once

@@ -8,6 +8,7 @@
 // materials that take it (albedo textures multiply it as detail), each placed
 // camera-relative (the translation subtracted in double).
 //
+// Example, compiled as GlExamples.MeshPass in tests/unit/gfx/test_gl_examples.cpp:
 //   MeshPass meshes;
 //   int ship = meshes.add_model(load_model("assets/models/viper.glb"), settings.filter);
 //   int draw_calls = meshes.draw(view, programs.mesh, vp.view_proj, settings.reversed_z, settings.hdr);

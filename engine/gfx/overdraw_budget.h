@@ -41,6 +41,7 @@
 // since nothing was capped to grow back. A frame that stands still in time keeps the caps; one
 // that jumps back or by more than half a second starts every cluster from the solution.
 //
+// Example, compiled as GfxCpuExamples.OverdrawBudget in tests/unit/gfx/test_gfx_cpu_examples.cpp:
 //   OverdrawBudget budget;
 //   OverdrawStats s = budget.apply(particles, areas, frame, {.budget_layers = 3, .near = 40});
 //   // particles: shrunk, faded and thinned in place; areas[i]: each one's blended pixels after it

@@ -9,10 +9,11 @@
 // variant (particle_runs.h). The particle pass uploads `particles` as they are and draws each
 // run with its program.
 //
+// Example, compiled as GfxCpuExamples.PrepareABatch in tests/unit/gfx/test_gfx_cpu_examples.cpp:
 //   ParticleBatch batch;
 //   batch.prepare(view, make_view_projection(view.camera, aspect, true, true), model_boxes, {});
-//   if (batch.any_soft) { /* copy the depth buffer first */ }
-//   for (const ParticleRun& run : batch.runs) { /* one draw each */ }
+//   if (batch.any_soft) depth_copies += 1;                 // the depth buffer is copied first
+//   for (const ParticleRun& run : batch.runs) draws.push_back(run.count);  // one draw each
 #pragma once
 #include <cstddef>
 #include <cstdint>

@@ -9,6 +9,7 @@
 // size clamp and rotation included), widened by the bilinear filter's reach; a particle that
 // reaches past the near plane marks the whole screen, since its projection is unbounded.
 //
+// Example, compiled as GfxCpuExamples.CoveredTiles in tests/unit/gfx/test_gfx_cpu_examples.cpp:
 //   ParticleCoverage c;
 //   c.reset(1280, 720);
 //   c.add_box(640.0f, 360.0f, 50.0f, 20.0f);  // centre (y up) and half-extents, pixels

@@ -8,6 +8,7 @@
 // whether a face plane has the particle's whole reach volume on its far side. A particle none
 // reaches is flagged kSoftClear, skips the depth read and stays bit-identical.
 //
+// Example, compiled as GfxCpuExamples.SoftCanMatter in tests/unit/gfx/test_gfx_cpu_examples.cpp:
 //   OccluderSet occluders;
 //   occluders.gather(view, model_boxes, to_view, tan_half_x, tan_half_y);
 //   bool soft = occluders.soft_can_matter(particle, quad_bounds(particle, to_view, axis_len), near);

@@ -9,6 +9,7 @@
 // no particle of it is soft, the contrast curve only when one uses it. The CPU half (culling,
 // flags, budget, sorting, runs) is particle_batch.h.
 //
+// Example, compiled as GlExamples.ParticlePass in tests/unit/gfx/test_gl_examples.cpp:
 //   ParticlePass particles(0);
 //   particles.set_sprites({load_sprite("assets/textures/sprite_smoke.png")}, settings.filter);
 //   particles.upload(batch.particles);

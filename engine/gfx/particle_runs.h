@@ -19,8 +19,9 @@
 // each is a draw call and a program switch, which costs more than a few thousand pixels'
 // depth reads.
 //
+// Example, compiled as GfxCpuExamples.GroupRuns in tests/unit/gfx/test_gfx_cpu_examples.cpp:
 //   std::vector<ParticleRun> runs;
-//   group_runs(batch.particles, areas, boxes, /*max_runs=*/24, runs);
+//   group_runs(particles, areas, boxes, /*max_runs=*/24, runs);
 //   for (auto& r : runs) draw(r.first, r.count, r.soft ? soft[r.contrast][r.density_extent] : hard);
 #pragma once
 #include <cstdint>

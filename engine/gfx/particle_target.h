@@ -13,9 +13,10 @@
 // rectangles it is given (ParticleCoverage: the tiles a particle can touch); elsewhere the
 // target holds its clear value and would change nothing.
 //
+// Example, compiled as GlExamples.ParticleTarget in tests/unit/gfx/test_gl_examples.cpp:
 //   ParticleTarget half;
 //   half.begin(targets.scene_fbo(), scene_w, scene_h, targets.scene_internal_format());
-//   ... particle draws with ParticleFrame::transmittance_alpha = true ...
+//   particles.draw(batch, programs, settings, frame);  // frame.transmittance_alpha = true
 //   half.composite(programs.particle_composite, targets.scene_color_fbo(), scene_w, scene_h, rects);
 #pragma once
 #include <epoxy/gl.h>

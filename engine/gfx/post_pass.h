@@ -13,6 +13,7 @@
 // bloom, FXAA (nine filtered taps a pixel) and MSAA each cost a multiple of the plain frame on
 // a software rasteriser: docs/performance.md has the ratios (`arcfire-bench --scene render_look`).
 //
+// Example, compiled as GlExamples.PostPass in tests/unit/gfx/test_gl_examples.cpp:
 //   PostPass post;
 //   post.run({targets.scene_color(), scene_w, scene_h, bloom_tex, 0.1f, 1.0f, true, true}, programs, targets,
 //            1280, 720);

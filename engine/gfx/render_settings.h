@@ -1,13 +1,19 @@
 // gfx/render_settings.h — the renderer's runtime settings as it applies them (no GL).
 //
-// Renderer::apply_settings() fills one from the render.* keys of core/settings.h, and
+// register_render_settings() defines the render.* keys (default, range and doc of each) in a
+// core/settings.h Settings; Renderer::apply_settings() fills a RenderSettings from them, and
 // Renderer::set_render_settings() takes one directly; both fall back where the context lacks
 // a feature (reversed-Z without clip control) and clamp the ranges. The passes read it.
-// A default-constructed one draws the plain picture (8-bit scene, no bloom, no anti-aliasing),
-// which the renderer tests build on; Settings::defaults() turns HDR on.
+// A default-constructed one draws an 8-bit scene without bloom or anti-aliasing, which the
+// renderer tests build on.
 #pragma once
 
 namespace arc {
+
+class Settings;
+
+// Defines every render.* key at its default, in `arcfire --list-settings` order.
+void register_render_settings(Settings& s);
 
 // How an HDR scene buffer is stored (RendererDesc::hdr_format); the blend reads no destination
 // alpha, so three channels suffice.

@@ -12,10 +12,11 @@
 // with HDR or FXAA the post passes write there instead (bind_output()). The HUD then draws there
 // at full size.
 //
+// Example, compiled as GlExamples.RenderTargets in tests/unit/gfx/test_gl_examples.cpp:
 //   RenderTargets targets(/*offscreen=*/true, /*float_scene=*/false);
 //   targets.ensure(1280, 720, 1.0, {});  // (re)allocates on a size or format change
 //   targets.bind_opaque();               // ... opaque passes ...
-//   targets.resolve_opaque();            // no-op without MSAA
+//   targets.resolve_opaque(programs.msaa_resolve);  // no-op without MSAA
 //   targets.copy_depth();                // ... particles sample depth_copy() ...
 //   targets.resolve(1280, 720);          // ... HUD ...
 //   Image frame = targets.read_pixels();

@@ -5,6 +5,7 @@
 // runs keeps the last good shaders on screen). generation() counts successful builds, so a pass
 // that bakes something with a shader (the sky's cube map) knows to bake again.
 //
+// Example, compiled as GlExamples.ShaderPrograms in tests/unit/gfx/test_gl_examples.cpp:
 //   ShaderPrograms programs(data_root() + "/shaders");  // throws when a shader fails
 //   glUseProgram(programs.mesh.id);
 //   glUniform1i(programs.mesh.loc("u_base_tex"), 0);

@@ -21,6 +21,7 @@
 // colours are display values; with HDR they are decoded to linear light as they are drawn
 // (the baked map is baked again in linear light).
 //
+// Example, compiled as GlExamples.SkyPass in tests/unit/gfx/test_gl_examples.cpp:
 //   SkyPass sky;
 //   int draw_calls = sky.draw_nebula(view, programs, vp, settings, scene_w, scene_h);
 //   draw_calls += sky.draw_stars(view, programs, vp, settings, scene_h);

@@ -15,6 +15,7 @@
 // particle, the coarsest level any of its pixels can read (from its size on screen and the
 // filter) and takes that level's box; a coarser level's box holds every finer one's.
 //
+// Example, compiled as GfxCpuExamples.TrimBoxes in tests/unit/gfx/test_gfx_cpu_examples.cpp:
 //   std::vector<TrimBox> boxes = trim_boxes(layers);   // layers: premultiplied, one size
 //   TrimBox b = boxes[size_t(layer) * mip_levels(w, h) + level];  // u, v in [0, 1]
 #pragma once

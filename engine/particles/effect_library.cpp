@@ -82,7 +82,7 @@ std::vector<CurveKey> read_keys(const JsonValue& v, double lo, double hi, int co
   if (v.is_number() && component < 0) return {{0.0f, float(v.number(lo, hi))}};
   if (!v.is_array() || v.raw().empty())
     v.fail("'" + v.name() + "' must be a number or a non-empty array of [t, value] keyframes");
-  check_list_length(v, kMaxCurveKeys);
+  v.check_list_length(kMaxCurveKeys);
   std::vector<CurveKey> keys;
   for (const JsonValue& k : v.array()) {
     if (!k.is_array() || k.raw().size() != 2)
@@ -152,7 +152,7 @@ void read_emitter(JsonObject o, ClusterDef& c) {
   if (e.shape == EmitterShape::Mesh) {
     const EffectField& f = effect_field(B::Emitter, "triangles");
     JsonValue tri = o.require("triangles");
-    check_list_length(tri, 3 * kMaxEmitterTriangles);
+    tri.check_list_length(3 * kMaxEmitterTriangles);
     for (const JsonValue& v : tri.array()) e.triangles.push_back(v.vec3(f.min, f.max));
     if (e.triangles.empty() || e.triangles.size() % 3 != 0)
       tri.fail("'triangles' must list 3 vertices [x, y, z] per triangle, got " + std::to_string(e.triangles.size()) +
@@ -300,7 +300,7 @@ std::shared_ptr<EffectDef> parse_effect(const std::shared_ptr<const JsonDoc>& do
   JsonObject root(doc, "", &doc->root());
   root.string("description", "");
   auto clusters = root.require("clusters");
-  check_list_length(clusters, kMaxEffectClusters);
+  clusters.check_list_length(kMaxEffectClusters);
   int i = 0;
   for (const JsonValue& v : clusters.array()) def->clusters.push_back(read_cluster(v.object(), i++));
   if (def->clusters.empty()) clusters.fail("'clusters' must list at least one cluster");

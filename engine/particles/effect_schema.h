@@ -9,6 +9,7 @@
 // "curves" objects. A key may apply only under a condition the loader enforces (e.g. "growth"
 // only for a sphere with "radius_animation": "exploding"); `applies` says so in words.
 //
+// Example, compiled as EffectSchemaExample.LookUpAKey in tests/unit/particles/test_examples.cpp:
 //   const EffectField& rate = effect_field(EffectBlock::Emitter, "rate");    // kind Number, [0, 1e7]
 //   const EffectField* f = effect_field_at("/clusters/0/curves/alpha");       // kind Curve, [0, 1]
 #pragma once

@@ -13,6 +13,7 @@
 // particles) is left to the heap by the pool, and counted. Where a pool's arrays live changes
 // no simulated value: each pool's columns are contiguous either way.
 //
+// Example, compiled as ParticleStoreExample.TakeAndGiveBack in tests/unit/particles/test_examples.cpp:
 //   ParticleStore store(budget);
 //   ParticleBlock b = store.take(300);           // b.capacity == 512, or 0 when none is free
 //   std::byte* px = store.column(0);              // ParticlePool binds its columns (particle_pool.h)

@@ -7,7 +7,8 @@
 // tests/replays/README.md. Every malformed line throws InputError "path:line:col: message".
 //
 // Example, compiled as ScriptExample.LoadWalkWrite in tests/unit/replay/test_examples.cpp:
-//   Script s = load_script("tests/replays/range_course.replay");  // or parse_script(text, path)
+//   const Settings known = all_settings();                        // game/app/all_settings.h
+//   Script s = load_script("tests/replays/range_course.replay", known);  // or parse_script(text, path, known)
 //   for (const InputEvent& e : s.inputs) ticks.push_back(e.tick);  // in tick order
 //   std::string text = write_script(s);                           // parse(write(s)) == s
 //
@@ -23,6 +24,10 @@
 #include <optional>
 #include <string>
 #include <vector>
+
+namespace arc {
+class Settings;
+}
 
 namespace arc::replay {
 
@@ -68,7 +73,7 @@ struct QualityLine {
 
 // `set key=value`: one setting, any key `arcfire --list-settings` shows, as `--set` sets it.
 struct SettingLine {
-  std::string key, value;  // checked against core/settings.h when parsed
+  std::string key, value;  // checked against the parser's known settings
   int line = 0, col = 0;
   bool operator==(const SettingLine&) const = default;
 };
@@ -193,8 +198,11 @@ struct Script {
   bool same_content(const Script& other) const;
 };
 
-Script parse_script(const std::string& text, const std::string& path);
-Script load_script(const std::string& path);  // InputError "path: cannot read file" when missing
+// `known` holds every setting a `set` line may name, at its allowed values (the game's:
+// game/app/all_settings.h); the replay format itself knows no setting.
+Script parse_script(const std::string& text, const std::string& path, const Settings& known);
+// InputError "path: cannot read file" when missing.
+Script load_script(const std::string& path, const Settings& known);
 
 // The whole script as text in the canonical form (header, then lines in tick order: inputs,
 // commands, then checks). Source positions are not used.

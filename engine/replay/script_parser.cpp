@@ -160,17 +160,17 @@ bool seen_before(const std::vector<std::string>& seen, const std::string& name) 
   return std::find(seen.begin(), seen.end(), name) != seen.end();
 }
 
-// `set key=value`: the key must be a setting and the value one it allows (core/settings.h).
-void parse_setting(LineParser& lp, Header& h, std::vector<std::string>& seen) {
+// `set key=value`: the key must be one of `known` and the value one it allows.
+void parse_setting(LineParser& lp, Header& h, std::vector<std::string>& seen, const Settings& known) {
   const Token& t = lp.take("setting key=value (e.g. render.soft_edges=linear)");
   const size_t eq = t.text.find('=');
   if (eq == std::string::npos || eq == 0)
     lp.fail(t, "expected key=value as with --set (e.g. set render.soft_edges=linear), got '" + t.text + "'");
   SettingLine s{t.text.substr(0, eq), t.text.substr(eq + 1), lp.line, t.col};
-  Settings settings = Settings::defaults();
+  Settings settings = known;
   const std::vector<SettingDef>& defs = settings.all();
-  const bool known = std::any_of(defs.begin(), defs.end(), [&](const SettingDef& d) { return d.key == s.key; });
-  if (known) s.col = t.col + static_cast<int>(eq) + 1;  // a bad value is reported where it is written
+  const bool is_known = std::any_of(defs.begin(), defs.end(), [&](const SettingDef& d) { return d.key == s.key; });
+  if (is_known) s.col = t.col + static_cast<int>(eq) + 1;  // a bad value is reported where it is written
   settings.set(s.key, s.value, lp.path + ":" + std::to_string(lp.line) + ":" + std::to_string(s.col));
   if (seen_before(seen, s.key)) lp.fail(t, "setting '" + s.key + "' is set twice");
   const std::string twin = pinned_twin(s.key);
@@ -208,10 +208,10 @@ void parse_mod(LineParser& lp, Header& h) {
   h.mods.push_back({name.text, std::stoull(hash.text, nullptr, 16), lp.line, name.col});
 }
 
-void parse_header_line(LineParser& lp, Header& h, std::vector<std::string>& seen) {
+void parse_header_line(LineParser& lp, Header& h, std::vector<std::string>& seen, const Settings& known) {
   const Token& key = lp.tokens[lp.next++];
   if (key.text == "set") {
-    parse_setting(lp, h, seen);
+    parse_setting(lp, h, seen, known);
     lp.done("the setting");
     return;
   }
@@ -449,7 +449,7 @@ static void check_line_limits(const std::string& raw, const std::string& path, i
                      std::to_string(kMaxScriptLineBytes) + " bytes long");
 }
 
-Script parse_script(const std::string& text, const std::string& path) {
+Script parse_script(const std::string& text, const std::string& path, const Settings& known) {
   check_text_size(text.size(), path, kMaxScriptFileBytes, "a replay script");
   Script s;
   s.path = path;
@@ -484,7 +484,7 @@ Script parse_script(const std::string& text, const std::string& path) {
       if (in_body)
         lp.fail(first, "expected a tick number (or +N) at the start of the line, got '" + first.text +
                            "'; header lines come before the first tick-stamped line");
-      parse_header_line(lp, s.header, seen_keys);
+      parse_header_line(lp, s.header, seen_keys, known);
       continue;
     }
     if (!in_body) {
@@ -503,9 +503,9 @@ Script parse_script(const std::string& text, const std::string& path) {
   return s;
 }
 
-Script load_script(const std::string& path) {
+Script load_script(const std::string& path, const Settings& known) {
   check_file_size(path, kMaxScriptFileBytes, "a replay script");
-  return parse_script(read_text_file(path), path);
+  return parse_script(read_text_file(path), path, known);
 }
 
 }  // namespace arc::replay

@@ -7,9 +7,10 @@
 // still sees every key and click. Callers ask wants_mouse()/wants_keyboard() before acting on
 // input the panel took.
 //
-//   ImGuiLayer ui;                 // after open_window()
-//   each frame: window->poll(...); ui.begin_frame(); ImGui::Begin(...) ... ImGui::End();
-//               renderer->render(...); ui.end_frame(); window->swap();
+// One ImGuiLayer is made after open_window(). Each frame, after the window's poll, begin_frame()
+// starts the panels' frame (the ImGui::Begin ... ImGui::End calls come between), and once the
+// renderer has drawn the scene, end_frame() draws the panels over it, before the swap
+// (game/workbench/workbench_window.cpp runs this loop).
 #pragma once
 
 namespace arc {

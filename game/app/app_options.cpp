@@ -103,7 +103,7 @@ void define_options(CLI::App& app, AppOptions& o, CommandLineText& t) {
       ->check(CLI::Range(int64_t(1), int64_t(1000000)));
   app.add_option("--quality", t.quality, "quality preset: low, medium, high or reference");
   app.add_option("--set", t.sets, "override one setting, key=value (repeatable; see --list-settings)");
-  app.add_flag("--list-settings", t.list_settings, "list every setting with its value and allowed range");
+  app.add_flag("--list-settings", t.list_settings, "list every setting: value, allowed range, what it does and its cost");
   app.add_option("--difficulty", t.difficulty, "AI difficulty: easy, normal or hard (default: the level's)");
   app.add_option("--seed", t.seed, "override the level's random seed")->check(CLI::Range(int64_t(0), int64_t(4294967295)));
   app.add_option("--bindings", o.bindings_path,

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/settings.h"
+#include "game/app/all_settings.h"
 #include "game/sim/game.h"
 
 namespace arc {
@@ -43,7 +44,7 @@ struct AppOptions {
   bool vsync = true;
   bool show_fps = false;
   bool dev = false;         // --dev: F1 opens the developer panel whatever the player's settings say
-  Settings settings = Settings::defaults();
+  Settings settings = all_settings();
   GameOptions game;
 };
 

@@ -8,6 +8,7 @@
 // and the victory / defeat stingers come from the app. Without a device it is silent and
 // costs almost nothing.
 //
+// Example, compiled as AppExamples.AudioSession in tests/unit/app/test_app_examples.cpp:
 //   AudioSession audio(root + "/assets/sounds/sounds.json", settings, false);
 //   game.step(frame, commands);  audio.after_tick(game.world());
 //   audio.frame(game.world(), frame_seconds);

@@ -15,6 +15,7 @@
 
 #include "core/data_root.h"
 #include "core/settings.h"
+#include "game/app/all_settings.h"
 
 namespace arc {
 
@@ -25,8 +26,8 @@ struct PreviewOptions {
   int frame_height = 240;
   int frames = 8;
   std::string backdrop = "space";  // "space", "wall" or a model name in assets/models
-  Settings settings = Settings::defaults();
-  std::string root_dir = data_root();  // core/data_root.h
+  Settings settings = all_settings();
+  std::string root_dir = data_root();
 };
 
 struct AppOptions;

@@ -8,6 +8,7 @@
 // PAD_A, PAD_START, ...; a key offered to a gamepad action (or the reverse) changes nothing and
 // says so. No GL, no window: the rules are unit-tested.
 //
+// Example, compiled as AppExamples.RemapAKey in tests/unit/app/test_app_examples.cpp:
 //   Bindings b = load_bindings("assets/settings/bindings.json");
 //   RemapOutcome r = remap_key(b, "fire_primary", key_code("SPACE"));
 //   // r.conflict == "strafe_up": strafe up now has MOUSE_LEFT

@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "core/error.h"
+#include "game/app/all_settings.h"
 #include "game/app/key_remap.h"
 #include "game/app/menu_items.h"
 #include "game/sim/world.h"
@@ -94,7 +95,7 @@ void Menu::refresh_effective() {
   try {
     effective_ = user_quality_settings(files_.settings, quality_file_);
   } catch (const InputError& e) {
-    effective_ = Settings::defaults();
+    effective_ = all_settings();
     message_ = e.what();
   }
 }

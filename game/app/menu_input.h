@@ -5,6 +5,7 @@
 // left stick moves, A accepts and B goes back. While a remap waits for a key, the next key or
 // mouse button pressed (Esc excepted: it cancels) is sent as UiInput::bind.
 //
+// Example, compiled as AppExamples.MenuInputs in tests/unit/app/test_app_examples.cpp:
 //   std::vector<UiInput> in = menu_inputs(previous, now, menu.capturing(), boxes);
 #pragma once
 #include <vector>

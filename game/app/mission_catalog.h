@@ -6,6 +6,7 @@
 // then order. Two levels of one category and one mod with the same order are an InputError at
 // the second one's `order`. "Next mission" stays within the mod.
 //
+// Example, compiled as AppExamples.NextMission in tests/unit/app/test_app_examples.cpp:
 //   std::vector<MissionInfo> all = load_mission_catalog("levels", ".");
 //   const MissionInfo* next = next_mission(all, "levels/duel.json");   // skirmish
 #pragma once

@@ -16,6 +16,7 @@
 #include "core/file_writer.h"
 #include "core/input_limits.h"
 #include "core/json.h"
+#include "game/app/all_settings.h"
 #include "game/app/audio_session.h"
 #include "game/app/frame_renderer.h"
 #include "game/app/replay_expectations.h"
@@ -387,7 +388,7 @@ ReplayOutcome play_replay(const ReplayRunOptions& opt) {
   const clock::time_point start = clock::now();
   check_file_size(opt.script_path, kMaxScriptFileBytes, "a replay script");
   const std::string text = read_text_file(opt.script_path);
-  ReplayPlayer p(opt, replay::parse_script(text, opt.script_path));
+  ReplayPlayer p(opt, replay::parse_script(text, opt.script_path, all_settings()));
   const clock::time_point ready = clock::now();
   p.run();
   ReplayOutcome& result = p.result();

@@ -24,6 +24,7 @@
 #include <string>
 
 #include "core/settings.h"
+#include "game/app/all_settings.h"
 #include "game/app/app_options.h"
 #include "game/sim/game.h"
 
@@ -38,7 +39,7 @@ struct ReplayRunOptions {
   bool update_golden = false;   // fill in hash values, rewrite the hash log and golden PNGs
   bool no_render = false;       // skip snapshots: no GL context at all
   GameOptions game;             // budget, sub-steps, root_dir; seed and difficulty come from the script
-  Settings settings = Settings::defaults();  // the script's quality and `set` lines apply on top
+  Settings settings = all_settings();  // the script's quality and `set` lines apply on top
   std::string golden_dir;       // "" = <script folder>/golden/<script stem>; snapshots_like NAME
                                 // reads the PNGs of its sibling folder NAME
   int full_hash_every = 60;     // ticks between full hashes in the hash log

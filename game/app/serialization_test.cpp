@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "core/error.h"
+#include "game/app/all_settings.h"
 #include "game/app/script_feeder.h"
 #include "platform/stop_request.h"
 #include "replay/script.h"
@@ -23,7 +24,7 @@ int run_serialization_test(const SerializationTestOptions& opt) {
   GameOptions game_options = opt.game;
   uint64_t last = static_cast<uint64_t>(opt.ticks);
   if (!opt.script_path.empty()) {
-    script = replay::load_script(opt.script_path);
+    script = replay::load_script(opt.script_path, all_settings());
     level = resolve_script_level(*script, data_root_of(opt.game));
     game_options = script_game_options(*script, script_settings(*script, opt.settings, data_root_of(opt.game)), opt.game);
     last = script->last_tick();

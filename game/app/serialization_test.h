@@ -18,6 +18,7 @@
 #include <string>
 
 #include "core/settings.h"
+#include "game/app/all_settings.h"
 #include "game/app/app_options.h"
 #include "game/sim/game.h"
 
@@ -30,7 +31,7 @@ struct SerializationTestOptions {
   std::string level_path = "levels/duel.json";
   std::string script_path;  // optional: inputs, commands, level, seed and length from a script
   GameOptions game;
-  Settings settings = Settings::defaults();  // a script's `quality` and `set` lines apply on top
+  Settings settings = all_settings();  // a script's `quality` and `set` lines apply on top
   int64_t every = 60;       // save and restore into a second Game every N ticks
   int64_t ticks = 1800;     // without a script
 };

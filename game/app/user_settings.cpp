@@ -8,8 +8,10 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
+#include "core/file_writer.h"
 #include "core/json.h"
 #include "core/settings.h"
+#include "game/app/all_settings.h"
 #include "game/app/key_remap.h"
 #include "platform/platform.h"
 
@@ -64,7 +66,7 @@ void parse_render(JsonObject& r, UserSettings& s) {
   auto rv = r.get("render");
   if (!rv) return;
   JsonObject o = rv->object();
-  Settings check = Settings::defaults();
+  Settings check = all_settings();
   for (const auto& [key, value] : rv->raw().items()) {
     JsonValue v = o.require(key);
     const std::string text = value.is_string() ? value.get<std::string>() : value.dump();
@@ -253,7 +255,7 @@ void save_settings(const std::string& dir, const UserSettings& s) { write_into(d
 void save_progress(const std::string& dir, const Progress& p) { write_into(dir, kProgressFile, progress_json(p)); }
 
 Settings user_quality_settings(const UserSettings& us, const std::string& quality_file) {
-  Settings s = Settings::defaults();
+  Settings s = all_settings();
   if (us.quality != kDefaultQuality) s.apply_preset_file(quality_file, us.quality);
   for (const auto& [key, value] : us.render) s.set(key, value, "settings.json render");
   return s;

@@ -6,13 +6,14 @@
 //                  developer panel's switch, the keys the player remapped (action → key)
 //                  and the mod folders to play with
 //   progress.json  the best result per mission and difficulty
-// Both are written atomically (core/json.h write_file_atomic). A file that does not parse or
+// Both are written atomically (core/file_writer.h write_file_atomic). A file that does not parse or
 // validate is never lost silently: load_user_files() copies it to NAME.bak, writes the defaults
 // in its place and returns the message the menu shows on screen. No GL: the menu's tests drive
 // it in a temporary folder.
 //
+// Example, compiled as AppExamples.UserFiles in tests/unit/app/test_app_examples.cpp:
 //   UserFiles files = load_user_files(user_config_dir(), "assets/settings/quality.json");
-//   if (!files.message.empty()) show(files.message);
+//   if (!files.message.empty()) notices.push_back(files.message);
 //   files.settings.mouse_sensitivity = 0.2;
 //   save_settings(files.dir, files.settings);
 #pragma once
@@ -27,7 +28,7 @@ namespace arc {
 
 inline constexpr size_t kMaxUserMods = 16;
 
-// The quality choice that applies no preset: Settings::defaults().
+// The quality choice that applies no preset: all_settings().
 inline constexpr const char* kDefaultQuality = "default";
 
 struct UserSettings {

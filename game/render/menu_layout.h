@@ -6,6 +6,7 @@
 // window. The boxes of the items come back in window pixels, so the app can hit-test the
 // mouse against exactly what was drawn.
 //
+// Example, compiled as AppExamples.LayOutAMenu in tests/unit/app/test_app_examples.cpp:
 //   MenuPage page = menu.page();
 //   std::vector<HudBox> boxes;
 //   layout_menu(page, 1280, 720, view.hud, &boxes);   // appended to the frame's HUD layer

@@ -8,6 +8,7 @@
 // into the audio engine's cues, the way a RenderView goes to the renderer. The list is a pure
 // function of the World's sequence, so a replay gives the same events every run.
 //
+// Example, compiled as AppExamples.SoundsOfATick in tests/unit/app/test_app_examples.cpp:
 //   SoundEventTracker sounds;
 //   game.step(input);
 //   for (const SoundEvent& e : sounds.collect(game.world())) audio.play(sound_cue(e));

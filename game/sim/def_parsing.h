@@ -20,7 +20,7 @@ constexpr double kSpace = 1.0e12;  // positions: world space is big but bounded 
 
 inline std::vector<glm::dvec3> points(JsonObject& o, const std::string& key, double limit) {
   std::vector<glm::dvec3> out;
-  check_list_length(o, key, kMaxShipPoints);
+  o.check_list_length(key, kMaxShipPoints);
   auto v = o.get(key);
   if (!v) return out;
   for (const JsonValue& p : v->array()) out.push_back(p.vec3(-limit, limit));

@@ -7,6 +7,7 @@
 // files are relative to GameOptions::root_dir. One loader file per format: ship_class_defs.cpp,
 // level_defs.cpp, mission_defs.cpp (a level's "mission" block), ai_defs.cpp.
 //
+// Example, compiled as GameExamples.LoadALevel in tests/unit/game/test_game_examples.cpp:
 //   LevelDef level = load_level_def("levels/duel.json", ".");   // also loads the ship classes
 #pragma once
 #include <array>

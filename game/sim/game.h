@@ -4,8 +4,9 @@
 // with the player's InputFrame and the tick's commands. Nothing here reads the wall clock or
 // includes GL. The renderer reads state through world(); replays hash it through hash().
 //
+// Example, compiled as GameExamples.StepAndHash in tests/unit/game/test_game_examples.cpp:
 //   Game game = Game::load_level("levels/duel.json", GameOptions{});   // InputError on bad files
-//   while (...) game.step(input, commands);
+//   for (int tick = 0; tick < 60; ++tick) game.step(input, commands);
 //   uint64_t h = game.hash();
 #pragma once
 #include <cstdint>

@@ -63,7 +63,7 @@ void load_class_of(LevelDef& L, const ShipSpawnDef& d, const JsonValue& cls, con
 
 void parse_ships(JsonObject& r, LevelDef& L, const std::string& root_dir) {
   bool have_player = false;
-  check_list_length(r, "ships", kMaxLevelShips);
+  r.check_list_length("ships", kMaxLevelShips);
   for (JsonObject s : r.objects("ships")) {
     ShipSpawnDef d;
     d.name = s.require_string("name");
@@ -90,7 +90,7 @@ void parse_ships(JsonObject& r, LevelDef& L, const std::string& root_dir) {
 }
 
 void parse_props(JsonObject& r, LevelDef& L) {
-  check_list_length(r, "props", kMaxLevelProps);
+  r.check_list_length("props", kMaxLevelProps);
   for (JsonObject p : r.objects("props")) {
     PropDef d;
     d.model = p.require_string("model");
@@ -129,7 +129,7 @@ void parse_effect_motion(JsonObject& e, EffectSpawnDef& d, const EffectLibrary* 
 }
 
 void parse_effects(JsonObject& r, LevelDef& L, const EffectLibrary* fx) {
-  check_list_length(r, "effects", kMaxLevelEffects);
+  r.check_list_length("effects", kMaxLevelEffects);
   for (JsonObject e : r.objects("effects")) {
     EffectSpawnDef d;
     JsonValue name = e.require("effect");

@@ -15,6 +15,7 @@
 // world's snapshot last. A truncated, corrupt or foreign snapshot throws
 // InputError("snapshot: ...").
 //
+// Example, compiled as GameExamples.SaveAndLoad in tests/unit/game/test_game_examples.cpp:
 //   std::vector<uint8_t> bytes = save_world(w);
 //   GameOptions o = snapshot_options(bytes, base);     // the level is loaded with these
 //   load_world(w2, bytes);                             // w2: that level, freshly initialised

@@ -3,6 +3,7 @@
 #include <system_error>
 
 #include "core/error.h"
+#include "core/file_writer.h"
 #include "core/json.h"
 #include "game/workbench/json_splice.h"
 

@@ -13,8 +13,9 @@
 // Field kinds, ranges, allowed values and defaults for the panel come from
 // particles/effect_schema.h, the table the loader reads its ranges from.
 //
+// Example, compiled as WorkbenchExamples.EditAnEffect in tests/unit/workbench/test_workbench_examples.cpp:
 //   std::string error;
-//   std::unique_ptr<EffectDocument> doc = EffectDocument::open("assets/effects/plasma_bolt.json", error);
+//   std::unique_ptr<EffectDocument> doc = EffectDocument::open(path, error);  // e.g. assets/effects/plasma_bolt.json
 //   EditResult r = doc->set("/clusters/0/emitter/rate", 120);     // r.ok, or r.message from the loader
 //   doc->undo();  doc->redo();
 //   doc->save();                                                   // atomic; throws InputError

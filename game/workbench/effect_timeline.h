@@ -10,7 +10,8 @@
 // The effect is spawned at tick 0 at the origin, facing −Z, either standing still or attached to
 // an owner flying a circle (trails and owner-space clusters need a moving owner to show).
 //
-//   EffectTimeline t(doc->library(), doc->name(), StageMotion::Still);
+// Example, compiled as WorkbenchExamples.ScrubAndStep in tests/unit/workbench/test_workbench_examples.cpp:
+//   EffectTimeline t(doc->library(), doc->name(), {.motion = StageMotion::Still});
 //   t.scrub_to(90, camera);         // tick 90 by the catch-up path
 //   t.play_step(camera);            // tick 91 by normal stepping
 //   world = &t.world();             // for collect(); counts in t.frame_stats()

@@ -11,9 +11,9 @@
 // depend on it). A line of figures (FPS, particles drawn, the particle pass's time) shows what
 // a change costs.
 //
-//   GamePanel panel(root_dir);            // after the window opens
-//   each frame, before the swap:
-//     if (panel.frame(settings, renderer->last_stats())) renderer->apply_settings(settings), ...
+// One GamePanel(root_dir) is made once the window is open. Each frame, before the swap, frame()
+// draws it over the game with the settings and the renderer's last figures, and returns true
+// when a setting changed, for the caller to apply (the renderer's apply_settings(), the mix).
 #pragma once
 #include <memory>
 #include <string>

@@ -4,6 +4,7 @@
 // the wheel scales the distance, and frame() fits a sphere in the view. Pitch stops short of
 // the poles, so the view direction is never parallel to the up vector.
 //
+// Example, compiled as AppExamples.OrbitCamera in tests/unit/app/test_app_examples.cpp:
 //   OrbitCamera cam;
 //   cam.drag(dx_pixels, dy_pixels);
 //   cam.zoom(wheel_steps);

@@ -10,6 +10,7 @@
 // tick (tests/unit/workbench compares their hashes). Every step uses the camera last given,
 // so a scrub and a play to the same tick agree for the view on screen too.
 //
+// Example, compiled as AppExamples.WorkbenchStage in tests/unit/app/test_app_examples.cpp:
 //   WorkbenchStage stage;
 //   stage.set_effect(doc->library(), doc->name());
 //   stage.advance(frame_seconds);           // plays at the chosen speed

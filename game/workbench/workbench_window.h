@@ -12,13 +12,14 @@
 
 #include "core/data_root.h"
 #include "core/settings.h"
+#include "game/app/all_settings.h"
 
 namespace arc {
 
 struct WorkbenchOptions {
-  std::string root_dir = data_root();        // assets/, shaders/ (core/data_root.h)
-  std::string effect_path;                   // "" = the first effect of assets/effects
-  Settings settings = Settings::defaults();  // render.* and particles.budget
+  std::string root_dir = data_root();  // assets/, shaders/
+  std::string effect_path;                    // "" = the first effect of assets/effects
+  Settings settings = all_settings();   // render.* and particles.budget
   int width = 1280, height = 720;
   bool vsync = true;
 };

@@ -7,6 +7,7 @@
 
 #include "bench_registry.h"
 #include "core/settings.h"
+#include "game/app/all_settings.h"
 #include "game/app/audio_session.h"
 #include "game/sim/game.h"
 #include "game/sim/world.h"
@@ -19,7 +20,7 @@ ARCFIRE_SCENE(audio_arena) {
   GameOptions options;
   options.root_dir = arc::data_root();
   Game game = Game::load_level(arc::data_root() + "/levels/arena.json", options);
-  AudioSession audio(arc::data_root() + "/assets/sounds/sounds.json", Settings::defaults(), true);
+  AudioSession audio(arc::data_root() + "/assets/sounds/sounds.json", all_settings(), true);
   if (!audio.engine().active()) return;
   std::vector<float> block(800 * 2);
   std::vector<double> ms;

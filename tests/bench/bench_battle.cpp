@@ -14,6 +14,7 @@
 #include "bench_registry.h"
 #include "bench_scenes.h"
 #include "core/settings.h"
+#include "game/app/all_settings.h"
 #include "game/app/scene_resources.h"
 #include "game/render/render_view_builder.h"
 #include "game/sim/game.h"
@@ -49,7 +50,7 @@ ARCFIRE_SCENE(battle_frames) {
   desc.offscreen = true;
   desc.shader_dir = root + "/shaders";
   Renderer renderer(desc);
-  renderer.apply_settings(Settings::defaults());
+  renderer.apply_settings(all_settings());
   const std::vector<ModelId> models = load_scene_resources(renderer, game.world(), root);
   HudState hud;
   RenderView view;

@@ -48,7 +48,9 @@
 
 #include "bench_registry.h"
 #include "bench_scenes.h"
+#include "core/file_writer.h"
 #include "core/json.h"
+#include "game/app/all_settings.h"
 #include "game/app/scene_resources.h"
 #include "game/app/script_feeder.h"
 #include "game/app/session_recorder.h"
@@ -317,8 +319,8 @@ ARCFIRE_SCENE(combat_view) {
   if (std::getenv("ARCFIRE_BENCH_RECORD")) record_dogfight(root, path);
   const std::unique_ptr<HeadlessContext> ctx = bench::context_or_skip();
   if (!ctx) return;
-  const replay::Script script = replay::load_script(path);
-  Settings settings = script_settings(script, Settings::defaults(), root);
+  const replay::Script script = replay::load_script(path, all_settings());
+  Settings settings = script_settings(script, all_settings(), root);
   if (const char* extra = std::getenv("ARCFIRE_BENCH_SET")) {
     std::istringstream words(extra);
     for (std::string kv; words >> kv;) {

@@ -7,7 +7,7 @@
 //  - clipped_pixel_share_hdr_off / _hdr_on: the share of pixels with any channel at 255 in the
 //    gallery's brightest explosion frame, with the 8-bit scene and with the high preset's look (the tick with the most clipped pixels of the first
 //    second, found with HDR off), before and after tone mapping;
-//  - render_battle_frame_ms_default_preset: the battle frame with Settings::defaults()
+//  - render_battle_frame_ms_default_preset: the battle frame with all_settings()
 //    (8-bit scene, no bloom, no edge filter), fastest and median of the rounds (a 60 Hz frame
 //    is 16.7 ms); render_battle_frame_ms_high_preset: the same with the high preset's look
 //    (hdr, bloom high, FXAA).
@@ -23,6 +23,7 @@
 
 #include "bench_registry.h"
 #include "bench_scenes.h"
+#include "game/app/all_settings.h"
 #include "game/app/scene_resources.h"
 #include "game/render/render_view_builder.h"
 #include "game/sim/game.h"
@@ -78,9 +79,9 @@ RenderSettings look(bool hdr, float bloom, RenderSettings::Antialias aa) {
   return s;
 }
 
-// The renderer settings of a quality preset ("" for Settings::defaults()).
+// The renderer settings of a quality preset ("" for all_settings()).
 RenderSettings preset_look(const std::string& preset) {
-  Settings s = Settings::defaults();
+  Settings s = all_settings();
   if (!preset.empty()) s.apply_preset_file(arc::data_root() + "/assets/settings/quality.json", preset);
   Renderer probe(RendererDesc{.offscreen = true});
   probe.apply_settings(s);
@@ -88,7 +89,7 @@ RenderSettings preset_look(const std::string& preset) {
 }
 
 // One scene: the cost of HDR + bloom, of the HDR formats and of each anti-aliasing mode, and
-// the frame with the settings of Settings::defaults() and of the high preset.
+// the frame with the settings of all_settings() and of the high preset.
 void measure_scene(Renderer& r, Renderer& r11, const RenderView& view, const std::string& suffix, int rounds) {
   using AA = RenderSettings::Antialias;
   const float bloom = RenderSettings::kBloomLow;

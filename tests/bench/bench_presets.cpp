@@ -20,6 +20,7 @@
 #include "bench_registry.h"
 #include "bench_scenes.h"
 #include "core/settings.h"
+#include "game/app/all_settings.h"
 #include "game/app/app_options.h"
 #include "game/sim/game.h"
 #include "game/sim/input.h"
@@ -35,7 +36,7 @@ const char* const kPresets[] = {"low", "medium", "high", "reference"};
 constexpr size_t kReference = 3;
 
 Settings preset(const std::string& name) {
-  Settings s = Settings::defaults();
+  Settings s = all_settings();
   s.apply_preset_file(arc::data_root() + "/assets/settings/quality.json", name);
   return s;
 }

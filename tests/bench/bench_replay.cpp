@@ -12,7 +12,9 @@
 #include <string>
 
 #include "bench_registry.h"
+#include "core/file_writer.h"
 #include "core/json.h"
+#include "game/app/all_settings.h"
 #include "game/app/replay_player.h"
 #include "replay/script.h"
 #include "core/data_root.h"
@@ -53,7 +55,8 @@ std::string long_script() {
 
 void BM_ParseRecordedScript(benchmark::State& state) {
   const std::string text = long_script();
-  for (auto _ : state) benchmark::DoNotOptimize(arc::replay::parse_script(text, "bench.replay"));
+  const arc::Settings known = arc::all_settings();
+  for (auto _ : state) benchmark::DoNotOptimize(arc::replay::parse_script(text, "bench.replay", known));
   state.SetBytesProcessed(int64_t(state.iterations()) * int64_t(text.size()));
 }
 BENCHMARK(BM_ParseRecordedScript)->Unit(benchmark::kMillisecond);
@@ -70,7 +73,7 @@ ARCFIRE_SCENE(replay_duel) {
   arc::bench::report_metric("replay_speed_norender", norender);
 
   // Rendering every tick: the first ten seconds of the same duel (the script cut at tick 600).
-  arc::replay::Script s = arc::replay::load_script(kDuel);
+  arc::replay::Script s = arc::replay::load_script(kDuel, arc::all_settings());
   s.end_tick = 600;
   s.hashes.clear();
   s.expectations.clear();

@@ -21,6 +21,7 @@
 #include "bench_registry.h"
 #include "bench_scenes.h"
 #include "core/rng.h"
+#include "game/app/all_settings.h"
 #include "gfx/renderer.h"
 #include "platform/platform.h"
 
@@ -92,7 +93,7 @@ ARCFIRE_SCENE(particle_scale) {
   desc.offscreen = true;
   Renderer r(desc);
   const RenderView battle = bench::level_view(r, "levels/arena.json", 600, kW, kH);
-  r.apply_settings(Settings::defaults());
+  r.apply_settings(all_settings());
   RenderSettings rs = r.render_settings();
   rs.overdraw_budget = 0.0f;  // every particle drawn: this measures the renderer, not the budget
   r.set_render_settings(rs);
@@ -145,7 +146,7 @@ ARCFIRE_SCENE(particle_prep) {
   const RenderView gallery = bench::level_view(r, "levels/gallery.json", 240, kW, kH);
   const RenderView battle = bench::level_view(r, "levels/arena.json", 600, kW, kH);
   const RenderView crowd = scaled(battle, 65536);
-  r.apply_settings(Settings::defaults());
+  r.apply_settings(all_settings());
   const RenderSettings defaults = r.render_settings();
   struct Case {
     const char* metric;

@@ -20,6 +20,7 @@
 #include "bench_registry.h"
 #include "bench_scenes.h"
 #include "core/settings.h"
+#include "game/app/all_settings.h"
 #include "game/app/scene_resources.h"
 #include "game/render/render_view_builder.h"
 #include "game/sim/game.h"
@@ -69,7 +70,7 @@ ARCFIRE_SCENE(scene_work) {
   options.root_dir = root;
   Game game = Game::load_level(root + "/levels/arena.json", options);
   Renderer r(RendererDesc{.offscreen = true});
-  r.apply_settings(Settings::defaults());
+  r.apply_settings(all_settings());
   const std::vector<ModelId> models = load_scene_resources(r, game.world(), root);
   HudState hud;
   hud.show_hud = false;

@@ -29,6 +29,7 @@
 #include "bench_registry.h"
 #include "bench_scenes.h"
 #include "core/settings.h"
+#include "game/app/all_settings.h"
 #include "game/app/scene_resources.h"
 #include "game/render/render_view_builder.h"
 #include "game/sim/game.h"
@@ -170,7 +171,7 @@ ARCFIRE_SCENE_ON_REQUEST(soak) {
     desc.offscreen = true;
     desc.shader_dir = run.root + "/shaders";
     Renderer renderer(desc);
-    renderer.apply_settings(Settings::defaults());
+    renderer.apply_settings(all_settings());
     const std::vector<ModelId> models = load_scene_resources(renderer, run.game.world(), run.root);
     render_mib.push_back(resident_mib());
     const double t1 = bench::now_seconds();

@@ -8,6 +8,7 @@
 #include <glm/vec2.hpp>
 #include <glm/geometric.hpp>
 #include <tiny_gltf.h>
+#include "core/file_writer.h"
 #include "core/json.h"
 
 namespace arc::assetgen {

@@ -8,10 +8,8 @@
 //
 // Plain C types only, and no exception crosses it: the module catches everything and answers
 // with a message. Messages come back as malloc'ed strings, freed with arc_codec_free().
-//
-//   const char* err = nullptr;
-//   ArcCodecReader* r = arc_codec_open(bytes, size, "png", "a.png", &w, &h, &channels, &err);
-//   ... check w, h, channels ...; arc_codec_read(r, channels, pixels, &err); arc_codec_close(r, 1);
+// The game reaches these functions only through the loaded module's addresses, in
+// assets/image_codec.h, whose banner shows a decode (open, then read and close).
 #pragma once
 #include <stddef.h>
 

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/settings.h"
+#include "game/app/all_settings.h"
 #include "game/app/audio_session.h"
 #include "game/sim/game.h"
 #include "game/sim/world.h"
@@ -37,7 +38,7 @@ std::vector<double> rms_windows(const std::vector<float>& stereo, int rate) {
 // One second of quiet flight, two seconds of beam on the drone's shield, one second after.
 std::vector<float> beam_session(const std::string& wav) {
   Game g = shooter_and_drone();
-  AudioCapture capture(kSounds, Settings::defaults(), wav);
+  AudioCapture capture(kSounds, all_settings(), wav);
   for (int t = 0; t < 240; ++t) {
     InputFrame f;
     if (t >= 60 && t < 180) f.buttons = kFirePrimary;
@@ -62,7 +63,7 @@ TEST(AudioCapture, TheSameSessionGivesTheSameSamples) {
 }
 
 TEST(AudioCapture, SettingsAreListedAndMix) {
-  Settings s = Settings::defaults();
+  Settings s = all_settings();
   for (const char* key : {"audio.volume", "audio.effects_volume", "audio.mute", "audio.voices"})
     EXPECT_NE(s.describe().find(key), std::string::npos) << key;
   s.set_from_text("audio.voices=8", "--set");

@@ -9,6 +9,7 @@
 
 #include "core/json.h"
 #include "game/app/menu.h"
+#include "game/app/all_settings.h"
 #include "game/app/replay_player.h"
 #include "game/app/serialization_test.h"
 #include "game/app/session_recorder.h"
@@ -31,7 +32,7 @@ TEST(BannerExample, ReplayPlayer) {
   EXPECT_EQ(outcome.exit_code, 0) << out;
   EXPECT_EQ(outcome.failures, 0);
   EXPECT_GT(outcome.checks, 0);
-  EXPECT_EQ(outcome.ticks, replay::load_script(options.script_path).last_tick());
+  EXPECT_EQ(outcome.ticks, replay::load_script(options.script_path, all_settings()).last_tick());
 }
 
 TEST(BannerExample, Menu) {
@@ -73,7 +74,7 @@ TEST(BannerExample, SessionRecorder) {
   }
   recorder.finish(game);                        // final hash and `end` (~SessionRecorder too)
 
-  const replay::Script script = replay::load_script(path);
+  const replay::Script script = replay::load_script(path, all_settings());
   EXPECT_EQ(script.end_tick, 120u);
   EXPECT_EQ(script.commands.size(), 1u);
   ASSERT_FALSE(script.hashes.empty());

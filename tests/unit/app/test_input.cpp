@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "core/error.h"
+#include "core/file_writer.h"
 #include "core/json.h"
 #include "game/app/contact_sheet.h"
 #include "game/app/input_bindings.h"

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "core/error.h"
+#include "core/file_writer.h"
 #include "core/json.h"
 #include "game/app/key_remap.h"
 #include "game/app/user_settings.h"

@@ -70,6 +70,13 @@ TEST(FileWriter, FullDiskKeepsTheOldFileAndLeavesNoTemporary) {
   EXPECT_EQ(files_in(dir), 1) << "the temporary file must be gone";
 }
 
+TEST(FileWriter, AtomicWriteReplacesWholeFile) {
+  std::string p = testing::TempDir() + "/atomic.json";
+  arc::write_file_atomic(p, "{\"a\": 1}");
+  arc::write_file_atomic(p, "{\"a\": 2}");
+  EXPECT_EQ(arc::read_text_file(p), "{\"a\": 2}");
+}
+
 TEST(FileWriter, AtomicWriteIsCheckedToo) {
   const fs::path dir = fresh_dir("atomic");
   const fs::path file = dir / "bindings.json";

@@ -14,6 +14,7 @@
 #include "core/error.h"
 #include "core/input_limits.h"
 #include "core/json.h"
+#include "game/app/all_settings.h"
 #include "replay/script.h"
 
 namespace {
@@ -131,10 +132,11 @@ TEST(InputLimits, LargeFileIsRefusedBeforeItIsRead) {
 }
 
 TEST(InputLimits, ScriptLineAndSizeLimits) {
+  const arc::Settings known = arc::all_settings();
   const std::string header = "arcfire-replay 1\nlevel levels/duel.json\n";
-  std::string e = error_of([&] { arc::replay::parse_script(header + "# " + std::string(5000, 'x') + "\n", "l.replay"); });
+  std::string e = error_of([&] { arc::replay::parse_script(header + "# " + std::string(5000, 'x') + "\n", "l.replay", known); });
   EXPECT_EQ(e.rfind("l.replay:3:1: line of 5002 bytes; lines may be at most 4096", 0), 0u) << e;
-  e = error_of([&] { arc::replay::parse_script(std::string(arc::kMaxScriptFileBytes + 1, '\n'), "big.replay"); });
+  e = error_of([&] { arc::replay::parse_script(std::string(arc::kMaxScriptFileBytes + 1, '\n'), "big.replay", known); });
   EXPECT_EQ(e.rfind("big.replay: 16777217 bytes; a replay script may be at most 16 MiB", 0), 0u) << e;
 }
 
@@ -154,14 +156,15 @@ TEST(InputLimits, JsonParsingCostOfTheWorstAllowedFileIsBounded) {
 }
 
 TEST(InputLimits, ScriptParsingCostIsLinearInTheInput) {
+  const arc::Settings known = arc::all_settings();
   auto make = [](size_t n) {
     std::string s = "arcfire-replay 1\nlevel levels/duel.json\nseed 7\n";
     for (size_t t = 1; t <= n; ++t) s += std::to_string(t) + " axis pitch 0.5\n";
     return s;
   };
   const std::string small = make(5000), big = make(10000);
-  const Cost a = cost_of([&] { arc::replay::parse_script(small, "a.replay"); });
-  const Cost b = cost_of([&] { arc::replay::parse_script(big, "b.replay"); });
+  const Cost a = cost_of([&] { arc::replay::parse_script(small, "a.replay", known); });
+  const Cost b = cost_of([&] { arc::replay::parse_script(big, "b.replay", known); });
   const double input_ratio = double(big.size()) / double(small.size());
   EXPECT_LE(double(b.bytes) / double(a.bytes), input_ratio * 1.15) << a.bytes << " -> " << b.bytes;
   EXPECT_LE(double(b.blocks) / double(a.blocks), input_ratio * 1.15) << a.blocks << " -> " << b.blocks;
@@ -170,9 +173,9 @@ TEST(InputLimits, ScriptParsingCostIsLinearInTheInput) {
 TEST(InputLimits, LongListIsRefusedAtItsKey) {
   const auto doc = arc::JsonDoc::parse("{\n  \"ships\": [" + repeat("1,", 300) + "1]\n}", "l.json");
   arc::JsonObject root(doc, "", &doc->root());
-  const std::string e = error_of([&] { arc::check_list_length(root, "ships", 256); });
+  const std::string e = error_of([&] { root.check_list_length("ships", 256); });
   EXPECT_EQ(e, "l.json:2:3: 'ships' lists 301 entries; at most 256 are allowed");
-  EXPECT_EQ(error_of([&] { arc::check_list_length(root, "props", 1); }), "(no error)");
+  EXPECT_EQ(error_of([&] { root.check_list_length("props", 1); }), "(no error)");
 }
 
 TEST(InputLimits, MessagesStayOneLineWhateverTheFileHolds) {

@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <functional>
+
 #include "core/error.h"
 #include "core/json.h"
 
@@ -74,13 +76,6 @@ TEST(JsonObject, ChoiceListsAllowedValues) {
 TEST(JsonFiles, MissingFileIsAnInputError) {
   EXPECT_NE(error_of([] { JsonDoc::load_file("/nonexistent/x.json"); }).find("/nonexistent/x.json"),
             std::string::npos);
-}
-
-TEST(JsonFiles, AtomicWriteReplacesWholeFile) {
-  std::string p = testing::TempDir() + "/atomic.json";
-  arc::write_file_atomic(p, "{\"a\": 1}");
-  arc::write_file_atomic(p, "{\"a\": 2}");
-  EXPECT_EQ(arc::read_text_file(p), "{\"a\": 2}");
 }
 
 // Byte spans of keys and values, for edits that splice text in place (the effect workbench).

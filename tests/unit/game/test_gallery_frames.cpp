@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "assets/image.h"
+#include "game/app/all_settings.h"
 #include "game/app/scene_resources.h"
 #include "game/render/render_view_builder.h"
 #include "game/render/screen_projection.h"
@@ -53,7 +54,7 @@ TEST(GalleryFrames, EveryEffectFillsAReadablePartOfItsCell) {
   if (!test::headless(why)) GTEST_SKIP() << "no EGL context: " << why;
   Game game = Game::load_level(test::repo("levels/gallery.json"), test::options());
   Renderer renderer(RendererDesc{.offscreen = true});
-  renderer.apply_settings(Settings::defaults());
+  renderer.apply_settings(all_settings());
   const std::vector<ModelId> models = load_scene_resources(renderer, game.world(), arc::data_root());
   HudState no_hud;
   no_hud.show_hud = false;

@@ -18,6 +18,7 @@
 
 #include "assets/image.h"
 #include "assets/model.h"
+#include "game/app/all_settings.h"
 #include "game/app/scene_resources.h"
 #include "game/render/render_view_builder.h"
 #include "game/sim/world.h"
@@ -70,7 +71,7 @@ Coverage own_effect_coverage(bool cockpit, const std::string& dump_name) {
   EXPECT_TRUE(me.beam_firing);
 
   Renderer renderer(RendererDesc{.offscreen = true});
-  renderer.apply_settings(Settings::defaults());
+  renderer.apply_settings(all_settings());
   const std::vector<ModelId> models = load_scene_resources(renderer, w, arc::data_root());
   HudState no_hud;
   no_hud.show_hud = false;
@@ -164,7 +165,7 @@ TEST(TeamColors, BlueAndRedVipersWearTheirColours) {
   Game game = Game::load_level(level, test::options());
   game.step(InputFrame{});
   Renderer renderer(RendererDesc{.offscreen = true});
-  renderer.apply_settings(Settings::defaults());
+  renderer.apply_settings(all_settings());
   const std::vector<ModelId> models = load_scene_resources(renderer, game.world(), arc::data_root());
   HudState no_hud;
   no_hud.show_hud = false;

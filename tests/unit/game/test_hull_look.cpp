@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "assets/image.h"
+#include "game/app/all_settings.h"
 #include "game/app/scene_resources.h"
 #include "game/render/render_view_builder.h"
 #include "game/render/screen_projection.h"
@@ -41,7 +42,7 @@ Frames render_ships(const std::string& level, const glm::vec3& light, const char
   Renderer renderer(RendererDesc{.offscreen = true});
   // The default look (HDR, bloom) without the edge filter: these tests read the shading of
   // the outline pixels, which FXAA blends with the sky (Antialias.* in test_gfx test that).
-  Settings settings = Settings::defaults();
+  Settings settings = all_settings();
   settings.set("render.antialias", "off", "test_hull_look");
   renderer.apply_settings(settings);
   const std::vector<ModelId> models = load_scene_resources(renderer, game.world(), arc::data_root());

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/settings.h"
+#include "game/app/all_settings.h"
 #include "game/app/app_options.h"
 #include "game/app/scene_resources.h"
 #include "game/render/render_view_builder.h"
@@ -35,7 +36,7 @@ struct DepthReads {
 };
 
 DepthReads gallery_depth_reads(const std::string& soft_edges) {
-  Settings s = Settings::defaults();
+  Settings s = all_settings();
   s.set("render.soft_edges", soft_edges, "test");
   Game game = Game::load_level(test::repo("levels/gallery.json"), test::options());
   Renderer r(RendererDesc{.offscreen = true});
@@ -85,9 +86,9 @@ uint64_t skipped_particles_in_gallery(const Settings& s) {
 }
 
 TEST(SceneWork, CullDistanceSettingReachesTheParticleWorld) {
-  Settings near = Settings::defaults();
+  Settings near = all_settings();
   near.set("particles.cull_distance", "100", "test");
-  Settings far = Settings::defaults();
+  Settings far = all_settings();
   far.set("particles.cull_distance", "1e12", "test");
   GameOptions o;
   apply_simulation_settings(near, o);

@@ -20,7 +20,9 @@ TEST(RendererExample, DrawsAView) {
   RenderView view;
   view.meshes.push_back({ship, {0, 0, -20}});
   renderer.set_sprites({load_sprite(data_root() + "/assets/textures/sprite_smoke.png")});
-  renderer.apply_settings(Settings::defaults());
+  Settings settings;
+  register_render_settings(settings);  // the render.* keys at their defaults
+  renderer.apply_settings(settings);
   renderer.render(view, 640, 360);
   Image frame = renderer.read_pixels();
   // example end

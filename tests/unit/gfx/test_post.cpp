@@ -7,6 +7,7 @@
 
 #include <glm/gtc/quaternion.hpp>
 
+#include "game/app/all_settings.h"
 #include "gfx/color_space.h"
 #include "gfx_test_util.h"
 #include "core/data_root.h"
@@ -250,7 +251,7 @@ TEST(Hdr, QualityPresetsSetTheLook) {
   REQUIRE_CONTEXT();
   auto r = make_renderer(false);
   const std::string quality = arc::data_root() + "/assets/settings/quality.json";
-  Settings s = Settings::defaults();
+  Settings s = all_settings();
   r->apply_settings(s);
   EXPECT_FALSE(r->render_settings().hdr) << "the default keeps the 8-bit scene";
   EXPECT_EQ(r->render_settings().antialias, RenderSettings::Antialias::Off);

@@ -9,6 +9,7 @@
 
 #include <glm/gtc/quaternion.hpp>
 
+#include "game/app/all_settings.h"
 #include "gfx/gl_features.h"
 #include "gfx/image_compare.h"
 #include "gfx_test_util.h"
@@ -627,7 +628,7 @@ TEST(Renderer, ShaderReloadKeepsOldProgramsOnError) {
 TEST(Renderer, AppliesQualitySettings) {
   REQUIRE_CONTEXT();
   auto r = make_renderer();
-  Settings s = Settings::defaults();
+  Settings s = all_settings();
   s.apply_preset_file(arc::data_root() + "/assets/settings/quality.json", "low");
   s.set_from_text("render.depth_mode=standard", "--set");
   r->apply_settings(s);

@@ -8,6 +8,8 @@
 #include <filesystem>
 
 #include "particles/effect_library.h"
+#include "particles/effect_schema.h"
+#include "particles/particle_store.h"
 #include "particles/particle_world.h"
 #include "core/data_root.h"
 
@@ -111,6 +113,26 @@ TEST(ParticleWorldDrawnOwners, AttachedClusterFollowsTheDrawnOwner) {
   std::vector<ParticleInstance> out;
   world.collect(camera, out, others);
   EXPECT_NEAR(glm::length(mean_position(out, cluster) + camera.position - now - offset), 0.0, 1e-3);
+}
+
+TEST(EffectSchemaExample, LookUpAKey) {
+  const EffectField& rate = effect_field(EffectBlock::Emitter, "rate");    // kind Number, [0, 1e7]
+  const EffectField* f = effect_field_at("/clusters/0/curves/alpha");       // kind Curve, [0, 1]
+  EXPECT_EQ(std::string(rate.key), "rate");
+  ASSERT_NE(f, nullptr);
+  EXPECT_EQ(std::string(f->key), "alpha");
+  EXPECT_EQ(effect_field_at("/clusters/0/curves/alpha/0"), nullptr) << "inside a value";
+}
+
+TEST(ParticleStoreExample, TakeAndGiveBack) {
+  const uint32_t budget = 4096;
+  ParticleStore store(budget);
+  ParticleBlock b = store.take(300);           // b.capacity == 512, or 0 when none is free
+  std::byte* px = store.column(0);              // ParticlePool binds its columns (particle_pool.h)
+  store.give_back(b);
+  EXPECT_EQ(b.capacity, 512u);
+  EXPECT_NE(px, nullptr);
+  EXPECT_EQ(store.take(300).first, b.first) << "the freed block is handed out again";
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 
 #include "core/error.h"
 #include "core/file_writer.h"
+#include "game/app/all_settings.h"
 #include "game/app/replay_player.h"
 #include "game/app/session_recorder.h"
 #include "game/sim/world.h"
@@ -76,7 +77,7 @@ TEST(RecordingFiles, FullDiskKeepsWholeLinesThatReplay) {
   const std::string text = read(file);
   ASSERT_FALSE(text.empty());
   EXPECT_EQ(text.back(), '\n') << "a line was cut: " << text.substr(text.size() - 40);
-  replay::Script s = replay::load_script(file.string());
+  replay::Script s = replay::load_script(file.string(), all_settings());
   EXPECT_GE(s.hashes.size(), 1u);
   const ReplayOutcome r = play(file);
   EXPECT_EQ(r.exit_code, 0);
@@ -95,7 +96,7 @@ TEST(RecordingFiles, PreviousRecordingKeptAsBakUntilTheFirstSecond) {
     rec.stop(game, "");  // half a second: both stay
   }
   EXPECT_EQ(read(bak), "previous recording\n");
-  EXPECT_TRUE(replay::load_script(file.string()).end_tick.has_value());
+  EXPECT_TRUE(replay::load_script(file.string(), all_settings()).end_tick.has_value());
   // A later session: the .bak still holds the older recording (the short one is dropped) ...
   Game again = Game::load_level(kRange, GameOptions{});
   SessionRecorder rec(file.string(), kRange, again);

@@ -7,7 +7,9 @@
 #include <memory>
 
 #include "core/error.h"
+#include "core/file_writer.h"
 #include "core/json.h"
+#include "game/app/all_settings.h"
 #include "game/app/replay_player.h"
 #include "game/app/serialization_test.h"
 #include "game/app/session_recorder.h"
@@ -73,7 +75,7 @@ TEST(ReplayApp, RecordedSessionReplaysToTheSameHashes) {
     play_live(game, rec, 330);
     rec.finish(game);
   }
-  replay::Script s = replay::load_script(file.string());
+  replay::Script s = replay::load_script(file.string(), all_settings());
   EXPECT_EQ(s.header.particle_budget, 3000u);
   EXPECT_EQ(s.header.substeps, 2);
   ASSERT_EQ(s.header.settings.size(), 1u);
@@ -96,7 +98,7 @@ TEST(ReplayApp, RecordingCutShortStillReplays) {
   // A killed process runs no destructor: leak the recorder instead of finishing it.
   auto* rec = new SessionRecorder(file.string(), kRange, game);
   play_live(game, *rec, 250);
-  replay::Script s = replay::load_script(file.string());
+  replay::Script s = replay::load_script(file.string(), all_settings());
   EXPECT_FALSE(s.end_tick.has_value());
   EXPECT_EQ(s.hashes.back().tick, 240u);
   ReplayOutcome r = play_replay(quiet(file));
@@ -115,7 +117,7 @@ TEST(ReplayApp, UpdateGoldenFillsHashesAndAChangedRunDivergesAtItsFirstTick) {
   EXPECT_EQ(play_replay(o).exit_code, kExitCheckFailed);  // "?" is not a value
   o.update_golden = true;
   EXPECT_EQ(play_replay(o).exit_code, 0);
-  replay::Script filled = replay::load_script(file.string());
+  replay::Script filled = replay::load_script(file.string(), all_settings());
   ASSERT_TRUE(filled.hashes[0].value && filled.hashes[1].value);
   EXPECT_NE(read_text_file(file.string()).find("# keep\n"), std::string::npos);
   EXPECT_TRUE(fs::exists(dir / "golden" / "hashes.txt"));

@@ -2,11 +2,18 @@
 #include <gtest/gtest.h>
 
 #include "core/error.h"
+#include "game/app/all_settings.h"
 #include "replay/script.h"
 
 using namespace arc::replay;
 
 namespace {
+
+// Every setting the game knows: what a `set` line may name.
+const arc::Settings& known() {
+  static const arc::Settings settings = arc::all_settings();
+  return settings;
+}
 
 const char* kGood = R"(# A hand-written script using every line kind.
 arcfire-replay 1
@@ -43,7 +50,7 @@ substeps 2
 
 std::string error_of(const std::string& text) {
   try {
-    parse_script(text, "s.replay");
+    parse_script(text, "s.replay", known());
   } catch (const arc::InputError& e) {
     return e.what();
   }
@@ -55,7 +62,7 @@ const std::string kHead = "arcfire-replay 1\nlevel levels/duel.json\n";
 }  // namespace
 
 TEST(ReplayParse, EveryLineKind) {
-  Script s = parse_script(kGood, "good.replay");
+  Script s = parse_script(kGood, "good.replay", known());
   EXPECT_EQ(s.header.level, "levels/duel.json");
   EXPECT_EQ(s.header.seed, 1101u);
   EXPECT_EQ(s.header.tick_rate, 60);
@@ -107,7 +114,7 @@ TEST(ReplayParse, SettingsToleranceAndSnapshotsLike) {
                               "tolerance 3/255 99.5%\n"
                               "snapshots_like gallery-near_1\n"
                               "5 end\n",
-                          "s.replay");
+                          "s.replay", known());
   ASSERT_TRUE(s.header.quality.has_value());
   EXPECT_EQ(s.header.quality->preset, "high");
   EXPECT_EQ(s.header.quality->line, 3);
@@ -143,7 +150,7 @@ TEST(ReplayParse, CounterExpectations) {
                               "60 expect damage_dealt Player 100..400\n60 expect damage_taken \"Red Leader\" 0..50\n"
                               "60 expect accuracy Player beam 0.2..0.9\n"
                               "60 expect accuracy Player missile 0..1\n60 end\n",
-                          "c.replay");
+                          "c.replay", known());
   ASSERT_EQ(s.expectations.size(), 6u);
   EXPECT_EQ(s.expectations[0].kind, Expectation::Kind::Kills);
   EXPECT_EQ(s.expectations[0].range, (Range{1, 1}));
@@ -158,13 +165,13 @@ TEST(ReplayParse, CounterExpectations) {
 }
 
 TEST(ReplayParse, MissingEndRunsToTheLastStampedTick) {
-  Script s = parse_script(kHead + "10 press afterburner\n250 hash 1\n", "cut.replay");
+  Script s = parse_script(kHead + "10 press afterburner\n250 hash 1\n", "cut.replay", known());
   EXPECT_FALSE(s.end_tick.has_value());
   EXPECT_EQ(s.last_tick(), 250u);
 }
 
 TEST(ReplayParse, DefaultsWhenHeaderIsMinimal) {
-  Script s = parse_script(kHead + "5 end\n", "m.replay");
+  Script s = parse_script(kHead + "5 end\n", "m.replay", known());
   EXPECT_FALSE(s.header.seed.has_value());
   EXPECT_FALSE(s.header.tick_rate.has_value());
   EXPECT_FALSE(s.header.difficulty.has_value());
@@ -264,5 +271,5 @@ INSTANTIATE_TEST_SUITE_P(
     [](const ::testing::TestParamInfo<BadCase>& i) { return std::string(i.param.name); });
 
 TEST(ReplayParse, MissingFileIsAnInputError) {
-  EXPECT_THROW(load_script("tests/replays/no_such_script.replay"), arc::InputError);
+  EXPECT_THROW(load_script("tests/replays/no_such_script.replay", known()), arc::InputError);
 }

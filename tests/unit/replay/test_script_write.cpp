@@ -3,9 +3,20 @@
 
 #include <cmath>
 
+#include "game/app/all_settings.h"
 #include "replay/script.h"
 
 using namespace arc::replay;
+
+namespace {
+
+// Every setting the game knows: what a `set` line may name.
+const arc::Settings& known() {
+  static const arc::Settings settings = arc::all_settings();
+  return settings;
+}
+
+}  // namespace
 
 TEST(ReplayWrite, AxisTextRoundTripsEveryQuantisedValue) {
   for (int q = -127; q <= 127; ++q) {
@@ -61,9 +72,9 @@ snapshots_like other_scene
 21 full_hash ?
 30 end
 )";
-  Script a = parse_script(text, "a.replay");
+  Script a = parse_script(text, "a.replay", known());
   std::string written = write_script(a);
-  Script b = parse_script(written, "b.replay");
+  Script b = parse_script(written, "b.replay", known());
   EXPECT_TRUE(a.same_content(b)) << written;
   EXPECT_EQ(write_script(b), written);
   EXPECT_NE(written.find("\nquality medium\nset render.soft_edges=linear\nset render.scale=0.75\n"
@@ -73,20 +84,20 @@ snapshots_like other_scene
 }
 
 TEST(ReplayWrite, ChangedContentIsNotTheSame) {
-  Script a = parse_script("arcfire-replay 1\nlevel x\n0 axis yaw 0.25\n1 end\n", "a");
-  Script b = parse_script("arcfire-replay 1\nlevel x\n0 axis yaw 0.26\n1 end\n", "b");
+  Script a = parse_script("arcfire-replay 1\nlevel x\n0 axis yaw 0.25\n1 end\n", "a", known());
+  Script b = parse_script("arcfire-replay 1\nlevel x\n0 axis yaw 0.26\n1 end\n", "b", known());
   EXPECT_FALSE(a.same_content(b));
   const std::string head = "arcfire-replay 1\nlevel x\n";
-  EXPECT_FALSE(parse_script(head + "set render.scale=1\n1 end\n", "c")
-                   .same_content(parse_script(head + "set render.scale=0.5\n1 end\n", "d")));
-  EXPECT_FALSE(parse_script(head + "tolerance 5/255 99.9%\n1 end\n", "e")
-                   .same_content(parse_script(head + "tolerance 5/255 99%\n1 end\n", "f")));
-  EXPECT_FALSE(parse_script(head + "quality low\n1 end\n", "g").same_content(parse_script(head + "1 end\n", "h")));
-  EXPECT_TRUE(parse_script(head + "quality low\n1 end\n", "i")
-                  .same_content(parse_script("# moved\n" + head + "\nquality low\n1 end\n", "j")));
+  EXPECT_FALSE(parse_script(head + "set render.scale=1\n1 end\n", "c", known())
+                   .same_content(parse_script(head + "set render.scale=0.5\n1 end\n", "d", known())));
+  EXPECT_FALSE(parse_script(head + "tolerance 5/255 99.9%\n1 end\n", "e", known())
+                   .same_content(parse_script(head + "tolerance 5/255 99%\n1 end\n", "f", known())));
+  EXPECT_FALSE(parse_script(head + "quality low\n1 end\n", "g", known()).same_content(parse_script(head + "1 end\n", "h", known())));
+  EXPECT_TRUE(parse_script(head + "quality low\n1 end\n", "i", known())
+                  .same_content(parse_script("# moved\n" + head + "\nquality low\n1 end\n", "j", known())));
   // Found by tests/fuzz (replay): a sound expectation's column is a source position too.
-  EXPECT_TRUE(parse_script(head + "1 expect sound explosion\n2 end\n", "k")
-                  .same_content(parse_script(head + "1 expect sound   explosion\n2 end\n", "l")));
+  EXPECT_TRUE(parse_script(head + "1 expect sound explosion\n2 end\n", "k", known())
+                  .same_content(parse_script(head + "1 expect sound   explosion\n2 end\n", "l", known())));
 }
 
 TEST(ReplayWrite, RecordedDiffsReplayToTheSameHeldState) {
@@ -108,7 +119,7 @@ TEST(ReplayWrite, RecordedDiffsReplayToTheSameHeldState) {
     prev = live[t];
   }
   text += end_line(live.size());
-  Script s = parse_script(text, "rec.replay");
+  Script s = parse_script(text, "rec.replay", known());
   InputState held;
   size_t next = 0;
   for (size_t t = 0; t < live.size(); ++t) {
@@ -121,12 +132,12 @@ TEST(ReplayWrite, RecordedDiffsReplayToTheSameHeldState) {
 TEST(ReplayWrite, FillHashValuesKeepsEverythingElse) {
   const std::string text =
       "arcfire-replay 1\nlevel x\n# keep me\n+60 hash ?   # after one second\n120 full_hash 12\n120 end\n";
-  Script s = parse_script(text, "f.replay");
+  Script s = parse_script(text, "f.replay", known());
   std::string filled = fill_hash_values(text, s, {0xabcULL, 0xffffffffffffffffULL});
   EXPECT_EQ(filled,
             "arcfire-replay 1\nlevel x\n# keep me\n+60 hash 0000000000000abc   # after one second\n"
             "120 full_hash ffffffffffffffff\n120 end\n");
-  Script t = parse_script(filled, "f.replay");
+  Script t = parse_script(filled, "f.replay", known());
   EXPECT_EQ(t.hashes[0].value, 0xabcULL);
   EXPECT_EQ(t.hashes[0].tick, 60u);
 }

@@ -1,0 +1,12 @@
+// audio/audio_settings.h — the audio.* settings keys, registered by the module that reads them.
+#pragma once
+
+namespace arc {
+
+class Settings;
+
+// Defines audio.volume, audio.effects_volume, audio.mute and audio.voices (never part of the
+// simulation or its hash) at their defaults.
+void register_audio_settings(Settings& s);
+
+}  // namespace arc

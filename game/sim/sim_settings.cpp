@@ -1,0 +1,11 @@
+#include "game/sim/sim_settings.h"
+
+#include "core/settings.h"
+
+namespace arc {
+
+void register_sim_settings(Settings& s) {
+  s.define_integer("sim.substeps", 1, 1, 16, "physics sub-steps per tick; each costs CPU time");
+}
+
+}  // namespace arc
