@@ -134,7 +134,7 @@ TEST(ReplayParse, SettingsToleranceAndSnapshotsLike) {
 
 // Mods in the order they were laid, each with its content hash.
 TEST(ReplayParse, ModLines) {
-  Script s = parse_script(kHead + "mod red_rally 00000000000000ff\nmod big-ships fedcba9876543210\n5 end\n", "s.replay");
+  Script s = parse_script(kHead + "mod red_rally 00000000000000ff\nmod big-ships fedcba9876543210\n5 end\n", "s.replay", known());
   ASSERT_EQ(s.header.mods.size(), 2u);
   EXPECT_EQ(s.header.mods[0].name, "red_rally");
   EXPECT_EQ(s.header.mods[0].hash, 0xffu);
