@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "core/data_layers.h"
 #include "gfx/gl_features.h"
 
 namespace arc {
@@ -49,8 +50,8 @@ GLuint build_program(const std::string& dir, const std::string& vs, const std::s
                      std::string& err) {
   std::string vsrc, fsrc;
   try {
-    vsrc = read_text(dir + "/" + vs);
-    fsrc = read_text(dir + "/" + fs);
+    vsrc = read_text(data_file(dir, vs));
+    fsrc = read_text(data_file(dir, fs));
   } catch (const std::exception& e) {
     err += std::string(e.what()) + "\n";
     return 0;
@@ -59,8 +60,8 @@ GLuint build_program(const std::string& dir, const std::string& vs, const std::s
     size_t eol = fsrc.find('\n');
     fsrc.insert(eol == std::string::npos ? fsrc.size() : eol + 1, defines);
   }
-  GLuint v = compile(GL_VERTEX_SHADER, vsrc, dir + "/" + vs, err);
-  GLuint f = compile(GL_FRAGMENT_SHADER, fsrc, dir + "/" + fs, err);
+  GLuint v = compile(GL_VERTEX_SHADER, vsrc, data_file(dir, vs), err);
+  GLuint f = compile(GL_FRAGMENT_SHADER, fsrc, data_file(dir, fs), err);
   if (!v || !f) {
     if (v) glDeleteShader(v);
     if (f) glDeleteShader(f);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "core/data_layers.h"
 #include "core/error.h"
 #include "core/input_limits.h"
 #include "core/json.h"
@@ -313,11 +314,8 @@ void EffectLibrary::load_directory(const std::string& dir) {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) throw InputError(dir + ": effect folder not found");
-  std::vector<std::string> files;
-  for (const auto& e : fs::directory_iterator(dir, ec))
-    if (e.is_regular_file() && e.path().extension() == ".json") files.push_back(e.path().string());
-  std::sort(files.begin(), files.end());
-  for (const std::string& f : files) load_file(f);
+  // With mods in use, their effects join the folder's and replace those of the same name.
+  for (const std::string& f : data_files(dir, "", ".json")) load_file(f);
 }
 
 void EffectLibrary::load_file(const std::string& path) {

@@ -78,6 +78,15 @@ struct SettingLine {
   bool operator==(const SettingLine&) const = default;
 };
 
+// `mod NAME HASH`: a mod folder laid over the data root (core/data_layers.h) when the script was
+// written, with its content hash; the replay refuses to run under other mods or other content.
+struct ModLine {
+  std::string name;
+  uint64_t hash = 0;
+  int line = 0, col = 0;
+  bool operator==(const ModLine& o) const { return name == o.name && hash == o.hash; }
+};
+
 // `tolerance 5/255 99.9%`: how far a snapshot may differ from its golden image.
 struct SnapshotTolerance {
   int max_channel_diff = 5;   // in 1/255 steps, 0..255
@@ -104,6 +113,7 @@ struct Header {
   std::optional<QualityLine> quality;
   std::vector<SettingLine> settings;
   std::optional<SnapshotTolerance> tolerance;  // absent: image_compare's 5/255 on 99.9 %
+  std::vector<ModLine> mods;                   // in the order they were laid
   // `snapshots_like NAME`: snapshots compare with golden/NAME/ (another script's frames, which
   // this scene must look like) and --update-golden leaves those images alone. "": its own.
   std::string snapshots_like;

@@ -196,11 +196,28 @@ SnapshotTolerance parse_tolerance(LineParser& lp) {
   return tol;
 }
 
+// `mod NAME HASH`: the mod's folder name and its 16-digit hexadecimal content hash.
+void parse_mod(LineParser& lp, Header& h) {
+  const Token& name = lp.take("mod name (its folder's name)");
+  if (!valid_name(name.text)) lp.fail(name, "mod name must be 1 to 64 of A-Z a-z 0-9 _ -, got '" + name.text + "'");
+  for (const ModLine& m : h.mods)
+    if (m.name == name.text) lp.fail(name, "mod '" + name.text + "' is named twice");
+  const Token& hash = lp.take("the mod's content hash (16 hexadecimal digits)");
+  if (hash.text.size() != 16 || hash.text.find_first_not_of("0123456789abcdef") != std::string::npos)
+    lp.fail(hash, "mod hash must be 16 lowercase hexadecimal digits, got '" + hash.text + "'");
+  h.mods.push_back({name.text, std::stoull(hash.text, nullptr, 16), lp.line, name.col});
+}
+
 void parse_header_line(LineParser& lp, Header& h, std::vector<std::string>& seen, const Settings& known) {
   const Token& key = lp.tokens[lp.next++];
   if (key.text == "set") {
     parse_setting(lp, h, seen, known);
     lp.done("the setting");
+    return;
+  }
+  if (key.text == "mod") {
+    parse_mod(lp, h);
+    lp.done("the mod");
     return;
   }
   if (seen_before(seen, key.text)) lp.fail(key, "header key '" + key.text + "' appears twice");
@@ -242,7 +259,7 @@ void parse_header_line(LineParser& lp, Header& h, std::vector<std::string>& seen
   } else {
     lp.fail(key, "unknown header key '" + key.text +
                      "'; allowed: level, seed, tick_rate, difficulty, build, snapshot_size, particle_budget, "
-                     "lightning_interval, substeps, quality, set, tolerance, snapshots_like, or a tick-stamped line");
+                     "lightning_interval, substeps, quality, set, mod, tolerance, snapshots_like, or a tick-stamped line");
   }
   lp.done(key.text);
 }

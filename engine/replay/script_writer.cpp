@@ -144,7 +144,8 @@ bool Header::same_content(const Header& o) const {
          difficulty == o.difficulty && build == o.build && snapshot_width == o.snapshot_width &&
          snapshot_height == o.snapshot_height && particle_budget == o.particle_budget &&
          lightning_interval == o.lightning_interval && substeps == o.substeps && preset == other_preset &&
-         same_settings(settings, o.settings) && tolerance == o.tolerance && snapshots_like == o.snapshots_like;
+         same_settings(settings, o.settings) && mods == o.mods && tolerance == o.tolerance &&
+         snapshots_like == o.snapshots_like;
 }
 
 bool Script::same_content(const Script& o) const {
@@ -181,6 +182,7 @@ std::string header_text(const Header& h) {
   if (h.substeps) s += "substeps " + std::to_string(*h.substeps) + "\n";
   if (h.quality) s += "quality " + h.quality->preset + "\n";
   for (const SettingLine& line : h.settings) s += "set " + line.key + "=" + line.value + "\n";
+  for (const ModLine& m : h.mods) s += "mod " + m.name + " " + hex64(m.hash) + "\n";
   if (h.tolerance)
     s += "tolerance " + std::to_string(h.tolerance->max_channel_diff) + "/255 " +
          shortest_number_text(h.tolerance->min_percent) + "%\n";

@@ -8,13 +8,16 @@
 #include <filesystem>
 #include <iostream>
 
-#include "core/error.h"
 #include "audio/sound_library.h"
+#include "core/data_layers.h"
 #include "core/data_root.h"
+#include "core/error.h"
 #include "core/file_writer.h"
 #include "core/json.h"
 #include "game/app/effect_preview.h"
 #include "game/app/input_bindings.h"
+#include "game/app/user_settings.h"
+#include "replay/script.h"
 
 namespace arc {
 namespace {
@@ -48,9 +51,15 @@ void apply_simulation_settings(const Settings& s, GameOptions& game) {
 
 std::string resolve_data_path(const std::string& path, const std::string& option, const std::string& root) {
   namespace fs = std::filesystem;
-  if (fs::is_regular_file(path)) return path;
-  fs::path in_root = fs::path(root) / path;
-  if (fs::path(path).is_relative() && fs::is_regular_file(in_root)) return in_root.string();
+  std::error_code ec;
+  const std::string in_root = data_file(root, path);  // a mod's file first, then the data root's
+  const bool relative = fs::path(path).is_relative();
+  // Named from inside the data root itself (levels/duel.json run in the source tree): a mod
+  // that replaces that file wins, as it does for every file the game finds itself.
+  if (relative && !data_layers().mod_of(in_root).empty() && fs::equivalent(path, fs::path(root) / path, ec))
+    return in_root;
+  if (fs::is_regular_file(path, ec)) return path;
+  if (relative && fs::is_regular_file(in_root, ec)) return in_root;
   throw InputError(option + " " + path + ": no such file");
 }
 
@@ -59,6 +68,7 @@ namespace {
 // Options as written on the command line, before they are checked and resolved.
 struct CommandLineText {
   std::string data;
+  std::vector<std::string> mods;
   bool version = false;
   std::string size = "1280x720";
   std::string quality;
@@ -115,6 +125,9 @@ void define_options(CLI::App& app, AppOptions& o, CommandLineText& t) {
                  "open the effect workbench on an effect file (default: the first in assets/effects)")
       ->expected(0, 1);
   app.add_flag("--version", t.version, "print the version and the data folder in use, then exit");
+  app.add_option("--mod", t.mods,
+                 "lay a mod folder over the data (repeatable; later mods over earlier ones); a window without "
+                 "--mod uses the mods of the player's settings");
 }
 
 void resolve_preview_options(const CLI::App& app, AppOptions& o) {
@@ -130,6 +143,24 @@ void resolve_preview_options(const CLI::App& app, AppOptions& o) {
   if (!bad_backdrop.empty()) throw InputError(bad_backdrop);
 }
 
+// The mods over the data root: --mod's, else in a window the player's (settings.json "mods"). A
+// bad --mod is bad input; a player's mod that no longer loads is skipped with a line, so a
+// deleted folder cannot lock the player out of the game.
+void lay_mods(const std::vector<std::string>& named, bool headless, const std::string& root) {
+  DataLayers layers(root);
+  for (const std::string& dir : named) layers.add_mod(dir);
+  if (named.empty() && !headless) {
+    for (const std::string& dir : user_mods(user_config_dir())) {
+      try {
+        layers.add_mod(dir);
+      } catch (const InputError& e) {
+        std::fprintf(stderr, "arcfire: settings.json: mod skipped: %s\n", e.what());
+      }
+    }
+  }
+  use_data_layers(std::move(layers));
+}
+
 // Files, settings and choices of the parsed command line checked and resolved into `o`;
 // InputError for anything wrong.
 void resolve_options(const CLI::App& app, const CommandLineText& t, AppOptions& o) {
@@ -137,12 +168,12 @@ void resolve_options(const CLI::App& app, const CommandLineText& t, AppOptions& 
   // A default file is the data root's; a named one is looked for as given, then under the root.
   auto resolve = [&](const std::string& path, const std::string& option) {
     const bool given = app.get_option(option)->count() > 0;
-    return given ? resolve_data_path(path, option, root) : resolve_data_path(root + "/" + path, option, root);
+    return given ? resolve_data_path(path, option, root) : resolve_data_path(data_file(root, path), option, root);
   };
   o.level = resolve(o.level, "--level");
   if (app.get_option("--bindings")->count() > 0 && !std::filesystem::exists(o.bindings_path)) {
     // A new bindings file starts as a copy of the defaults, written atomically.
-    write_file_atomic(o.bindings_path, read_text_file(root + "/assets/settings/bindings.json"));
+    write_file_atomic(o.bindings_path, read_text_file(data_file(root, "assets/settings/bindings.json")));
     std::printf("arcfire: wrote default bindings to %s; edit it to remap keys\n", o.bindings_path.c_str());
   }
   o.bindings_path = resolve(o.bindings_path, "--bindings");
@@ -155,7 +186,7 @@ void resolve_options(const CLI::App& app, const CommandLineText& t, AppOptions& 
   // preset) unless a preset is named.
   const std::string preset = !t.quality.empty() ? t.quality : o.demo ? "high" : "";
   if (!preset.empty())
-    o.settings.apply_preset_file(root + "/assets/settings/quality.json", preset);
+    o.settings.apply_preset_file(data_file(root, "assets/settings/quality.json"), preset);
   for (const auto& s : t.sets) o.settings.set_from_text(s, "--set " + s);
   if (!t.difficulty.empty()) {
     if (t.difficulty == "easy") o.game.difficulty = Difficulty::Easy;
@@ -215,8 +246,11 @@ std::optional<int> parse_command_line(int argc, char** argv, AppOptions& o) {
     const DataRoot root = resolve_data_root(text.data, std::getenv("ARCFIRE_DATA"), executable_path());
     set_data_root(root.dir);
     o.game.root_dir = root.dir;
+    lay_mods(text.mods, o.headless, root.dir);
     if (text.version) {
       std::printf("arcfire %s\ndata: %s (%s)\n", ARCFIRE_VERSION, root.dir.c_str(), root.source.c_str());
+      for (const ModLayer& m : data_layers().mods())
+        std::printf("mod: %s %s (%s)\n", m.name.c_str(), replay::hex64(m.hash).c_str(), m.dir.c_str());
       return 0;
     }
     resolve_options(app, text, o);

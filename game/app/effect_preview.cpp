@@ -12,6 +12,7 @@
 
 #include "assets/image.h"
 #include "assets/model.h"
+#include "core/data_layers.h"
 #include "core/error.h"
 #include "core/file_writer.h"
 #include "core/json.h"
@@ -33,10 +34,8 @@ constexpr double kTickRate = 60.0;  // the timeline's default tick
 
 std::vector<std::string> model_names(const std::string& root_dir) {
   std::vector<std::string> names;
-  std::error_code ec;
-  for (const auto& e : fs::directory_iterator(root_dir + "/assets/models", ec))
-    if (e.path().extension() == ".glb" && e.path().stem() != "wall") names.push_back(e.path().stem().string());
-  std::sort(names.begin(), names.end());
+  for (const std::string& f : data_files(root_dir, "assets/models", ".glb"))
+    if (fs::path(f).stem() != "wall") names.push_back(fs::path(f).stem().string());
   return names;
 }
 
@@ -194,10 +193,10 @@ int run_preview(const PreviewOptions& o) {
   renderer.count_particle_fragments(true);
   load_sprites(renderer, o.root_dir);
   if (o.backdrop == "wall") {
-    const ModelData wall = load_model(o.root_dir + "/assets/models/wall.glb");
+    const ModelData wall = load_model(data_file(o.root_dir, "assets/models/wall.glb"));
     view.meshes.push_back(wall_instance(renderer.add_model(wall), wall, bounds, view.camera));
   } else if (o.backdrop != "space") {
-    view.meshes.push_back({renderer.add_model(load_model(o.root_dir + "/assets/models/" + o.backdrop + ".glb"))});
+    view.meshes.push_back({renderer.add_model(load_model(data_file(o.root_dir, "assets/models/" + o.backdrop + ".glb")))});
   }
 
   ParticleCamera cam;

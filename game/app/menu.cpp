@@ -158,7 +158,7 @@ std::string Menu::item_label(Item item, int index) const {
     case Item::Quit: return "Quit";
     case Item::Mission: {
       const MissionInfo& m = *listed()[size_t(index)];
-      std::string label = std::to_string(m.order) + ". " + m.title;
+      std::string label = (m.mod.empty() ? "" : "[" + m.mod + "] ") + std::to_string(m.order) + ". " + m.title;
       label.resize(std::max<size_t>(label.size() + 2, 24), ' ');
       return label + "best: " + best_text(m.path);
     }

@@ -7,6 +7,7 @@
 #include <memory>
 #include <sstream>
 
+#include "core/data_layers.h"
 #include "core/error.h"
 #include "core/file_writer.h"
 #include "core/json.h"
@@ -94,11 +95,11 @@ std::string gl_renderer_of(const std::string& context) {
 
 Menu make_menu(const AppOptions& o) {
   const std::string root = o.game.root_dir;
-  UserFiles files = load_user_files(user_config_dir(), root + "/assets/settings/quality.json");
-  Bindings b = load_bindings(root + "/assets/settings/bindings.json");
+  UserFiles files = load_user_files(user_config_dir(), data_file(root, "assets/settings/quality.json"));
+  Bindings b = load_bindings(data_file(root, "assets/settings/bindings.json"));
   Bindings flown = b;
   apply_user_settings(files.settings, flown);
-  return Menu(load_mission_catalog(root + "/levels", root), files, flown, b, root + "/assets/settings/quality.json");
+  return Menu(load_mission_catalog(root + "/levels", root), files, flown, b, data_file(root, "assets/settings/quality.json"));
 }
 
 }  // namespace
@@ -153,7 +154,7 @@ int run_menu_script(const AppOptions& o) {
   const std::vector<UiInput> inputs = parse_ui_inputs(read_text_file(o.menu_script), o.menu_script);
   if (!o.out_dir.empty()) check_output_dir(o.out_dir, "--out");  // before any screen is driven
   MenuRun run{o, o.out_dir, make_menu(o), nullptr, nullptr};
-  const std::string attract = o.game.root_dir + "/levels/attract.json";
+  const std::string attract = data_file(o.game.root_dir, "levels/attract.json");
   run.load(attract, o.game.difficulty);
   run.advance(180);
   if (!run.out.empty()) {

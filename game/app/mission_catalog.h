@@ -1,8 +1,10 @@
 // game/app/mission_catalog.h — the levels the menu lists, from their "mission" blocks.
 //
-// load_mission_catalog() reads every *.json of a folder as a level (validated like
-// --level), keeps those with a "mission" block and sorts them by category, then order. Two
-// levels of one category with the same order are an InputError at the second one's `order`.
+// load_mission_catalog() reads every *.json of a folder, and of the same folder in every mod in
+// use (core/data_layers.h), as a level (validated like --level), keeps those with a "mission"
+// block and sorts them: the game's own first, then each mod's apart; within each, by category,
+// then order. Two levels of one category and one mod with the same order are an InputError at
+// the second one's `order`. "Next mission" stays within the mod.
 //
 // Example, compiled as AppExamples.NextMission in tests/unit/app/test_app_examples.cpp:
 //   std::vector<MissionInfo> all = load_mission_catalog("levels", ".");
@@ -20,6 +22,7 @@ struct MissionInfo {
   std::string title, briefing, objective;
   int order = 0;
   MissionCategory category = MissionCategory::Mission;
+  std::string mod;   // the mod folder's name the level comes from ("" for the game's own)
 };
 
 std::vector<MissionInfo> load_mission_catalog(const std::string& levels_dir, const std::string& root_dir);

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "core/data_layers.h"
 #include "core/data_root.h"
 #include "core/error.h"
 #include "core/json.h"
@@ -44,11 +45,31 @@ replay::InputState to_input_state(const InputFrame& f) {
 
 std::string data_root_of(const GameOptions& options) { return options.root_dir == "." ? data_root() : options.root_dir; }
 
+void check_script_mods(const replay::Script& s) {
+  const std::vector<ModLayer>& laid = data_layers().mods();
+  for (size_t i = 0; i < s.header.mods.size(); ++i) {
+    const replay::ModLine& m = s.header.mods[i];
+    const std::string at = s.path + ":" + std::to_string(m.line) + ":" + std::to_string(m.col) + ": ";
+    if (i >= laid.size() || laid[i].name != m.name)
+      throw InputError(at + "recorded with mod '" + m.name + "' (mod " + std::to_string(i + 1) + " of " +
+                       std::to_string(s.header.mods.size()) + "); this run lays " +
+                       (i < laid.size() ? "'" + laid[i].name + "' there" : "no such mod") +
+                       ": replay it with the script's --mod folders, in the script's order");
+    if (laid[i].hash != m.hash)
+      throw InputError(at + "mod '" + m.name + "' (" + laid[i].dir + ") holds other data than when recorded (content hash " +
+                       replay::hex64(laid[i].hash) + ", recorded " + replay::hex64(m.hash) + ")");
+  }
+  if (laid.size() > s.header.mods.size())
+    throw InputError(s.path + ": recorded without mod '" + laid[s.header.mods.size()].name +
+                     "', which this run lays over the data: replay it without that --mod (or settings.json's mods)");
+}
+
 std::string resolve_script_level(const replay::Script& s, const std::string& root) {
   namespace fs = std::filesystem;
+  check_script_mods(s);
   const std::string& level = s.header.level;
   if (fs::exists(level)) return level;
-  fs::path under_root = fs::path(root) / level;
+  const fs::path under_root = data_file(root, level);  // a mod's level first
   if (!fs::path(level).is_absolute() && fs::exists(under_root)) return under_root.string();
   throw InputError(s.path + ":" + std::to_string(s.header.level_line) + ":1: level file '" + level +
                    "' not found (looked in the working folder and in " + root + ")");
@@ -57,7 +78,7 @@ std::string resolve_script_level(const replay::Script& s, const std::string& roo
 Settings script_settings(const replay::Script& s, Settings settings, const std::string& root) {
   if (s.header.quality) {
     const replay::QualityLine& q = *s.header.quality;
-    const std::string file = root + "/assets/settings/quality.json";
+    const std::string file = data_file(root, "assets/settings/quality.json");
     const std::vector<std::string> names = Settings::preset_names(file);
     if (std::find(names.begin(), names.end(), q.preset) == names.end())
       throw InputError(s.path + ":" + std::to_string(q.line) + ":" + std::to_string(q.col) + ": unknown quality preset '" +

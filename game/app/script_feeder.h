@@ -26,6 +26,9 @@ std::string data_root_of(const GameOptions& options);
 // The level a script names: as written (relative to the working folder), else relative to
 // root_dir, so scripts run from any folder. InputError at the level line when neither exists.
 std::string resolve_script_level(const replay::Script& script, const std::string& root_dir);
+// InputError unless the mods in use (core/data_layers.h) are the script's `mod` lines: the same
+// folders by name, in the same order, with the same content hash. resolve_script_level() checks.
+void check_script_mods(const replay::Script& script);
 
 // The settings a script runs under: `base` (the command line's), then the script's `quality`
 // preset (from root_dir/assets/settings/quality.json), then its `set` lines.

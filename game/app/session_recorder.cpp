@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "core/data_layers.h"
 #include "core/error.h"
 #include "core/file_writer.h"
 #include "game/app/script_feeder.h"
@@ -101,6 +102,7 @@ SessionRecorder::SessionRecorder(const std::string& path, const std::string& lev
   h.tick_rate = static_cast<int>(tick_rate_);
   h.difficulty = difficulty_name(static_cast<Difficulty>(w.difficulty));
   h.build = build_id;
+  for (const ModLayer& m : data_layers().mods()) h.mods.push_back({m.name, m.hash});  // replays refuse other data
   // The settings that change the simulation travel with the recording, so a session played
   // with --quality low replays exactly under any other quality.
   h.particle_budget = w.options.particle_budget;

@@ -167,6 +167,11 @@ UserSettings parse_settings(const std::string& text, const std::string& path,
   s.developer_panel = r.boolean("developer_panel", s.developer_panel);
   parse_keys(r, s);
   parse_render(r, s);
+  if (auto m = r.get("mods")) {
+    const std::vector<JsonValue> list = m->array();
+    if (list.size() > kMaxUserMods) m->fail("'mods' lists at most " + std::to_string(kMaxUserMods) + " folders");
+    for (const JsonValue& v : list) s.mods.push_back(v.string());
+  }
   r.finish();
   return s;
 }
@@ -185,6 +190,17 @@ Progress parse_progress(const std::string& text, const std::string& path) {
   return p;
 }
 
+std::vector<std::string> user_mods(const std::string& dir) {
+  const std::string path = dir + "/settings.json";
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return {};
+  try {
+    return parse_settings(read_text_file(path), path, {}).mods;
+  } catch (const InputError&) {
+    return {};  // load_user_files() reports it and keeps the file as .bak
+  }
+}
+
 std::string settings_json(const UserSettings& s) {
   nlohmann::ordered_json j;
   j["format"] = kFormat;
@@ -200,6 +216,7 @@ std::string settings_json(const UserSettings& s) {
   for (const auto& [id, key] : s.keys) j["keys"][id] = key;
   j["render"] = nlohmann::ordered_json::object();
   for (const auto& [key, value] : s.render) j["render"][key] = value;
+  if (!s.mods.empty()) j["mods"] = s.mods;
   return j.dump(2) + "\n";
 }
 

@@ -3,7 +3,8 @@
 // Two JSON files in user_config_dir() ($XDG_CONFIG_HOME/arcfire, default ~/.config/arcfire):
 //   settings.json  quality preset and single render settings over it, mouse sensitivity and Y
 //                  inversion, gamepad dead zone, field of view, fullscreen, vsync, the
-//                  developer panel's switch, and the keys the player remapped (action → key)
+//                  developer panel's switch, the keys the player remapped (action → key)
+//                  and the mod folders to play with
 //   progress.json  the best result per mission and difficulty
 // Both are written atomically (core/file_writer.h write_file_atomic). A file that does not parse or
 // validate is never lost silently: load_user_files() copies it to NAME.bak, writes the defaults
@@ -25,6 +26,8 @@
 
 namespace arc {
 
+inline constexpr size_t kMaxUserMods = 16;
+
 // The quality choice that applies no preset: all_settings().
 inline constexpr const char* kDefaultQuality = "default";
 
@@ -41,6 +44,7 @@ struct UserSettings {
   bool developer_panel = false;     // F1 opens the tweak panel in the game (always with --dev)
   std::map<std::string, std::string> keys;  // remap action id (key_remap.h) → key name
   std::map<std::string, std::string> render;  // setting key (core/settings.h) → value, over the preset
+  std::vector<std::string> mods;  // mod folders laid over the data in a window (core/data_layers.h) unless --mod is given
   bool operator==(const UserSettings&) const = default;
 };
 
@@ -77,6 +81,8 @@ std::string user_config_dir();
 // Reads both files; a missing file gives defaults, a bad one is kept as .bak and replaced.
 // `quality_file` lists the allowed quality presets.
 UserFiles load_user_files(const std::string& dir, const std::string& quality_file);
+// The mod folders of `dir`/settings.json; none when it is missing or does not load.
+std::vector<std::string> user_mods(const std::string& dir);
 // Positioned InputError for a bad file (load_user_files catches it).
 UserSettings parse_settings(const std::string& text, const std::string& path,
                             const std::vector<std::string>& quality_presets);

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <epoxy/gl.h>
 
+#include "core/data_layers.h"
 #include "core/error.h"
 #include "game/app/frame_time_log.h"
 #include "game/app/scene_resources.h"
@@ -41,13 +42,13 @@ void WindowSession::report_screenshots(const std::vector<ScreenshotWriter::Done>
 void WindowSession::setup() {
   load_user_files_and_bindings();
   input_.emplace(bindings_);
-  hud_.rules = load_hud_rules(game_options_.root_dir + "/assets/settings/hud.json");
+  hud_.rules = load_hud_rules(data_file(game_options_.root_dir, "assets/settings/hud.json"));
   level_ = options_.level;
   if (!options_.level_given) {
-    level_ = game_options_.root_dir + "/levels/attract.json";
-    Bindings defaults = load_bindings(game_options_.root_dir + "/assets/settings/bindings.json");
+    level_ = data_file(game_options_.root_dir, "levels/attract.json");
+    Bindings defaults = load_bindings(data_file(game_options_.root_dir, "assets/settings/bindings.json"));
     menu_.emplace(load_mission_catalog(game_options_.root_dir + "/levels", game_options_.root_dir), user_, bindings_,
-                  defaults, game_options_.root_dir + "/assets/settings/quality.json");
+                  defaults, data_file(game_options_.root_dir, "assets/settings/quality.json"));
   } else {
     menu_.emplace(user_);  // the pause screen only
   }
@@ -76,10 +77,13 @@ void WindowSession::setup() {
   if (!audio_->engine().active()) notices_.show("Sound off: " + audio_->engine().notice(), window_->time_seconds(), 6.0);
   if (!user_.message.empty() && !menu_->has_main()) notices_.show(user_.message, window_->time_seconds(), 15.0);
   // The menu launches any level: watch them all (a file first watched later would count as changed).
-  reload_.watch(menu_->has_main() ? game_options_.root_dir + "/levels" : level_, HotReload::Group::Data);
-  reload_.watch(game_options_.root_dir + "/assets/ships", HotReload::Group::Data);
-  reload_.watch(game_options_.root_dir + "/assets/effects", HotReload::Group::Data);
-  reload_.watch(game_options_.root_dir + "/shaders", HotReload::Group::Shaders);
+  // Each folder is watched in the data root and in every mod that has it.
+  const std::string& root = game_options_.root_dir;
+  if (!menu_->has_main()) reload_.watch(level_, HotReload::Group::Data);
+  for (const char* dir : {"levels", "assets/ships", "assets/effects", "shaders"})
+    for (const std::string& d : data_dirs(root, dir))
+      if (menu_->has_main() || std::string(dir) != "levels")
+        reload_.watch(d, std::string(dir) == "shaders" ? HotReload::Group::Shaders : HotReload::Group::Data);
   reload_.watch(options_.sounds_path, HotReload::Group::Sounds);
   reload_.update(window_->time_seconds());
 }

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "core/data_layers.h"
 #include "core/error.h"
 #include "game/app/menu_input.h"
 #include "game/app/scene_resources.h"
@@ -24,7 +25,7 @@ WindowSession::WindowSession(const AppOptions& options)
 // the bindings file with the user's keys, sensitivity and inversion over it, unless the file
 // was named with --bindings, which wins.
 void WindowSession::load_user_files_and_bindings() {
-  user_ = load_user_files(user_config_dir(), game_options_.root_dir + "/assets/settings/quality.json");
+  user_ = load_user_files(user_config_dir(), data_file(game_options_.root_dir, "assets/settings/quality.json"));
   if (!user_.message.empty()) std::fprintf(stderr, "arcfire: %s\n", user_.message.c_str());
   bindings_ = load_bindings(options_.bindings_path);
   if (!options_.bindings_given) apply_user_settings(user_.settings, bindings_);
@@ -39,7 +40,7 @@ Settings WindowSession::user_render_settings() const {
   const UserSettings& us = menu_ ? menu_->settings() : user_.settings;
   Settings s;
   try {
-    s = user_quality_settings(us, game_options_.root_dir + "/assets/settings/quality.json");
+    s = user_quality_settings(us, data_file(game_options_.root_dir, "assets/settings/quality.json"));
     for (const std::string& set : options_.setting_overrides) s.set_from_text(set, "--set " + set);
   } catch (const InputError&) {
     return options_.settings;  // a preset the quality file no longer has: the command line's settings
@@ -89,7 +90,7 @@ void WindowSession::end_recording(const char* why) {
   recorder_.reset();
 }
 
-std::string WindowSession::attract_level() const { return game_options_.root_dir + "/levels/attract.json"; }
+std::string WindowSession::attract_level() const { return data_file(game_options_.root_dir, "levels/attract.json"); }
 
 void WindowSession::launch(const std::string& level, Difficulty difficulty) {
   end_recording("launch of another level");

@@ -2,6 +2,7 @@
 // like every other data file (path:line:col errors); the numbers live in the file, not here.
 #include <filesystem>
 
+#include "core/data_layers.h"
 #include "core/json.h"
 #include "game/sim/defs.h"
 #include "game/sim/geometry.h"
@@ -9,7 +10,7 @@
 namespace arc {
 
 AiDifficultyTable load_ai_difficulties(const std::string& root_dir) {
-  auto doc = JsonDoc::load_file((std::filesystem::path(root_dir) / "assets/settings/ai.json").string());
+  auto doc = JsonDoc::load_file(data_file(root_dir, "assets/settings/ai.json"));
   JsonObject root(doc, "", &doc->root());
   AiDifficultyTable table;
   const char* names[] = {"easy", "normal", "hard"};

@@ -4,6 +4,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/data_layers.h"
 #include "core/error.h"
 #include "game/sim/def_parsing.h"
 #include "game/sim/defs.h"
@@ -54,7 +55,7 @@ void load_class_of(LevelDef& L, const ShipSpawnDef& d, const JsonValue& cls, con
   if (L.classes.count(d.ship_class)) return;
   if (d.ship_class.empty() || d.ship_class.find_first_of("/\\.") != std::string::npos)
     cls.fail("'class' must be a ship class name (a file stem in assets/ships/), got \"" + d.ship_class + "\"");
-  std::string file = (std::filesystem::path(root_dir) / "assets/ships" / (d.ship_class + ".json")).string();
+  std::string file = data_file(root_dir, "assets/ships/" + d.ship_class + ".json");  // a mod's class first
   if (!std::filesystem::exists(file))
     cls.fail("ship class '" + d.ship_class + "' not found: no file " + file);
   L.classes.emplace(d.ship_class, std::make_shared<const ShipClassDef>(load_ship_class(file, d.ship_class)));

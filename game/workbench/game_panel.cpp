@@ -7,6 +7,7 @@
 #include <imgui.h>
 
 #include "assets/image.h"
+#include "core/data_layers.h"
 #include "core/error.h"
 #include "particles/sprites.h"
 
@@ -61,13 +62,11 @@ bool setting_widget(const SettingDef& d, std::string& text) {
 }  // namespace
 
 GamePanel::GamePanel(std::string root_dir) : root_dir_(std::move(root_dir)) {
-  for (const auto& e : fs::directory_iterator(fs::path(root_dir_) / "assets/effects"))
-    if (e.path().extension() == ".json") effect_files_.push_back(e.path().string());
-  std::sort(effect_files_.begin(), effect_files_.end());
+  effect_files_ = data_files(root_dir_, "assets/effects", ".json");
   std::vector<uint32_t> names;
   for (std::string_view name : kSpriteNames) {
-    const fs::path png = fs::path(root_dir_) / ("assets/textures/sprite_" + std::string(name) + ".png");
-    thumbnails_.push_back(std::make_unique<UiTexture>(load_image(png.string())));
+    const std::string png = data_file(root_dir_, "assets/textures/sprite_" + std::string(name) + ".png");
+    thumbnails_.push_back(std::make_unique<UiTexture>(load_image(png)));
     names.push_back(thumbnails_.back()->gl_name());
   }
   fields_.set_sprite_thumbnails(std::move(names));

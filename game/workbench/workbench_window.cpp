@@ -12,6 +12,7 @@
 #include "assets/image.h"
 #include "assets/model.h"
 #include "assets/screenshot_writer.h"
+#include "core/data_layers.h"
 #include "core/error.h"
 #include "core/json.h"
 #include "game/workbench/effect_document.h"
@@ -35,22 +36,17 @@ namespace fs = std::filesystem;
 
 constexpr float kPanelWidth = 460.0f;  // px: the longest field label with its unit fits beside its widget
 
-std::vector<std::string> effect_files(const std::string& root) {
-  std::vector<std::string> files;
-  for (const auto& e : fs::directory_iterator(fs::path(root) / "assets/effects"))
-    if (e.path().extension() == ".json") files.push_back(e.path().string());
-  std::sort(files.begin(), files.end());
-  return files;
-}
+// With mods in use, a mod's effects are listed with the game's and saved where they came from.
+std::vector<std::string> effect_files(const std::string& root) { return data_files(root, "assets/effects", ".json"); }
 
 // The ship models (the "model" of each assets/ships/*.json) and the wall, into the renderer.
 std::string sprite_path(const std::string& root, std::string_view name) {
-  return (fs::path(root) / ("assets/textures/sprite_" + std::string(name) + ".png")).string();
+  return data_file(root, "assets/textures/sprite_" + std::string(name) + ".png");
 }
 
 void load_stage_models(Renderer& renderer, const std::string& root, WorkbenchStage& stage) {
   auto load = [&](const std::string& path) {
-    const ModelData data = load_model((fs::path(root) / path).string());
+    const ModelData data = load_model(data_file(root, path));
     StageModel m;
     m.name = fs::path(path).stem().string();
     m.id = renderer.add_model(data);
@@ -59,10 +55,7 @@ void load_stage_models(Renderer& renderer, const std::string& root, WorkbenchSta
     m.radius = std::max(0.5, double(data.radius));
     return m;
   };
-  std::vector<std::string> ship_files;
-  for (const auto& e : fs::directory_iterator(fs::path(root) / "assets/ships"))
-    if (e.path().extension() == ".json") ship_files.push_back(e.path().string());
-  std::sort(ship_files.begin(), ship_files.end());
+  const std::vector<std::string> ship_files = data_files(root, "assets/ships", ".json");
   std::vector<StageModel> ships;
   for (const std::string& f : ship_files) {
     const nlohmann::json j = nlohmann::json::parse(read_text_file(f), nullptr, true, true);

@@ -5,6 +5,7 @@
 
 #include "core/error.h"
 #include "particles/effect_library.h"
+#include "core/data_layers.h"
 #include "core/data_root.h"
 
 namespace arc {
@@ -68,6 +69,27 @@ TEST(EffectFiles, ShippedEffectsLoad) {
   for (const ClusterDef& c : boom.clusters)
     burns_to_smoke |= c.burn.exact(0.0f) == 1.0f && c.burn.exact(1.0f) == 0.0f;
   EXPECT_TRUE(burns_to_smoke);
+}
+
+// The example mod (examples/mods/red_rally) laid over the data: its shield hit replaces the
+// game's blue one with gold, its rally beacon joins the game's effects, the rest stay the game's.
+TEST(EffectFiles, ExampleModReplacesAndAddsEffects) {
+  const std::string root = arc::data_root();
+  DataLayers layers(root);
+  layers.add_mod(arc::build_source_tree() + "/examples/mods/red_rally");
+  use_data_layers(layers);
+  EffectLibrary lib;
+  lib.load_directory(root + "/assets/effects");
+  use_data_layers(DataLayers());
+  ASSERT_TRUE(lib.has("rally_beacon"));
+  EXPECT_TRUE(lib.has("ship_explosion"));
+  const ClusterDef& flash = lib.get("shield_hit").clusters.at(0);
+  EXPECT_GT(flash.red.exact(0.0f), flash.blue.exact(0.0f));  // gold: the base file's is blue-white
+  EffectLibrary base;
+  base.load_directory(root + "/assets/effects");
+  EXPECT_FALSE(base.has("rally_beacon"));
+  const ClusterDef& blue = base.get("shield_hit").clusters.at(0);
+  EXPECT_LT(blue.red.exact(0.0f), blue.blue.exact(0.0f));
 }
 
 TEST(EffectFiles, GoodTextLoads) {

@@ -132,6 +132,17 @@ TEST(ReplayParse, SettingsToleranceAndSnapshotsLike) {
   EXPECT_EQ(s.header.snapshots_like, "gallery-near_1");
 }
 
+// Mods in the order they were laid, each with its content hash.
+TEST(ReplayParse, ModLines) {
+  Script s = parse_script(kHead + "mod red_rally 00000000000000ff\nmod big-ships fedcba9876543210\n5 end\n", "s.replay", known());
+  ASSERT_EQ(s.header.mods.size(), 2u);
+  EXPECT_EQ(s.header.mods[0].name, "red_rally");
+  EXPECT_EQ(s.header.mods[0].hash, 0xffu);
+  EXPECT_EQ(s.header.mods[1].name, "big-ships");
+  EXPECT_EQ(s.header.mods[1].hash, 0xfedcba9876543210ull);
+  EXPECT_EQ(s.header.mods[1].line, 4);
+}
+
 // The combat counters' expectations: kills as one number or a range, damage, accuracy per weapon.
 TEST(ReplayParse, CounterExpectations) {
   Script s = parse_script(kHead +
@@ -252,7 +263,11 @@ INSTANTIATE_TEST_SUITE_P(
                 "s.replay:3:17: share of pixels must be a percentage in (0, 100] written P%"},
         BadCase{"tolerance_zero", kHead + "tolerance 5/255 0%\n", "s.replay:3:17: share of pixels must be a percentage"},
         BadCase{"tolerance_missing", kHead + "tolerance 5/255\n", "s.replay:3:16: missing share of pixels"},
-        BadCase{"snapshots_like_name", kHead + "snapshots_like ../x\n", "s.replay:3:16: script name must be 1 to 64"}),
+        BadCase{"snapshots_like_name", kHead + "snapshots_like ../x\n", "s.replay:3:16: script name must be 1 to 64"},
+        BadCase{"mod_name", kHead + "mod ../up 0123456789abcdef\n", "s.replay:3:5: mod name must be 1 to 64"},
+        BadCase{"mod_hash", kHead + "mod red_rally 12345\n", "s.replay:3:15: mod hash must be 16 lowercase hexadecimal"},
+        BadCase{"mod_no_hash", kHead + "mod red_rally\n", "s.replay:3:14: missing the mod's content hash"},
+        BadCase{"mod_twice", kHead + "mod a 0123456789abcdef\nmod a 0123456789abcdef\n", "s.replay:4:5: mod 'a' is named twice"}),
     [](const ::testing::TestParamInfo<BadCase>& i) { return std::string(i.param.name); });
 
 TEST(ReplayParse, MissingFileIsAnInputError) {

@@ -52,6 +52,7 @@ substeps 3
 quality medium
 set render.soft_edges=linear
 set render.scale=0.75
+mod red_rally 00000000000000ff
 tolerance 2/255 99.95%
 snapshots_like other_scene
 0 press fire_primary
@@ -77,7 +78,7 @@ snapshots_like other_scene
   EXPECT_TRUE(a.same_content(b)) << written;
   EXPECT_EQ(write_script(b), written);
   EXPECT_NE(written.find("\nquality medium\nset render.soft_edges=linear\nset render.scale=0.75\n"
-                         "tolerance 2/255 99.95%\nsnapshots_like other_scene\n"),
+                         "mod red_rally 00000000000000ff\ntolerance 2/255 99.95%\nsnapshots_like other_scene\n"),
             std::string::npos)
       << written;
 }
