@@ -3,7 +3,8 @@
 // OwnView: the player's own effects stay out of their eyes: a ship under fire (and firing its
 // beam) is rendered in the chase and cockpit cameras, once as build_render_view() makes the
 // frame and once without any particle of the player's own clusters (shield, exhausts, beam);
-// the pixels that differ around the crosshair are what the player's own effects cover there.
+// the pixels that differ around the crosshair are what the player's own effects cover there,
+// and those in the lower half of the screen show how much of it the own shield glow takes.
 // TeamColors: a blue and a red Viper side by side show their team colour on stripes.
 // ARCFIRE_GFX_DUMP=DIR saves the frames.
 #include <gtest/gtest.h>
@@ -52,6 +53,7 @@ std::vector<uint32_t> own_clusters(const Ship& s) {
 
 struct Coverage {
   double share = 0;  // of the box around the crosshair
+  double lower_half = 0;  // of the lower half of the screen
   int own_particles = 0;
 };
 
@@ -109,8 +111,17 @@ Coverage own_effect_coverage(bool cockpit, const std::string& dump_name) {
       differing += d > 8 ? 1 : 0;
     }
   result.share = double(differing) / double(std::max(1, (x1 - x0) * (y1 - y0)));
-  std::printf("%s: own effects cover %.2f%% of the crosshair box (%d own particles drawn)\n", dump_name.c_str(),
-              100.0 * result.share, result.own_particles);
+  int lower = 0;
+  for (int y = kHeight / 2; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      const size_t i = (size_t(y) * kWidth + x) * 4;
+      int d = 0;
+      for (int c = 0; c < 3; ++c) d = std::max(d, std::abs(int(with_own.rgba[i + c]) - int(no_own.rgba[i + c])));
+      lower += d > 8 ? 1 : 0;
+    }
+  result.lower_half = double(lower) / double(kWidth * (kHeight - kHeight / 2));
+  std::printf("%s: own effects cover %.2f%% of the crosshair box and %.2f%% of the lower half (%d own particles drawn)\n",
+              dump_name.c_str(), 100.0 * result.share, 100.0 * result.lower_half, result.own_particles);
   return result;
 }
 
@@ -119,6 +130,15 @@ TEST(OwnView, OwnEffectsStayOffTheCrosshairInTheChaseCamera) {
   if (!test::headless(why)) GTEST_SKIP() << "no EGL context: " << why;
   const Coverage c = own_effect_coverage(false, "own_view_chase");
   EXPECT_LT(c.share, 0.05);
+}
+
+// Under fire the own shield is a rim and a flash, not a glow over the lower half (radar included).
+TEST(OwnView, TheOwnShieldIsARimNotAGlowInTheChaseCamera) {
+  std::string why;
+  if (!test::headless(why)) GTEST_SKIP() << "no EGL context: " << why;
+  const Coverage c = own_effect_coverage(false, "own_view_chase_lower");
+  EXPECT_LT(c.lower_half, 0.05);
+  EXPECT_GT(c.own_particles, 0);  // the rim is still drawn
 }
 
 TEST(OwnView, OwnEffectsStayOffTheCrosshairInTheCockpit) {
