@@ -111,7 +111,7 @@ void keep_own_effects_out_of_view(const World& w, ShipId ship, bool cockpit, con
     if (p.billboard == uint8_t(Billboard::AxisLocked)) {  // a streak: its length kept short too
       const double depth = std::max(-view_space(p, pr.inverse).z, pr.near_plane);
       const double len = std::sqrt(double(p.axis[0]) * p.axis[0] + double(p.axis[1]) * p.axis[1] + double(p.axis[2]) * p.axis[2]);
-      const double longest = 4.0 * rules.near_half_width * height * depth / pr.focal;
+      const double longest = 3.0 * rules.near_half_width * height * depth / pr.focal;
       if (len > longest)
         for (float& a : p.axis) a *= float(longest / len);
     }
