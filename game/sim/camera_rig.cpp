@@ -16,6 +16,9 @@ glm::dvec3 chase_offset(const Ship& s, const ChaseFraming& f) {
   return {0.0, f.up_per_radius * R + f.up_m, f.back_per_radius * R + f.back_m};
 }
 
+// The view's turn below the attitude it follows (the rig stores attitude * tilt).
+glm::dquat tilt(const ChaseFraming& f) { return glm::angleAxis(-f.tilt_down_deg * kDeg, glm::dvec3(1, 0, 0)); }
+
 // The angle between two attitudes, radians.
 double angle_between(const glm::dquat& a, const glm::dquat& b) {
   return 2.0 * std::acos(std::min(1.0, std::fabs(glm::dot(a, b))));
@@ -27,12 +30,14 @@ CameraRig chase_rig(const CameraRig& prev, const Ship& s, double dt, const Chase
   // The orientation follows the ship's with a short exponential lag, so turns read on screen,
   // but never more than max_lag_deg behind: the ship's centre stays put on screen (the position
   // is rebuilt from the view), and a larger lag would swing a target at the nose into the hull.
-  CameraRig c;
+  const glm::dquat t = tilt(f);
   const double k = 1.0 - std::exp(-f.lag_rate * dt);
-  c.orientation = glm::normalize(glm::slerp(prev.orientation, s.orientation, k));
-  const double lag = angle_between(c.orientation, s.orientation), most = f.max_lag_deg * kDeg;
-  if (lag > most) c.orientation = glm::normalize(glm::slerp(s.orientation, c.orientation, most / lag));
-  c.position = s.position + c.orientation * chase_offset(s, f);
+  glm::dquat attitude = glm::normalize(glm::slerp(prev.orientation * glm::conjugate(t), s.orientation, k));
+  const double lag = angle_between(attitude, s.orientation), most = f.max_lag_deg * kDeg;
+  if (lag > most) attitude = glm::normalize(glm::slerp(s.orientation, attitude, most / lag));
+  CameraRig c;
+  c.position = s.position + attitude * chase_offset(s, f);
+  c.orientation = glm::normalize(attitude * t);
   return c;
 }
 
@@ -44,10 +49,12 @@ CameraRig padlock_rig(const CameraRig& prev, const Ship& s, const Ship& target, 
   glm::dvec3 up = s.orientation * glm::dvec3(0, 1, 0);
   if (std::fabs(glm::dot(look, up)) > 0.999) up = s.orientation * glm::dvec3(0, 0, 1);
   const glm::dquat want = glm::quatLookAt(look, up);
-  CameraRig c;
+  const glm::dquat t = tilt(f);
   const double k = 1.0 - std::exp(-2.0 * f.lag_rate * dt);
-  c.orientation = glm::normalize(glm::slerp(prev.orientation, want, k));
-  c.position = s.position + c.orientation * chase_offset(s, f);
+  const glm::dquat attitude = glm::normalize(glm::slerp(prev.orientation * glm::conjugate(t), want, k));
+  CameraRig c;
+  c.position = s.position + attitude * chase_offset(s, f);
+  c.orientation = glm::normalize(attitude * t);
   return c;
 }
 

@@ -28,8 +28,13 @@ namespace {
 
 // A low, close chase camera that follows every turn with a lag: the framing that hides a
 // target ahead behind the hull while the ship pitches toward it.
-constexpr ChaseFraming kLowClose{
-    .up_per_radius = 0.45, .up_m = 2.0, .back_per_radius = 2.6, .back_m = 8.0, .lag_rate = 6.0, .max_lag_deg = 180.0};
+constexpr ChaseFraming kLowClose{.up_per_radius = 0.45,
+                                 .up_m = 2.0,
+                                 .back_per_radius = 2.6,
+                                 .back_m = 8.0,
+                                 .tilt_down_deg = 0.0,
+                                 .lag_rate = 6.0,
+                                 .max_lag_deg = 180.0};
 
 struct Box {
   glm::dvec3 lo, hi;
@@ -169,7 +174,7 @@ bool hidden_below_the_nose(const ChaseFraming& f, double below_deg) {
   const Ship& me = w.ship(w.player);
   CameraRig rig;
   rig.orientation = me.orientation;
-  rig = chase_rig(rig, me, w.dt, f);
+  for (int i = 0; i < 120; ++i) rig = chase_rig(rig, me, w.dt, f);
   const glm::dvec3 dir = me.orientation * glm::dvec3(0, -std::sin(below_deg * kDeg), -std::cos(below_deg * kDeg));
   return hidden_by_hull(rig, me, model_box(w, me), me.position + dir * 61.0);
 }
@@ -188,7 +193,7 @@ TEST(ChaseFraming, TheHullSitsBelowTheCrosshairsLine) {
   const Box box = model_box(w, me);
   CameraRig rig;
   rig.orientation = me.orientation;
-  rig = chase_rig(rig, me, w.dt);
+  for (int i = 0; i < 120; ++i) rig = chase_rig(rig, me, w.dt);
   const glm::dquat inv = glm::conjugate(rig.orientation);
   double top = -1e9;
   for (int i = 0; i < 8; ++i) {
