@@ -102,12 +102,23 @@ void keep_own_effects_out_of_view(const World& w, ShipId ship, bool cockpit, con
   pr.project(crosshair_point(me, alpha), crosshair);
   const glm::dvec3 centre = lerp_pos(me.prev_position, me.position, alpha) - camera.position;
   const double near_own = rules.near_own_radius * me.cls->shield_radius;
+  // A ship blowing up is news, not clutter: its fire and smoke (seconds long) stay whole, even
+  // near the eye, wherever they drift.
+  std::vector<glm::dvec3> wrecks;
+  for (const Ship& s : w.ships)
+    if (!s.alive && double(w.tick - s.death_tick) * w.dt < 4.0) wrecks.push_back(s.position - camera.position);
+  auto in_explosion = [&](const glm::dvec3& at) {
+    for (const glm::dvec3& c : wrecks)
+      if (glm::dot(at - c, at - c) < 150.0 * 150.0) return true;
+    return false;
+  };
   // Chase: an impact around the own ship or near the eye stays a small flash on screen.
   auto tame_near = [&](ParticleInstance& p) {
     const glm::dvec3 at(p.pos[0], p.pos[1], p.pos[2]);
     const glm::dvec3 from_ship = at - centre;
     const double eye = std::sqrt(glm::dot(at, at));
     if (eye > rules.near_eye_m && glm::dot(from_ship, from_ship) > near_own * near_own) return true;
+    if (in_explosion(at)) return true;
     if (p.billboard == uint8_t(Billboard::AxisLocked)) {  // a streak: its length kept short too
       const double depth = std::max(-view_space(p, pr.inverse).z, pr.near_plane);
       const double len = std::sqrt(double(p.axis[0]) * p.axis[0] + double(p.axis[1]) * p.axis[1] + double(p.axis[2]) * p.axis[2]);

@@ -10,7 +10,8 @@
 //   chase:   the sparks and smoke of hits around the own ship and of anything near the eye
 //            (hull sparks the ship leaves behind, which the camera flies through) are kept
 //            to a small size on screen and fade out toward the eye, so an impact reads as a
-//            flash where it landed instead of streaks and smoke over the whole screen;
+//            flash where it landed instead of streaks and smoke over the whole screen (a ship
+//            blowing up there keeps its whole fireball and smoke);
 //   cockpit: no own shield and no own exhaust (the camera sits inside the sphere);
 //   both:    the own beam fades out toward the eye and is never wider on screen than a few
 //            pixels, so it starts at the muzzles as a thin bolt instead of filling the view;
