@@ -31,8 +31,8 @@ class World;
 struct OwnViewRules {
   double clear_radius = 0.25;     // chase: own shield gone within this share of the screen height around the crosshair
   double clear_fade = 0.12;       // ... and fading back in over this much more
-  double rim_facing = 0.35;       // chase: own shield kept where |cos| between its normal and the view ray is below this
-  double rim_fade = 0.2;          // ... fading out over this much more (rim_facing 1: the whole sphere)
+  double rim_facing = 0.2;        // chase: own shield kept where |cos| between its normal and the view ray is below this
+  double rim_fade = 0.15;         // ... fading out over this much more (rim_facing 1: the whole sphere)
   double near_own_radius = 1.6;   // chase: hits within this many shield radii of the own ship's centre...
   double near_eye_m = 12.0;       // ... or within this many metres of the eye...
   double near_half_width = 0.012; // ... are at most this half-width on screen (share of the height)...
