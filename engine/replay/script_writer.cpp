@@ -41,6 +41,7 @@ const char* command_name(ScriptCommand c) {
     case ScriptCommand::CameraToggle: return "camera";
     case ScriptCommand::Pause: return "pause";
     case ScriptCommand::Resume: return "resume";
+    case ScriptCommand::CameraPadlock: return "camera_padlock";
   }
   return "?";
 }

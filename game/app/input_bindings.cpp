@@ -89,6 +89,7 @@ static Bindings bindings_from(const std::shared_ptr<const JsonDoc>& doc) {
     b.target_next_hostile = key(k, "target_next_hostile");
     b.switch_weapon = key(k, "switch_weapon");
     b.camera = key(k, "camera");
+    b.camera_padlock = key(k, "camera_padlock");
     b.pause = key(k, "pause");
     b.screenshot = key(k, "screenshot");
     b.fps = key(k, "fps");
@@ -181,6 +182,7 @@ void LiveInput::queue_commands_and_actions(const InputState& s) {
   command(presses(b_.target_next_hostile, -1), Command::TargetNextHostile);
   command(presses(b_.switch_weapon, b_.pad_switch_weapon), Command::SwitchWeapon);
   action(presses(b_.camera, b_.pad_camera), AppAction::ToggleCamera);
+  action(presses(b_.camera_padlock, -1), AppAction::TogglePadlock);
   action(presses(b_.pause, b_.pad_pause), AppAction::TogglePause);
   action(presses(b_.screenshot, -1), AppAction::Screenshot);
   action(presses(b_.fps, -1), AppAction::ToggleFps);

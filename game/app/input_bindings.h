@@ -35,7 +35,7 @@ struct Bindings {
   int throttle_zero = -1, throttle_full = -1;
   int fire_primary = -1, fire_secondary = -1, afterburner = -1, assist_off = -1;
   int target_next = -1, target_nearest = -1, target_next_hostile = -1, switch_weapon = -1;
-  int camera = -1, pause = -1, screenshot = -1, fps = -1;
+  int camera = -1, camera_padlock = -1, pause = -1, screenshot = -1, fps = -1;
   bool mouse_enabled = true;
   MouseMode mouse_mode = MouseMode::Relative;
   double mouse_sensitivity = 0.12;  // relative mode: degrees of turn per pixel of travel
@@ -72,7 +72,7 @@ struct MouseReticle {
   double x = 0, y = 0, radius = 0, deadzone = 0;
 };
 
-enum class AppAction { Screenshot, ToggleFps, ToggleCamera, TogglePause };
+enum class AppAction { Screenshot, ToggleFps, ToggleCamera, TogglePadlock, TogglePause };
 
 class LiveInput {
  public:

@@ -15,7 +15,8 @@ int* slot(Bindings& b, const std::string& id) {
       {"afterburner", &Bindings::afterburner},     {"assist_off", &Bindings::assist_off},
       {"target_next", &Bindings::target_next},     {"target_nearest", &Bindings::target_nearest},
       {"target_next_hostile", &Bindings::target_next_hostile}, {"switch_weapon", &Bindings::switch_weapon},
-      {"camera", &Bindings::camera},               {"pause", &Bindings::pause},
+      {"camera", &Bindings::camera},               {"camera_padlock", &Bindings::camera_padlock},
+      {"pause", &Bindings::pause},
       {"screenshot", &Bindings::screenshot},       {"fps", &Bindings::fps}};
   static const std::map<std::string, std::pair<KeyAxis Bindings::*, bool>> axes = {
       {"pitch_down", {&Bindings::pitch, false}},  {"pitch_up", {&Bindings::pitch, true}},
@@ -68,7 +69,8 @@ const std::vector<RemapAction>& remap_actions() {
       {"strafe_right", "Strafe right"},     {"strafe_down", "Strafe down"},
       {"strafe_up", "Strafe up"},           {"target_next", "Target next"},
       {"target_nearest", "Target nearest"}, {"target_next_hostile", "Target next hostile"},
-      {"camera", "Camera"},                 {"pause", "Pause menu"},
+      {"camera", "Camera"},                 {"camera_padlock", "Padlock view"},
+      {"pause", "Pause menu"},
       {"screenshot", "Screenshot"},         {"fps", "FPS counter"},
       {"pad_fire_primary", "Gamepad: fire beam"},       {"pad_fire_secondary", "Gamepad: fire missile"},
       {"pad_afterburner", "Gamepad: afterburner"},      {"pad_target_next", "Gamepad: target next"},

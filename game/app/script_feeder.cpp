@@ -22,7 +22,8 @@ static_assert(uint8_t(replay::ScriptCommand::TargetNext) == uint8_t(Command::Tar
               uint8_t(replay::ScriptCommand::SwitchWeapon) == uint8_t(Command::SwitchWeapon) &&
               uint8_t(replay::ScriptCommand::CameraToggle) == uint8_t(Command::CameraToggle) &&
               uint8_t(replay::ScriptCommand::Pause) == uint8_t(Command::Pause) &&
-              uint8_t(replay::ScriptCommand::Resume) == uint8_t(Command::Resume));
+              uint8_t(replay::ScriptCommand::Resume) == uint8_t(Command::Resume) &&
+              uint8_t(replay::ScriptCommand::CameraPadlock) == uint8_t(Command::CameraPadlock));
 
 InputFrame to_input_frame(const replay::InputState& s) {
   InputFrame f;

@@ -147,6 +147,9 @@ void WindowSession::handle_actions(bool over_game) {
       case AppAction::ToggleCamera:
         if (!over_game) pending_.push_back(Command::CameraToggle);
         break;
+      case AppAction::TogglePadlock:
+        if (!over_game) pending_.push_back(Command::CameraPadlock);
+        break;
       case AppAction::TogglePause:
         if (!over_game) pending_.push_back(game_->paused() ? Command::Resume : Command::Pause);
         break;

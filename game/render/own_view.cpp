@@ -64,6 +64,17 @@ double shield_visibility(const ParticleInstance& p, const Projector& pr, glm::dv
   return smoothstep01(gap / std::max(rules.clear_fade * height, 1e-9));
 }
 
+// Chase camera: how much of a shield particle stays by how edge-on the sphere is seen there, so
+// the sphere reads as a thin rim. `centre` is the ship's centre, camera-relative like p.pos.
+double rim_visibility(const ParticleInstance& p, const glm::dvec3& centre, const OwnViewRules& rules) {
+  const glm::dvec3 at(p.pos[0], p.pos[1], p.pos[2]);
+  const glm::dvec3 normal = at - centre;
+  const double ln = std::sqrt(glm::dot(normal, normal)), la = std::sqrt(glm::dot(at, at));
+  if (ln < 1e-9 || la < 1e-9) return 0.0;
+  const double facing = std::fabs(glm::dot(normal, at)) / (ln * la);
+  return 1.0 - smoothstep01((facing - rules.rim_facing) / std::max(rules.rim_fade, 1e-9));
+}
+
 // Either camera: a beam is at most `half_width` (share of the screen height) wide on screen and
 // fades out over `near_fade` metres toward the eye (0: no fade). False when nothing is left.
 bool tame_beam(ParticleInstance& p, const Projector& pr, double height, double half_width, double near_fade) {
@@ -89,15 +100,43 @@ void keep_own_effects_out_of_view(const World& w, ShipId ship, bool cockpit, con
   const Projector pr = Projector::of(camera, width, height);
   glm::dvec2 crosshair(pr.cx, pr.cy);
   pr.project(crosshair_point(me, alpha), crosshair);
+  const glm::dvec3 centre = lerp_pos(me.prev_position, me.position, alpha) - camera.position;
+  const double near_own = rules.near_own_radius * me.cls->shield_radius;
+  // A ship blowing up is news, not clutter: its fire and smoke (seconds long) stay whole, even
+  // near the eye, wherever they drift.
+  std::vector<glm::dvec3> wrecks;
+  for (const Ship& s : w.ships)
+    if (!s.alive && double(w.tick - s.death_tick) * w.dt < 4.0) wrecks.push_back(s.position - camera.position);
+  auto in_explosion = [&](const glm::dvec3& at) {
+    for (const glm::dvec3& c : wrecks)
+      if (glm::dot(at - c, at - c) < 150.0 * 150.0) return true;
+    return false;
+  };
+  // Chase: an impact around the own ship or near the eye stays a small flash on screen.
+  auto tame_near = [&](ParticleInstance& p) {
+    const glm::dvec3 at(p.pos[0], p.pos[1], p.pos[2]);
+    const glm::dvec3 from_ship = at - centre;
+    const double eye = std::sqrt(glm::dot(at, at));
+    if (eye > rules.near_eye_m && glm::dot(from_ship, from_ship) > near_own * near_own) return true;
+    if (in_explosion(at)) return true;
+    if (p.billboard == uint8_t(Billboard::AxisLocked)) {  // a streak: its length kept short too
+      const double depth = std::max(-view_space(p, pr.inverse).z, pr.near_plane);
+      const double len = std::sqrt(double(p.axis[0]) * p.axis[0] + double(p.axis[1]) * p.axis[1] + double(p.axis[2]) * p.axis[2]);
+      const double longest = 3.0 * rules.near_half_width * height * depth / pr.focal;
+      if (len > longest)
+        for (float& a : p.axis) a *= float(longest / len);
+    }
+    return tame_beam(p, pr, height, rules.near_half_width, rules.near_eye_fade);
+  };
   std::erase_if(particles, [&](ParticleInstance& p) {
     switch (clusters.kind(p.cluster)) {
-      case ViewKind::Other: return false;
+      case ViewKind::Other: return !cockpit && !tame_near(p);
       case ViewKind::OwnExhaust: return cockpit;
       case ViewKind::OwnBeam: return !tame_beam(p, pr, height, rules.beam_half_width, rules.beam_near_fade);
       case ViewKind::OtherBeam: return !tame_beam(p, pr, height, rules.other_beam_half_width, 0.0);
       case ViewKind::OwnShield: {
         if (cockpit) return true;
-        const double keep = shield_visibility(p, pr, crosshair, height, rules);
+        const double keep = shield_visibility(p, pr, crosshair, height, rules) * rim_visibility(p, centre, rules);
         scale_color(p, keep);
         return keep <= 0.0;
       }

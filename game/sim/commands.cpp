@@ -1,4 +1,4 @@
-// game/sim/commands.cpp — a tick's discrete commands: pause and resume, the camera toggle, the
+// game/sim/commands.cpp — a tick's discrete commands: pause and resume, the camera keys, the
 // player's target (next, nearest hostile, next hostile) and secondary weapon.
 #include "game/sim/commands.h"
 
@@ -39,8 +39,12 @@ void apply_commands(World& w, const std::vector<Command>& commands) {
     if (c == Command::Pause) w.paused = true;
     if (c == Command::Resume) w.paused = false;
     if (w.paused) continue;
+    // The camera key swaps chase and cockpit (padlock leaves for the cockpit); the padlock key
+    // turns the padlock view on and off, back to chase.
     if (c == Command::CameraToggle && w.camera_mode != CameraMode::Fixed)
-      w.camera_mode = w.camera_mode == CameraMode::Chase ? CameraMode::Cockpit : CameraMode::Chase;
+      w.camera_mode = w.camera_mode == CameraMode::Cockpit ? CameraMode::Chase : CameraMode::Cockpit;
+    if (c == Command::CameraPadlock && w.camera_mode != CameraMode::Fixed)
+      w.camera_mode = w.camera_mode == CameraMode::Padlock ? CameraMode::Chase : CameraMode::Padlock;
     if (!w.player || !w.ship(w.player).alive) continue;
     Ship& p = w.ship(w.player);
     switch (c) {

@@ -28,6 +28,7 @@ enum class Command : uint8_t {
   CameraToggle,
   Pause,
   Resume,
+  CameraPadlock,  // padlock view on, or back to chase
 };
 
 struct InputFrame {

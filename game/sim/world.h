@@ -39,12 +39,13 @@ inline glm::dvec3 forward_of(const glm::dquat& q) { return q * glm::dvec3(0, 0, 
 
 enum class SecondaryWeapon : uint8_t { Missile = 0, Plasma = 1 };
 enum class AiMode : uint8_t { Attack = 0, Evade = 1, BreakOff = 2 };
-enum class CameraMode : uint8_t { Chase = 0, Cockpit = 1, Fixed = 2 };
+// Padlock: the chase camera turned to keep the player's target in view (camera_rig.h).
+enum class CameraMode : uint8_t { Chase = 0, Cockpit = 1, Fixed = 2, Padlock = 3 };
 enum class Outcome : uint8_t { Undecided = 0, Victory = 1, Defeat = 2, TeamWon = 3 };
 // The last value of each enum: a snapshot's byte beyond it is an error.
 constexpr SecondaryWeapon last_enumerator(SecondaryWeapon) { return SecondaryWeapon::Plasma; }
 constexpr AiMode last_enumerator(AiMode) { return AiMode::BreakOff; }
-constexpr CameraMode last_enumerator(CameraMode) { return CameraMode::Fixed; }
+constexpr CameraMode last_enumerator(CameraMode) { return CameraMode::Padlock; }
 constexpr Outcome last_enumerator(Outcome) { return Outcome::TeamWon; }
 
 // Where the per-tick hash takes a field: word W of the state pass or of the presentation pass.

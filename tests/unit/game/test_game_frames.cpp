@@ -3,7 +3,8 @@
 // OwnView: the player's own effects stay out of their eyes: a ship under fire (and firing its
 // beam) is rendered in the chase and cockpit cameras, once as build_render_view() makes the
 // frame and once without any particle of the player's own clusters (shield, exhausts, beam);
-// the pixels that differ around the crosshair are what the player's own effects cover there.
+// the pixels that differ around the crosshair are what the player's own effects cover there;
+// the same in the lower half of the screen for the own shield and the hits around the own ship.
 // TeamColors: a blue and a red Viper side by side show their team colour on stripes.
 // ARCFIRE_GFX_DUMP=DIR saves the frames.
 #include <gtest/gtest.h>
@@ -129,6 +130,82 @@ TEST(OwnView, OwnEffectsStayOffTheCrosshairInTheCockpit) {
   const Coverage c = own_effect_coverage(true, "own_view_cockpit");
   EXPECT_LT(c.share, 0.05);
   EXPECT_GT(c.own_particles, 0);  // the own beam is still drawn
+}
+
+// The share of the lower half of the screen that the player's own shield and the hits around
+// the own ship (every particle but beams within 1.6 shield radii of its centre or 12 m of the
+// eye) take in the chase camera under fire: the frame against the same frame without them.
+// `plain` draws them untamed (the whole shield sphere, the hits at full size) from a low,
+// close camera.
+double own_glow_lower_half(bool plain, const std::string& dump_name) {
+  Game game = Game::load_level(under_fire_level(), test::options());
+  InputFrame fire;
+  fire.buttons = kFirePrimary;
+  game.step(fire);
+  const World& w = game.world();
+  const Ship& me = w.ship(w.player);
+  for (int i = 0; i < 150 || me.last_hit_tick != w.tick; ++i) game.step(fire);
+  HudState hud;
+  hud.show_hud = false;
+  if (plain) {
+    World& m = game.world_mut();
+    const double R = me.cls->collision_radius;
+    m.camera.orientation = me.orientation;
+    m.camera.position = me.position + me.orientation * glm::dvec3(0, 0.45 * R + 2.0, 2.6 * R + 8.0);
+    m.prev_camera = m.camera;
+    hud.rules.own_view.rim_facing = 2.0;
+    hud.rules.own_view.near_own_radius = 0.0;
+    hud.rules.own_view.near_eye_m = 0.0;
+  }
+  Renderer renderer(RendererDesc{.offscreen = true});
+  renderer.apply_settings(Settings::defaults());
+  const std::vector<ModelId> models = load_scene_resources(renderer, w, ARCFIRE_SOURCE_DIR);
+  RenderView view;
+  build_render_view(w, models, 1.0, CameraSettings{}, hud, kWidth, kHeight, view);
+  std::vector<uint32_t> shield, beams;
+  for (ClusterHandle h : me.shield_fx.clusters) shield.push_back(h.index);
+  for (const Ship& s : w.ships)
+    for (ClusterHandle h : s.beam_channels) beams.push_back(h.index);
+  const glm::dvec3 centre = me.position - view.camera.position;
+  const double near_ship = 1.6 * me.cls->shield_radius;
+  RenderView without = view;
+  std::erase_if(without.particles, [&](const ParticleInstance& p) {
+    if (std::find(shield.begin(), shield.end(), p.cluster) != shield.end()) return true;
+    if (std::find(beams.begin(), beams.end(), p.cluster) != beams.end()) return false;
+    const glm::dvec3 at(p.pos[0], p.pos[1], p.pos[2]);
+    return glm::length(at) < 12.0 || glm::length(at - centre) < near_ship;
+  });
+  renderer.render(view, kWidth, kHeight);
+  const Image with_own = renderer.read_pixels();
+  renderer.render(without, kWidth, kHeight);
+  const Image no_own = renderer.read_pixels();
+  if (const char* dir = std::getenv("ARCFIRE_GFX_DUMP"); dir && *dir) {
+    save_image(std::string(dir) + "/" + dump_name + ".png", with_own);
+    save_image(std::string(dir) + "/" + dump_name + "_without_own.png", no_own);
+  }
+  int lower = 0;
+  for (int y = kHeight / 2; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      const size_t i = (size_t(y) * kWidth + x) * 4;
+      int d = 0;
+      for (int c = 0; c < 3; ++c) d = std::max(d, std::abs(int(with_own.rgba[i + c]) - int(no_own.rgba[i + c])));
+      lower += d > 8 ? 1 : 0;
+    }
+  const double share = double(lower) / double(kWidth * (kHeight - kHeight / 2));
+  std::printf("%s: the own shield and hits cover %.2f%% of the lower half (%zu particles)\n", dump_name.c_str(),
+              100.0 * share, view.particles.size() - without.particles.size());
+  return share;
+}
+
+// Under fire the own shield is a rim and the hits are flashes where they land, not a glow over
+// the lower half of the screen (the radar's corner included).
+TEST(OwnView, UnderFireTheOwnShieldIsARimNotAGlow) {
+  std::string why;
+  if (!test::headless(why)) GTEST_SKIP() << "no EGL context: " << why;
+  const double plain = own_glow_lower_half(true, "own_glow_plain");
+  const double framed = own_glow_lower_half(false, "own_glow_chase");
+  EXPECT_LT(framed, 0.10);
+  EXPECT_LT(framed, 0.4 * plain);
 }
 
 int pixels_where(const Image& img, int x0, int x1, bool (*test)(float r, float g, float b)) {
