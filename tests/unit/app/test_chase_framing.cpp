@@ -16,6 +16,8 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "assets/model.h"
+#include "core/data_root.h"
+#include "game/app/all_settings.h"
 #include "game/app/script_feeder.h"
 #include "game/sim/camera_rig.h"
 #include "game/sim/geometry.h"
@@ -103,9 +105,9 @@ struct Tally {
 // Replays a script and follows its player with a chase camera of each framing, counting the
 // ticks an opponent within 20° of the nose is hidden by the hull.
 void replay_and_count(const std::string& path, const std::vector<ChaseFraming>& framings, std::vector<Tally>& tallies) {
-  const replay::Script script = replay::load_script(path);
-  const std::string root = ARCFIRE_SOURCE_DIR;
-  const Settings settings = script_settings(script, Settings::defaults(), root);
+  const replay::Script script = replay::load_script(path, all_settings());
+  const std::string root = arc::data_root();
+  const Settings settings = script_settings(script, all_settings(), root);
   GameOptions base;
   base.root_dir = root;
   Game game = Game::load_level(resolve_script_level(script, root), script_game_options(script, settings, base));
@@ -245,7 +247,7 @@ TEST(Padlock, KeepsTheTargetInViewAndIsChaseWithoutOne) {
 
 TEST(Padlock, TheScriptCommandRoundTrips) {
   const replay::Script s = replay::parse_script(
-      "arcfire-replay 1\nlevel levels/duel.json\n10 command camera_padlock\n20 end\n", "padlock.replay");
+      "arcfire-replay 1\nlevel levels/duel.json\n10 command camera_padlock\n20 end\n", "padlock.replay", all_settings());
   ASSERT_EQ(s.commands.size(), 1u);
   EXPECT_EQ(s.commands[0].command, replay::ScriptCommand::CameraPadlock);
   EXPECT_NE(replay::write_script(s).find("10 command camera_padlock"), std::string::npos);

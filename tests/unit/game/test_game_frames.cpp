@@ -158,8 +158,8 @@ double own_glow_lower_half(bool plain, const std::string& dump_name) {
     hud.rules.own_view.near_eye_m = 0.0;
   }
   Renderer renderer(RendererDesc{.offscreen = true});
-  renderer.apply_settings(Settings::defaults());
-  const std::vector<ModelId> models = load_scene_resources(renderer, w, ARCFIRE_SOURCE_DIR);
+  renderer.apply_settings(all_settings());
+  const std::vector<ModelId> models = load_scene_resources(renderer, w, arc::data_root());
   RenderView view;
   build_render_view(w, models, 1.0, CameraSettings{}, hud, kWidth, kHeight, view);
   std::vector<uint32_t> shield, beams;
