@@ -10,10 +10,11 @@
 // (root/shaders), the mods apply; for any other folder (a test's own data) the plain path is
 // returned.
 //
-//   DataLayers layers("/usr/share/arcfire");
-//   layers.add_mod("examples/mods/red_rally");       // InputError: not a folder, not a mod
+// Example, compiled as DataLayersExample.LayAMod in tests/unit/core/test_data_layers.cpp:
+//   DataLayers layers(data_root());
+//   layers.add_mod(mod_dir);  // InputError: not a folder, not a mod
 //   use_data_layers(layers);
-//   load_level_def(data_file(root, "levels/rally.json"), root);
+//   const std::string ship = data_file(data_root(), "assets/ships/viper_mk2.json");  // the mod's
 #pragma once
 #include <cstdint>
 #include <string>

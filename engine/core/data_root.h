@@ -11,6 +11,7 @@
 // where it came from. Nothing here is compiled in: the program and its tests find the data from
 // where they run, so a build can be moved, installed or packaged.
 //
+// Example, compiled as DataRootExample.ResolveAndSet in tests/unit/core/test_data_root.cpp:
 //   const DataRoot root = resolve_data_root(cli_value, std::getenv("ARCFIRE_DATA"), executable_path());
 //   set_data_root(root.dir);  // what data_root() answers from now on
 #pragma once

@@ -7,9 +7,9 @@
 // A second signal of either kind ends the process at once with _exit(128 + its number), for a
 // user who does not want to wait for the writing.
 //
-//   install_stop_handlers();                 // once, first thing in main()
-//   for (t = 1; t <= ticks; ++t) { step(); if (stop_requested()) break; }
-//   if (stop_requested()) return report_stop("at tick 12 of 600");
+// Example, compiled as StopRequestExample.StopAtTheEndOfATick in tests/unit/app/test_stop_request.cpp:
+//   install_stop_handlers();  // once, first thing in main()
+//   if (stop_requested()) return report_stop("at tick " + std::to_string(t) + " of 600");
 #pragma once
 #include <string>
 

@@ -4,9 +4,10 @@
 // `--dev` or the player's "developer panel" setting (Settings → Advanced), and always closes
 // it. Opened over a fight it pauses the game, and closing it (F1 or its own close button)
 // resumes what it paused; a game paused before stays paused. No GL: tested without a window.
-//
-//   if (f1 && f1_toggles_panel(options.dev, user.developer_panel, panel.open())) panel.toggle();
-//   if (auto c = gate.follow(panel.open(), !menu.over_game(), game.paused())) pending.push_back(*c);
+// On F1 the window asks f1_toggles_panel() with --dev, the setting and whether the panel is
+// open; each frame it tells DevPanelGate::follow() the panel's state, whether a fight is shown
+// and whether the game is paused, and sends the Command it returns (pause or resume) to the
+// game's next tick. DevPanel.* in tests/unit/app/test_menu.cpp drives both.
 #pragma once
 #include <optional>
 

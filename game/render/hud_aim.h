@@ -3,14 +3,14 @@
 // Each cue says which weapon it is for and tells the truth about it:
 //   beam ring    a ring around the crosshair that lights, labelled "BEAM", while the beam fired
 //                now would hit a hostile: the beam is instant along the nose up to its range
-//                (game/sim/beams.cpp), so it needs no lead and the crosshair is its aim;
+//                (game/sim/beams.cpp), so it needs no lead and the crosshair is its aim,
 //   brackets     around the target, never smaller than 28 canvas units, bolder within beam
 //                range with "IN RANGE" above; below them the distance and small shield and hull
-//                bars, at any range;
+//                bars, at any range,
 //   missile cue  with missiles selected: a circle around the target labelled "MSL", whole while
 //                the target is within the missile's reach and launch cone (missile_ready()),
-//                broken otherwise; missiles home on the target, so they need no lead point;
-//   plasma lead  with plasma selected: a diamond labelled "PLS" where the bolts meet the target;
+//                broken otherwise; missiles home on the target, so they need no lead point,
+//   plasma lead  with plasma selected: a diamond labelled "PLS" where the bolts meet the target,
 //   off-screen   an arrow toward a target out of view, where the line from the screen centre
 //                toward it leaves the area between the HUD's panels, its distance beside it.
 // Sizes are in canvas units (hud_draw.h); nothing is remembered between frames.

@@ -5,6 +5,7 @@
 
 #include <csignal>
 #include <cstdlib>
+#include <string>
 
 #include "platform/stop_request.h"
 
@@ -42,6 +43,19 @@ TEST(StopRequest, ReportNamesTheSignalAndWhere) {
     std::_Exit(report_stop("at tick 7 of 9"));
   };
   EXPECT_EXIT(report(), ExitedWithCode(143), "^arcfire: stopped by SIGTERM at tick 7 of 9\n$");
+}
+
+// The banner's example: a loop that checks for a stop at the end of each tick.
+TEST(StopRequestExample, StopAtTheEndOfATick) {
+  auto run = []() -> int {
+    install_stop_handlers();  // once, first thing in main()
+    for (int t = 1; t <= 600; ++t) {
+      if (t == 12) std::raise(SIGINT);  // Ctrl+C during tick 12
+      if (stop_requested()) return report_stop("at tick " + std::to_string(t) + " of 600");
+    }
+    return 0;
+  };
+  EXPECT_EXIT(std::_Exit(run()), ExitedWithCode(130), "stopped by SIGINT at tick 12 of 600");
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include "core/data_layers.h"
+#include "core/data_root.h"
 #include "core/error.h"
 
 namespace arc {
@@ -96,6 +97,17 @@ TEST_F(DataLayersTest, BadModFoldersAreRefused) {
   }
   layers.add_mod(mod_a.string());
   EXPECT_THROW(layers.add_mod(mod_a.string() + "/"), InputError);  // the same name twice
+}
+
+// The banner's example, with the example mod of examples/mods.
+TEST(DataLayersExample, LayAMod) {
+  const std::string mod_dir = build_source_tree() + "/examples/mods/red_rally";
+  DataLayers layers(data_root());
+  layers.add_mod(mod_dir);  // InputError: not a folder, not a mod
+  use_data_layers(layers);
+  const std::string ship = data_file(data_root(), "assets/ships/viper_mk2.json");  // the mod's
+  use_data_layers(DataLayers());
+  EXPECT_NE(ship.find("examples/mods/red_rally/assets/ships/viper_mk2.json"), std::string::npos) << ship;
 }
 
 TEST_F(DataLayersTest, LinkLoopInAModIsNoTrap) {

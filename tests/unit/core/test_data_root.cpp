@@ -5,6 +5,7 @@
 
 #include <unistd.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -122,6 +123,15 @@ TEST(DataRoot, TestsFindTheSourceTreeThroughTheBuild) {
   EXPECT_TRUE(fs::is_regular_file(fs::path(source) / "engine" / "core" / "data_root.h"));
   EXPECT_TRUE(fs::is_directory(fs::path(arc::data_root()) / "levels"));
   EXPECT_EQ(arc::build_source_tree("/no/such/folder/arcfire"), "");
+}
+
+// The banner's example: the data root resolved as a test program finds it, then set.
+TEST(DataRootExample, ResolveAndSet) {
+  using namespace arc;
+  const std::string cli_value;  // no --data
+  const DataRoot root = resolve_data_root(cli_value, std::getenv("ARCFIRE_DATA"), executable_path());
+  set_data_root(root.dir);  // what data_root() answers from now on
+  EXPECT_EQ(data_root(), root.dir);
 }
 
 }  // namespace

@@ -40,10 +40,10 @@ struct Frame {
 
 TEST(GlExamples, ShaderPrograms) {
   REQUIRE_CONTEXT();
-  ShaderPrograms programs(arc::data_root() + "/shaders");  // throws when a shader fails
+  ShaderPrograms programs(data_root() + "/shaders");  // throws when a shader fails
   glUseProgram(programs.mesh.id);
   glUniform1i(programs.mesh.loc("u_base_tex"), 0);
-  std::string error = programs.reload();                   // empty on success
+  std::string error = programs.reload();              // empty on success
   EXPECT_EQ(error, "");
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
