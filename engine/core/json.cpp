@@ -76,6 +76,7 @@ struct JsonPositionRecorder : nlohmann::json_sax<nlohmann::json> {
   const char* cursor;
   size_t last_end = 0;
   std::vector<Frame> stack;
+  std::string duplicate;  // "line:col: key 'k' appears twice ..." for the first repeated key
 
   size_t token_start() {
     size_t i = last_end;
@@ -150,6 +151,15 @@ struct JsonPositionRecorder : nlohmann::json_sax<nlohmann::json> {
     size_t s = token_start();
     stack.back().key = k;
     const std::string p = stack.back().ptr + "/" + json_pointer_escape(k);
+    // A pasted block edited in its copy must not be dropped without a word: nlohmann keeps
+    // only one of two equal keys, so the second is an error naming both places.
+    if (const auto first = doc->key_pos_.find(p); first != doc->key_pos_.end()) {
+      const TextPos at = lines->at(s);
+      duplicate = std::to_string(at.line) + ":" + std::to_string(at.col) + ": key '" + k +
+                  "' appears twice in this object (first at " + std::to_string(first->second.line) + ":" +
+                  std::to_string(first->second.col) + "); allowed: each key once";
+      return false;
+    }
     doc->key_pos_[p] = lines->at(s);
     end_token();
     doc->key_span_[p] = {s, last_end};
@@ -215,6 +225,7 @@ std::shared_ptr<const JsonDoc> JsonDoc::parse(const std::string& text, const std
   TrackingIterator first{text.data(), &rec.cursor};
   TrackingIterator last{text.data() + text.size(), nullptr};
   nlohmann::json::sax_parse(first, last, &rec, nlohmann::json::input_format_t::json, true, true);
+  if (!rec.duplicate.empty()) throw InputError(path + ":" + rec.duplicate);
   return doc;
 }
 

@@ -26,6 +26,17 @@ TEST(JsonDoc, SyntaxErrorNamesFileLineAndColumn) {
   EXPECT_EQ(e.rfind("x.json:3:", 0), 0u) << e;
 }
 
+// A key written twice in one object is refused with both places; the same key in two objects
+// (or in two elements of an array) is not a repeat.
+TEST(JsonDoc, DuplicateKeysNameBothPlaces) {
+  const std::string e = error_of([] {
+    JsonDoc::parse("{\n  \"rate\": 1,\n  \"inner\": { \"rate\": 2 },\n  \"rate\": 3\n}", "fx.json");
+  });
+  EXPECT_EQ(e, "fx.json:4:3: key 'rate' appears twice in this object (first at 2:3); allowed: each key once");
+  EXPECT_NO_THROW(JsonDoc::parse("[{\"a\": 1}, {\"a\": 2}]", "list.json"));
+  EXPECT_NO_THROW(JsonDoc::parse("{\"a\": {\"k\": 1}, \"b\": {\"k\": 1}}", "two.json"));
+}
+
 TEST(JsonDoc, CommentsAreAllowed) {
   auto d = JsonDoc::parse("// header\n{ /* inline */ \"a\": 1 }", "c.json");
   EXPECT_EQ(d->root()["a"], 1);
