@@ -134,6 +134,10 @@ Renderer::Renderer(const RendererDesc& desc) {
 Renderer::~Renderer() = default;
 
 std::string Renderer::gl_version() const { return impl_->version; }
+std::string Renderer::gl_renderer() const {
+  const GLubyte* name = glGetString(GL_RENDERER);
+  return name ? reinterpret_cast<const char*>(name) : "";
+}
 bool Renderer::has_clip_control() const { return impl_->clip_control; }
 
 ModelId Renderer::add_model(const ModelData& model) {

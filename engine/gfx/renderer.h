@@ -115,6 +115,8 @@ class Renderer {
   Renderer& operator=(const Renderer&) = delete;
 
   std::string gl_version() const;
+  // GL_RENDERER: the device that draws ("llvmpipe (LLVM 15.0.6, 256 bits)", a GPU's name).
+  std::string gl_renderer() const;
   bool has_clip_control() const;
 
   ModelId add_model(const ModelData& model);  // the id MeshInstance::model refers to

@@ -69,6 +69,6 @@ Image FrameRenderer::render(const Game& game, double alpha) {
   return impl_->renderer->read_pixels();
 }
 
-std::string FrameRenderer::context_description() const { return impl_->context->description(); }
+std::string FrameRenderer::gl_renderer() const { return impl_->renderer->gl_renderer(); }
 
 }  // namespace arc

@@ -33,7 +33,7 @@ class FrameRenderer {
   Image render(const Game& game, double alpha, const HudState& hud, const HudLayer& overlay);
   // Loads the models of another level's game (a new renderer when they differ).
   void load_level(const Game& game);
-  std::string context_description() const;
+  std::string gl_renderer() const;  // the device that draws (Renderer::gl_renderer)
 
  private:
   struct Impl;

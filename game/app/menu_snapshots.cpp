@@ -81,18 +81,6 @@ struct MenuRun {
   }
 };
 
-// "EGL 1.5 surfaceless, OpenGL 4.5 (Core Profile) Mesa 22 (llvmpipe (LLVM 15, 256 bits))" →
-// the renderer: the last bracket group.
-std::string gl_renderer_of(const std::string& context) {
-  if (context.empty() || context.back() != ')') return "";
-  int depth = 0;
-  for (size_t i = context.size(); i-- > 0;) {
-    depth += context[i] == ')' ? 1 : context[i] == '(' ? -1 : 0;
-    if (depth == 0) return context.substr(i + 1, context.size() - i - 2);
-  }
-  return "";
-}
-
 Menu make_menu(const AppOptions& o) {
   const std::string root = o.game.root_dir;
   UserFiles files = load_user_files(user_config_dir(), data_file(root, "assets/settings/quality.json"));
@@ -163,7 +151,7 @@ int run_menu_script(const AppOptions& o) {
     desc.height = o.height;
     desc.root_dir = o.game.root_dir;
     if (!o.no_render) run.renderer = std::make_unique<FrameRenderer>(desc, o.settings, *run.game);
-    if (run.renderer) run.menu.set_machine(gl_renderer_of(run.renderer->context_description()));
+    if (run.renderer) run.menu.set_machine(run.renderer->gl_renderer());
   }
   if (!stop_requested()) run.snapshot();
   // SIGINT or SIGTERM: at the end of the tick; the screens written so far stay.

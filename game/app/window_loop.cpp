@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <epoxy/gl.h>
 
 #include "core/data_layers.h"
 #include "core/error.h"
@@ -66,8 +65,7 @@ void WindowSession::setup() {
   wd.title = "Arcfire" + (options_.level_given ? " — " + std::filesystem::path(level_).stem().string() : "");
   window_ = open_window(wd);
   renderer_ = make_renderer();
-  const GLubyte* gl_name = glGetString(GL_RENDERER);  // the Graphics page rates the presets for it
-  menu_->set_machine(gl_name ? reinterpret_cast<const char*>(gl_name) : "");
+  menu_->set_machine(renderer_->gl_renderer());  // the Graphics page rates the presets for it
   panel_ = std::make_unique<GamePanel>(game_options_.root_dir);
   models_ = load_scene_resources(*renderer_, game_->world(), game_options_.root_dir);
   clock_.emplace(int(std::lround(1.0 / game_->tick_seconds())));
