@@ -39,7 +39,8 @@ enum class Axis : uint8_t { Pitch = 0, Yaw, Roll, Throttle, StrafeX, StrafeY };
 constexpr int kAxisCount = 6;
 enum Button : uint16_t { kFirePrimary = 1 << 0, kFireSecondary = 1 << 1, kAfterburner = 1 << 2, kFlightAssist = 1 << 3 };
 enum class ScriptCommand : uint8_t {
-  TargetNext = 1, TargetNearest, TargetNextHostile, SwitchWeapon, CameraToggle, Pause, Resume, CameraPadlock
+  TargetNext = 1, TargetNearest, TargetNextHostile, SwitchWeapon, CameraToggle, Pause, Resume, CameraPadlock,
+  Countermeasure, OrderAttack, OrderCover, OrderFormUp, OrderEngage
 };
 
 const char* axis_name(Axis a);

@@ -132,10 +132,12 @@ E choose(LineParser& lp, const Token& t, const std::string& what, const std::arr
 
 constexpr std::array<Button, 4> kButtons{kFirePrimary, kFireSecondary, kAfterburner, kFlightAssist};
 constexpr std::array<Axis, kAxisCount> kAxes{Axis::Pitch, Axis::Yaw, Axis::Roll, Axis::Throttle, Axis::StrafeX, Axis::StrafeY};
-constexpr std::array<ScriptCommand, 8> kCommands{ScriptCommand::TargetNext,        ScriptCommand::TargetNearest,
-                                                 ScriptCommand::TargetNextHostile, ScriptCommand::SwitchWeapon,
-                                                 ScriptCommand::CameraToggle,      ScriptCommand::Pause,
-                                                 ScriptCommand::Resume,            ScriptCommand::CameraPadlock};
+constexpr std::array<ScriptCommand, 13> kCommands{
+    ScriptCommand::TargetNext,     ScriptCommand::TargetNearest, ScriptCommand::TargetNextHostile,
+    ScriptCommand::SwitchWeapon,   ScriptCommand::CameraToggle,  ScriptCommand::Pause,
+    ScriptCommand::Resume,         ScriptCommand::CameraPadlock, ScriptCommand::Countermeasure,
+    ScriptCommand::OrderAttack,    ScriptCommand::OrderCover,    ScriptCommand::OrderFormUp,
+    ScriptCommand::OrderEngage};
 
 bool valid_name(const std::string& s) {
   return !s.empty() && s.size() <= 64 && std::all_of(s.begin(), s.end(), [](char c) {

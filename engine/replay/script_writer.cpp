@@ -42,6 +42,11 @@ const char* command_name(ScriptCommand c) {
     case ScriptCommand::Pause: return "pause";
     case ScriptCommand::Resume: return "resume";
     case ScriptCommand::CameraPadlock: return "camera_padlock";
+    case ScriptCommand::Countermeasure: return "countermeasure";
+    case ScriptCommand::OrderAttack: return "order_attack";
+    case ScriptCommand::OrderCover: return "order_cover";
+    case ScriptCommand::OrderFormUp: return "order_form_up";
+    case ScriptCommand::OrderEngage: return "order_engage";
   }
   return "?";
 }

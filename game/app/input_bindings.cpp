@@ -90,6 +90,11 @@ static Bindings bindings_from(const std::shared_ptr<const JsonDoc>& doc) {
     b.switch_weapon = key(k, "switch_weapon");
     b.camera = key(k, "camera");
     b.camera_padlock = key(k, "camera_padlock");
+    b.countermeasure = key(k, "countermeasure");
+    b.order_attack = key(k, "order_attack");
+    b.order_cover = key(k, "order_cover");
+    b.order_form_up = key(k, "order_form_up");
+    b.order_engage = key(k, "order_engage");
     b.pause = key(k, "pause");
     b.screenshot = key(k, "screenshot");
     b.fps = key(k, "fps");
@@ -123,6 +128,7 @@ static Bindings bindings_from(const std::shared_ptr<const JsonDoc>& doc) {
     b.pad_target_next = pad_button(g, "target_next");
     b.pad_switch_weapon = pad_button(g, "switch_weapon");
     b.pad_camera = pad_button(g, "camera");
+    b.pad_countermeasure = pad_button(g, "countermeasure");
     b.pad_pause = pad_button(g, "pause");
     b.pad_deadzone = g.number("deadzone", 0.12, 0.0, 0.9);
     b.pad_invert_y = g.boolean("invert_y", false);
@@ -181,6 +187,11 @@ void LiveInput::queue_commands_and_actions(const InputState& s) {
   command(presses(b_.target_nearest, -1), Command::TargetNearest);
   command(presses(b_.target_next_hostile, -1), Command::TargetNextHostile);
   command(presses(b_.switch_weapon, b_.pad_switch_weapon), Command::SwitchWeapon);
+  command(presses(b_.countermeasure, b_.pad_countermeasure), Command::Countermeasure);
+  command(presses(b_.order_attack, -1), Command::OrderAttack);
+  command(presses(b_.order_cover, -1), Command::OrderCover);
+  command(presses(b_.order_form_up, -1), Command::OrderFormUp);
+  command(presses(b_.order_engage, -1), Command::OrderEngage);
   action(presses(b_.camera, b_.pad_camera), AppAction::ToggleCamera);
   action(presses(b_.camera_padlock, -1), AppAction::TogglePadlock);
   action(presses(b_.pause, b_.pad_pause), AppAction::TogglePause);

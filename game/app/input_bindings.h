@@ -36,6 +36,7 @@ struct Bindings {
   int fire_primary = -1, fire_secondary = -1, afterburner = -1, assist_off = -1;
   int target_next = -1, target_nearest = -1, target_next_hostile = -1, switch_weapon = -1;
   int camera = -1, camera_padlock = -1, pause = -1, screenshot = -1, fps = -1;
+  int countermeasure = -1, order_attack = -1, order_cover = -1, order_form_up = -1, order_engage = -1;
   bool mouse_enabled = true;
   MouseMode mouse_mode = MouseMode::Relative;
   double mouse_sensitivity = 0.12;  // relative mode: degrees of turn per pixel of travel
@@ -45,7 +46,7 @@ struct Bindings {
   double throttle_rate = 0.6;       // set-throttle change per second with a key held (or the stick full)
   int pad_pitch = 1, pad_yaw = 0, pad_roll = 2, pad_throttle = 3;  // gamepad_axis_code()s: LEFT_Y, LEFT_X, RIGHT_X, RIGHT_Y
   int pad_fire_primary = -1, pad_fire_secondary = -1, pad_afterburner = -1, pad_target_next = -1;
-  int pad_switch_weapon = -1, pad_camera = -1, pad_pause = -1;
+  int pad_switch_weapon = -1, pad_camera = -1, pad_pause = -1, pad_countermeasure = -1;
   double pad_deadzone = 0.12;
   bool pad_invert_y = false;
 };

@@ -16,6 +16,9 @@ int* slot(Bindings& b, const std::string& id) {
       {"target_next", &Bindings::target_next},     {"target_nearest", &Bindings::target_nearest},
       {"target_next_hostile", &Bindings::target_next_hostile}, {"switch_weapon", &Bindings::switch_weapon},
       {"camera", &Bindings::camera},               {"camera_padlock", &Bindings::camera_padlock},
+      {"countermeasure", &Bindings::countermeasure}, {"order_attack", &Bindings::order_attack},
+      {"order_cover", &Bindings::order_cover},     {"order_form_up", &Bindings::order_form_up},
+      {"order_engage", &Bindings::order_engage},
       {"pause", &Bindings::pause},
       {"screenshot", &Bindings::screenshot},       {"fps", &Bindings::fps}};
   static const std::map<std::string, std::pair<KeyAxis Bindings::*, bool>> axes = {
@@ -29,6 +32,7 @@ int* slot(Bindings& b, const std::string& id) {
       {"pad_fire_primary", &Bindings::pad_fire_primary},   {"pad_fire_secondary", &Bindings::pad_fire_secondary},
       {"pad_afterburner", &Bindings::pad_afterburner},     {"pad_target_next", &Bindings::pad_target_next},
       {"pad_switch_weapon", &Bindings::pad_switch_weapon}, {"pad_camera", &Bindings::pad_camera},
+      {"pad_countermeasure", &Bindings::pad_countermeasure},
       {"pad_pause", &Bindings::pad_pause}};
   if (auto s = single.find(id); s != single.end()) return &(b.*(s->second));
   if (auto p = pad.find(id); p != pad.end()) return &(b.*(p->second));
@@ -70,11 +74,15 @@ const std::vector<RemapAction>& remap_actions() {
       {"strafe_up", "Strafe up"},           {"target_next", "Target next"},
       {"target_nearest", "Target nearest"}, {"target_next_hostile", "Target next hostile"},
       {"camera", "Camera"},                 {"camera_padlock", "Padlock view"},
+      {"countermeasure", "Countermeasure"}, {"order_attack", "Wing: attack my target"},
+      {"order_cover", "Wing: cover me"},    {"order_form_up", "Wing: form up"},
+      {"order_engage", "Wing: engage at will"},
       {"pause", "Pause menu"},
       {"screenshot", "Screenshot"},         {"fps", "FPS counter"},
       {"pad_fire_primary", "Gamepad: fire beam"},       {"pad_fire_secondary", "Gamepad: fire missile"},
       {"pad_afterburner", "Gamepad: afterburner"},      {"pad_target_next", "Gamepad: target next"},
       {"pad_switch_weapon", "Gamepad: switch weapon"},  {"pad_camera", "Gamepad: camera"},
+      {"pad_countermeasure", "Gamepad: countermeasure"},
       {"pad_pause", "Gamepad: pause menu"}};
   return actions;
 }

@@ -23,7 +23,12 @@ static_assert(uint8_t(replay::ScriptCommand::TargetNext) == uint8_t(Command::Tar
               uint8_t(replay::ScriptCommand::CameraToggle) == uint8_t(Command::CameraToggle) &&
               uint8_t(replay::ScriptCommand::Pause) == uint8_t(Command::Pause) &&
               uint8_t(replay::ScriptCommand::Resume) == uint8_t(Command::Resume) &&
-              uint8_t(replay::ScriptCommand::CameraPadlock) == uint8_t(Command::CameraPadlock));
+              uint8_t(replay::ScriptCommand::CameraPadlock) == uint8_t(Command::CameraPadlock) &&
+              uint8_t(replay::ScriptCommand::Countermeasure) == uint8_t(Command::Countermeasure) &&
+              uint8_t(replay::ScriptCommand::OrderAttack) == uint8_t(Command::OrderAttack) &&
+              uint8_t(replay::ScriptCommand::OrderCover) == uint8_t(Command::OrderCover) &&
+              uint8_t(replay::ScriptCommand::OrderFormUp) == uint8_t(Command::OrderFormUp) &&
+              uint8_t(replay::ScriptCommand::OrderEngage) == uint8_t(Command::OrderEngage));
 
 InputFrame to_input_frame(const replay::InputState& s) {
   InputFrame f;

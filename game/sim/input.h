@@ -29,6 +29,11 @@ enum class Command : uint8_t {
   Pause,
   Resume,
   CameraPadlock,  // padlock view on, or back to chase
+  Countermeasure,  // drop a decoy flare against incoming missiles
+  OrderAttack,     // wing orders: attack the player's target,
+  OrderCover,      //   cover the player (engage whoever attacks them),
+  OrderFormUp,     //   form up on the player,
+  OrderEngage,     //   engage at will
 };
 
 struct InputFrame {
