@@ -55,8 +55,8 @@ ShipClassDef parse_ship_class_doc(const std::shared_ptr<const JsonDoc>& doc, con
   ShipClassDef c;
   c.name = name;
   c.path = doc->path();
-  c.model = r.require_string("model");
-  if (!root_dir.empty()) require_named_file(r.require("model"), c.model, root_dir, "model");
+  const JsonValue model = r.require("model");
+  c.model = model.string();
   c.mass = r.require_number("mass", 1.0, 1.0e9);
   c.thrust = r.require_number("thrust", 0.0, 1.0e12);
   c.strafe_thrust = r.number("strafe_thrust", c.thrust * 0.5, 0.0, 1.0e12);
@@ -97,6 +97,7 @@ ShipClassDef parse_ship_class_doc(const std::shared_ptr<const JsonDoc>& doc, con
   }
   c.exhausts = points(r, "exhausts", 100.0);
   r.finish();
+  if (!root_dir.empty()) require_named_file(model, c.model, root_dir, "model");  // what the file names, once it is whole
   return c;
 }
 
