@@ -93,12 +93,29 @@ int write_all(int fd, const void* data, size_t size) {
   return 0;
 }
 
-FileWriter::FileWriter(const std::string& path) : path_(path), tmp_(temporary_name(path)) {
-  if (fs::is_directory(path)) throw WriteError(path + ": cannot write: it is a folder", kExitBadInput);
+// The file a write to `path` replaces: a symbolic link's target (the link stays a link), else
+// `path` itself. A link loop or a name too long is the path's error, as opening it would be.
+static std::string write_target(const std::string& path) {
+  fs::path p(path);
+  for (int hops = 0; hops < 40; ++hops) {
+    struct stat st {};
+    if (::lstat(p.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) return p.string();
+    std::error_code ec;
+    const fs::path next = fs::read_symlink(p, ec);
+    if (ec) throw WriteError(path + ": cannot write: " + ec.message(), kExitBadInput);
+    p = next.is_absolute() ? next : p.parent_path() / next;
+  }
+  throw WriteError(path + ": cannot write: " + system_reason(ELOOP), kExitBadInput);
+}
+
+FileWriter::FileWriter(const std::string& path)
+    : path_(path), target_(write_target(path)), tmp_(temporary_name(target_)) {
+  std::error_code ec;
+  if (fs::is_directory(target_, ec)) throw WriteError(path + ": cannot write: it is a folder", kExitBadInput);
   fd_ = ::open(tmp_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
   if (fd_ < 0) {
     const int err = errno;
-    throw WriteError(path + ": cannot write: " + system_reason(err) + " (folder " + folder_of(path) + ")",
+    throw WriteError(path + ": cannot write: " + system_reason(err) + " (folder " + folder_of(target_) + ")",
                      exit_code_for(err));
   }
 }
@@ -135,7 +152,7 @@ void FileWriter::close() {
 void FileWriter::commit() {
   if (tmp_.empty()) throw WriteError(path_ + ": cannot write: the file was abandoned", kExitCheckFailed);
   close();
-  if (std::rename(tmp_.c_str(), path_.c_str()) != 0) {
+  if (std::rename(tmp_.c_str(), target_.c_str()) != 0) {
     const int err = errno;
     abandon();
     throw WriteError(path_ + ": cannot replace the file: " + system_reason(err), exit_code_for(err));
@@ -155,10 +172,12 @@ void write_file_atomic(const std::string& path, const std::string& text, const s
 void check_output_file(const std::string& path, const std::string& option) {
   const std::string what = option.empty() ? path : option + " " + path;
   if (path.empty()) throw WriteError(option + ": needs a file name", kExitBadInput);
-  if (fs::is_directory(path)) throw WriteError(what + ": is a folder, not a file", kExitBadInput);
-  const std::string folder = folder_of(path);
-  if (!fs::is_directory(folder)) throw WriteError(what + ": folder " + folder + " does not exist", kExitBadInput);
-  if (const int err = probe_create(temporary_name(path)))
+  const std::string target = write_target(path);
+  std::error_code ec;
+  if (fs::is_directory(target, ec)) throw WriteError(what + ": is a folder, not a file", kExitBadInput);
+  const std::string folder = folder_of(target);
+  if (!fs::is_directory(folder, ec)) throw WriteError(what + ": folder " + folder + " does not exist", kExitBadInput);
+  if (const int err = probe_create(temporary_name(target)))
     throw WriteError(what + ": cannot write: " + system_reason(err), kExitBadInput);
 }
 

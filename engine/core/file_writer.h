@@ -3,7 +3,8 @@
 // Frames, snapshots, goldens, hash logs, summaries, recordings' headers, bindings, settings,
 // contact sheets and WAVs all go through FileWriter: the bytes go to a temporary file in the
 // target's folder (so the rename stays on one file system), every write() and the close() are
-// checked, and only a complete file is renamed over the target. On any failure the temporary
+// checked, and only a complete file is renamed over the target (through a symbolic link: over the
+// link's target, beside which the temporary file is made). On any failure the temporary
 // file is removed, the old target is left as it was, and WriteError says in one line which file
 // and the system's reason ("out/frame_000030.png: cannot write: No space left on device").
 // WriteError::exit_code is 2 when the path itself cannot be used (missing folder, no
@@ -55,7 +56,9 @@ class FileWriter {
  private:
   void abandon() noexcept;
 
-  std::string path_, tmp_;
+  std::string path_;    // as named, for messages
+  std::string target_;  // what is replaced: a symbolic link's target, so the link stays a link
+  std::string tmp_;
   int fd_ = -1;
 };
 

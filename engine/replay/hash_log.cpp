@@ -38,17 +38,23 @@ HashLog parse_hash_log(const std::string& text, const std::string& path) {
     size_t sp2 = l.find(' ', sp + 1);
     size_t stop = sp2 == std::string::npos ? l.size() : sp2;
     auto [q, ec2] = std::from_chars(l.data() + sp + 1, l.data() + stop, value, 16);
-    if (ec2 != std::errc() || q != l.data() + stop || stop - sp - 1 > 16)
-      fail(static_cast<int>(sp) + 2, "hash must be up to 16 hex digits, got '" + l.substr(sp + 1, stop - sp - 1) + "'");
+    // Exactly 16 digits, as written: a log cut short mid-line is refused, not read as a small value.
+    if (ec2 != std::errc() || q != l.data() + stop || stop - sp - 1 != 16)
+      fail(static_cast<int>(sp) + 2, "hash must be 16 hex digits, got '" + l.substr(sp + 1, stop - sp - 1) + "'");
     log.hashes.push_back(value);
     if (sp2 == std::string::npos) continue;
     uint64_t full = 0;
     auto [r, ec3] = std::from_chars(l.data() + sp2 + 1, l.data() + l.size(), full, 16);
-    if (ec3 != std::errc() || r != l.data() + l.size() || l.size() - sp2 - 1 > 16)
-      fail(static_cast<int>(sp2) + 2, "full hash must be up to 16 hex digits, got '" + l.substr(sp2 + 1) + "'");
+    if (ec3 != std::errc() || r != l.data() + l.size() || l.size() - sp2 - 1 != 16)
+      fail(static_cast<int>(sp2) + 2, "full hash must be 16 hex digits, got '" + l.substr(sp2 + 1) + "'");
     log.full.emplace_back(tick, full);
   }
   if (line == 0) throw InputError(path + ":1:1: empty hash log; it starts with 'arcfire-hashlog 1'");
+  if (text.back() != '\n') {
+    const size_t last_line = text.rfind('\n') == std::string::npos ? 0 : text.rfind('\n') + 1;
+    fail(int(text.size() - last_line) + 1,
+         "the file is cut short (its last line has no line end); run --update-golden to write it again");
+  }
   return log;
 }
 

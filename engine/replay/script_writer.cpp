@@ -278,21 +278,38 @@ std::string write_script(const Script& script) {
 
 std::string fill_hash_values(const std::string& original_text, const Script& script,
                              const std::vector<uint64_t>& values) {
-  std::vector<std::string> lines;
-  std::istringstream in(original_text);
-  for (std::string l; std::getline(in, l);) lines.push_back(l);
+  // Each value is spliced into its line; every other byte (line ends, a missing final newline,
+  // comments) stays as it was.
+  std::vector<size_t> line_starts{0};
+  for (size_t i = 0; i < original_text.size(); ++i)
+    if (original_text[i] == '\n') line_starts.push_back(i + 1);
+  std::vector<std::pair<size_t, size_t>> spans;  // [begin, end) of each value in the text
+  std::vector<std::string> texts;
   for (size_t i = 0; i < script.hashes.size() && i < values.size(); ++i) {
     const HashCheck& h = script.hashes[i];
-    std::string& l = lines.at(static_cast<size_t>(h.src.line - 1));
+    const size_t begin = line_starts.at(static_cast<size_t>(h.src.line - 1));
+    const size_t end = std::min(original_text.find('\n', begin), original_text.size());
+    const std::string l = original_text.substr(begin, end - begin);
     // The value is the third word: keep the tick as written (+N or absolute) and any comment.
-    size_t verb = l.find(h.full ? "full_hash" : "hash");
+    const size_t verb = l.find(h.full ? "full_hash" : "hash");
     size_t start = l.find_first_not_of(" \t", verb + (h.full ? 9 : 4));
+    if (start == std::string::npos) start = l.size();
     size_t stop = l.find_first_of(" \t#\r", start);
     if (stop == std::string::npos) stop = l.size();
-    l = l.substr(0, start) + hex64(values[i]) + l.substr(stop);
+    spans.emplace_back(begin + start, begin + stop);
+    texts.push_back(hex64(values[i]));
   }
+  std::vector<size_t> order(spans.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return spans[a].first < spans[b].first; });
   std::string out;
-  for (const std::string& l : lines) out += l + "\n";
+  size_t at = 0;
+  for (size_t i : order) {
+    out.append(original_text, at, spans[i].first - at);
+    out += texts[i];
+    at = spans[i].second;
+  }
+  out.append(original_text, at, std::string::npos);
   return out;
 }
 

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <map>
 
 #include "audio/sound_library.h"
 #include "core/data_layers.h"
@@ -143,6 +144,89 @@ void resolve_preview_options(const CLI::App& app, AppOptions& o) {
   if (!bad_backdrop.empty()) throw InputError(bad_backdrop);
 }
 
+// An option given an empty value (`--quality ""`) is refused with what it takes instead.
+void refuse_empty_values(const CLI::App& app) {
+  static const std::map<std::string, std::string> allowed = {
+      {"--quality", "low, medium, high or reference"}, {"--difficulty", "easy, normal or hard"},
+      {"--backdrop", "space, wall or a model of assets/models"}, {"--size", "WIDTHxHEIGHT"},
+      {"--set", "key=value"}, {"--data", "a folder"}, {"--mod", "a folder"}, {"--out", "a folder"}};
+  for (const CLI::Option* opt : app.get_options()) {
+    if (opt->count() == 0 || opt->get_expected_min() == 0) continue;  // --workbench alone: its first effect
+    for (const std::string& value : opt->results()) {
+      if (!value.empty()) continue;
+      const auto it = allowed.find(opt->get_name());
+      throw InputError(opt->get_name() + ": empty value; allowed: " + (it != allowed.end() ? it->second : "a file name"));
+    }
+  }
+}
+
+// Modes exclude each other, and an option the chosen mode would ignore is refused, not dropped.
+void refuse_contradictions(const CLI::App& app, const AppOptions& o) {
+  auto given = [&](const char* name) { return app.get_option(name)->count() > 0; };
+  std::vector<std::string> modes;
+  for (const char* m : {"--replay", "--serialization-test", "--menu-script", "--preview", "--workbench", "--demo"})
+    if (given(m)) modes.push_back(m);
+  if (modes.size() > 1)
+    throw InputError(modes[0] + " and " + modes[1] + ": one mode at a time (--replay, --serialization-test, "
+                     "--menu-script, --preview, --workbench or --demo)");
+  const bool replay = given("--replay"), serialization = given("--serialization-test");
+  const bool headless_run = (o.headless || o.demo) && modes.size() == (o.demo ? 1u : 0u);
+  const bool window = !o.headless && modes.empty();
+  const struct {
+    const char* option;
+    bool ok;
+    const char* allowed;
+  } rules[] = {
+      {"--level", !replay, "not with --replay: the script names its level"},
+      {"--ticks", !replay, "not with --replay: the script decides how many ticks"},
+      {"--seed", !replay, "not with --replay: the script decides the seed"},
+      {"--difficulty", !replay, "not with --replay: the script decides the difficulty"},
+      {"--size", !replay, "not with --replay: the script decides the snapshot size"},
+      {"--ticks", headless_run || serialization, "only with --headless, --demo or --serialization-test"},
+      {"--summary", headless_run, "only with --headless or --demo"},
+      {"--every", headless_run && !o.no_render && (o.demo || given("--out")),
+       "only with --headless and --out, drawing frames (not with --no-render)"},
+      {"--out", !(headless_run && o.no_render), "not with --no-render: a headless run writes only frames there"},
+      {"--demo", !o.no_render, "not with --no-render: the demo is its frames"},
+      {"--record", window, "only in a window (it records the live session)"},
+      {"--fullscreen", window, "only in a window"},
+      {"--fps", window, "only in a window"},
+      {"--dev", window, "only in a window"},
+      {"--no-vsync", window || given("--workbench"), "only in a window"},
+  };
+  for (const auto& r : rules)
+    if (given(r.option) && !r.ok) throw InputError(std::string(r.option) + ": " + r.allowed);
+}
+
+// The files named on the command line, read and written: no output may be an input.
+void name_command_line_files(const CLI::App& app, AppOptions& o) {
+  RunFiles& f = o.files;
+  if (o.replay_path.empty()) f.input("--level", o.level);
+  f.input("--bindings", o.bindings_path);
+  f.input("--sounds", o.sounds_path);
+  f.input("--replay", o.replay_path);
+  f.input("--menu-script", o.menu_script);
+  f.input("--preview", o.preview_path);
+  f.input("--workbench", o.workbench_effect);
+  if (o.quality_given || o.demo) f.input("quality presets", data_file(o.game.root_dir, "assets/settings/quality.json"));
+  f.output("--summary", o.summary_path);
+  f.output("--audio-out", o.audio_out);
+  f.output("--record", o.record_path);
+  f.output("--frame-times", o.frame_times_path);
+  if (app.get_option("--out")->count() > 0 && o.replay_path.empty()) {
+    auto ends = [](const std::string& name, const char* tail) { return name.ends_with(tail); };
+    if (!o.menu_script.empty())
+      f.output_folder("--out", o.out_dir, [=](const std::string& n) { return ends(n, ".png") || ends(n, ".txt"); });
+    else if (!o.preview_path.empty())
+      f.output_folder("--out", o.out_dir, [=](const std::string& n) { return ends(n, ".png") || n == "stats.json"; });
+    else
+      f.output_folder("--out", o.out_dir, [=](const std::string& n) {
+        return (n.starts_with("frame_") && ends(n, ".png")) || n == "contact_sheet.png";
+      });
+  }
+  f.check();
+}
+
 // The mods over the data root: --mod's, else in a window the player's (settings.json "mods"). A
 // bad --mod is bad input; a player's mod that no longer loads is skipped with a line, so a
 // deleted folder cannot lock the player out of the game.
@@ -215,6 +299,7 @@ void resolve_options(const CLI::App& app, const CommandLineText& t, AppOptions& 
   o.workbench = app.get_option("--workbench")->count() > 0;
   if (o.workbench && (o.headless || !o.replay_path.empty())) throw InputError("--workbench: a window of its own, not with --headless or --replay");
   if (!o.workbench_effect.empty()) o.workbench_effect = resolve_data_path(o.workbench_effect, "--workbench", root);
+  name_command_line_files(app, o);
 }
 
 }  // namespace
@@ -233,6 +318,13 @@ std::optional<int> parse_command_line(int argc, char** argv, AppOptions& o) {
   } catch (const CLI::ParseError& e) {
     std::string msg = e.what();
     std::fprintf(stderr, "arcfire: %s (see arcfire --help)\n", msg.c_str());
+    return int(kExitBadInput);
+  }
+  try {
+    refuse_empty_values(app);
+    refuse_contradictions(app, o);
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "arcfire: %s\n", e.what());
     return int(kExitBadInput);
   }
   o.vsync = !text.no_vsync;

@@ -11,6 +11,7 @@
 #include "game/app/audio_session.h"
 #include "game/app/contact_sheet.h"
 #include "game/app/frame_renderer.h"
+#include "game/app/run_files.h"
 #include "game/sim/game.h"
 #include "game/sim/world.h"
 #include "platform/stop_request.h"
@@ -39,6 +40,11 @@ int run_headless(const AppOptions& o) {
   if (!out.empty()) check_output_dir(out, "--out");
   if (!o.summary_path.empty()) check_output_file(o.summary_path, "--summary");
   Game game = Game::load_level(level, o.game);
+  RunFiles files = o.files;  // the ship classes, models and effects are known once the level is loaded
+  add_level_inputs(files, game.world(), o.game.root_dir);
+  if (demo && o.out_dir.empty())
+    files.output_folder("--demo's folder", out, [](const std::string& n) { return n.ends_with(".png"); });
+  files.check();
   std::unique_ptr<FrameRenderer> renderer;
   if (render) {
     FrameRendererDesc desc;

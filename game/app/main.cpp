@@ -22,8 +22,8 @@
 int main(int argc, char** argv) {
   arc::install_stop_handlers();
   arc::AppOptions options;
-  if (auto code = arc::parse_command_line(argc, argv, options)) return *code;
   try {
+    if (auto code = arc::parse_command_line(argc, argv, options)) return *code;
     if (!options.replay_path.empty()) return arc::run_replay(arc::ReplayRunOptions(options));
     if (options.serialization_test > 0) return arc::run_serialization_test(arc::SerializationTestOptions(options));
     if (!options.menu_script.empty()) return arc::run_menu_script(options);
@@ -42,6 +42,10 @@ int main(int argc, char** argv) {
     return arc::kExitBadInput;
   } catch (const arc::PlatformError& e) {
     std::fprintf(stderr, "arcfire: %s\n", e.what());
+    return arc::kExitBadInput;
+  } catch (const std::exception& e) {
+    // Anything else still ends in one line and a code, never an abort without a word.
+    std::fprintf(stderr, "arcfire: %s\n", arc::InputError::one_line(e.what()).c_str());
     return arc::kExitBadInput;
   }
 }

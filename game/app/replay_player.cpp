@@ -20,6 +20,7 @@
 #include "game/app/audio_session.h"
 #include "game/app/frame_renderer.h"
 #include "game/app/replay_expectations.h"
+#include "game/app/run_files.h"
 #include "game/app/script_feeder.h"
 #include "gfx/image_compare.h"
 #include "platform/stop_request.h"
@@ -36,7 +37,8 @@ ReplayRunOptions::ReplayRunOptions(const AppOptions& app)
       game(app.game),
       settings(app.settings),
       sounds_path(app.sounds_path),
-      audio_out(app.audio_out) {}
+      audio_out(app.audio_out),
+      files(app.files) {}
 
 namespace {
 
@@ -66,6 +68,8 @@ std::optional<Image> load_golden(const std::string& path, std::string& why) {
   if (captured) ::dup2(saved, STDERR_FILENO);
   if (saved >= 0) ::close(saved);
   if (sink) std::fclose(sink);
+  // The decoder's lines, joined (InputError wrote each line end as \n): one line of the report.
+  for (size_t at = why.find("\\n"); at != std::string::npos; at = why.find("\\n", at)) why.replace(at, 2, "; ");
   std::replace(why.begin(), why.end(), '\n', ' ');
   return image;
 }
@@ -111,6 +115,7 @@ class ReplayPlayer {
   void check_hashes(uint64_t t, size_t& next_hash);
   void check_snapshot(const replay::SnapshotCheck& s, uint64_t t);
   void stage(const std::string& path, const void* data, size_t size);
+  void check_run_files() const;
 
   const ReplayRunOptions& opt_;
   replay::Script script_;
@@ -148,7 +153,6 @@ ReplayPlayer::ReplayPlayer(const ReplayRunOptions& opt, replay::Script script)
       game_options_(script_game_options(script_, settings_, opt.game)),
       game_(Game::load_level(level_path_, game_options_)) {
   check_expectation_names(script_, game_.world());
-  if (!opt.audio_out.empty()) audio_ = std::make_unique<AudioCapture>(opt.sounds_path, settings_, opt.audio_out);
   const std::string stem = fs::path(opt.script_path).stem().string();
   golden_dir_ = !opt.golden_dir.empty() ? opt.golden_dir
                                         : (fs::path(opt.script_path).parent_path() / "golden" / stem).string();
@@ -162,6 +166,8 @@ ReplayPlayer::ReplayPlayer(const ReplayRunOptions& opt, replay::Script script)
   out_dir_ = !opt.out_dir.empty() ? opt.out_dir : (fs::path("out") / "replay" / stem).string();
   hash_values_.assign(script_.hashes.size(), 0);
   if (!opt.update_golden && fs::exists(log_path())) golden_log_ = replay::parse_hash_log(read_text_file(log_path()), log_path());
+  check_run_files();
+  if (!opt.audio_out.empty()) audio_ = std::make_unique<AudioCapture>(opt.sounds_path, settings_, opt.audio_out);
   // Only a frame to look at makes a GL context: replays without snapshots never create one.
   if (!opt.no_render && (!script_.snapshots.empty() || opt.render_every > 0)) {
     FrameRendererDesc desc;
@@ -172,6 +178,26 @@ ReplayPlayer::ReplayPlayer(const ReplayRunOptions& opt, replay::Script script)
   // Output folders are checked before the first tick (core/file_writer.h).
   if (renderer_ && !script_.snapshots.empty()) check_output_dir(out_dir_, "--out");
   if (opt.update_golden) check_output_dir(golden_dir_, "golden folder");
+}
+
+// Every file the replay reads and writes, checked before the first write: no output may be an
+// input. The script itself is the one file rewritten in place (--update-golden's hash values).
+void ReplayPlayer::check_run_files() const {
+  RunFiles files = opt_.files;
+  add_level_inputs(files, game_.world(), data_root_of(opt_.game));
+  files.input("--replay", opt_.script_path);
+  if (opt_.update_golden) files.output("golden hash log", log_path());
+  else files.input("golden hash log", log_path());
+  const bool own_images = script_.header.snapshots_like.empty();
+  for (const replay::SnapshotCheck& s : script_.snapshots) {
+    const std::string golden = (fs::path(images_dir_) / (s.name + ".png")).string();
+    if (opt_.update_golden && own_images) files.output("golden image", golden);
+    else files.input("golden image", golden);
+    if (opt_.no_render) continue;
+    for (const char* tail : {".png", "_actual.png", "_diff.png"})
+      files.output("--out", (fs::path(out_dir_) / (s.name + tail)).string());
+  }
+  files.check();
 }
 
 void ReplayPlayer::stage(const std::string& path, const void* data, size_t size) {
@@ -311,10 +337,15 @@ void ReplayPlayer::check_snapshot(const replay::SnapshotCheck& s, uint64_t t) {
     stage(golden, png.data(), png.size());
     return;
   }
-  if (!fs::exists(golden)) {
+  std::error_code ec;
+  if (!fs::exists(golden, ec)) {
     fail(t, s.src, "no golden image " + golden + "; run with --update-golden " +
                        (own_images ? "after checking " + written
                                    : "on " + script_.header.snapshots_like + ", whose frames this script must match"));
+    return;
+  }
+  if (fs::is_directory(golden, ec)) {
+    fail(t, s.src, "golden image " + golden + " is a folder, not a PNG file; remove it and run --update-golden");
     return;
   }
   std::string unreadable;

@@ -47,6 +47,7 @@ struct ReplayRunOptions {
   int render_every = 0;         // benchmarks: also render every N-th tick without checking (0 = never)
   std::string sounds_path = "assets/sounds/sounds.json";
   std::string audio_out;        // --audio-out: the replay's sound as WAV, through the loopback device
+  RunFiles files;               // the command line's other files: no output of the replay may be one
 };
 
 struct ReplayOutcome {

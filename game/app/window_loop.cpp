@@ -8,6 +8,7 @@
 #include "core/data_layers.h"
 #include "core/error.h"
 #include "game/app/frame_time_log.h"
+#include "game/app/run_files.h"
 #include "game/app/scene_resources.h"
 #include "game/app/window_session.h"
 #include "game/render/menu_layout.h"
@@ -52,6 +53,9 @@ void WindowSession::setup() {
     menu_.emplace(user_);  // the pause screen only
   }
   start_game(std::make_unique<Game>(Game::load_level(level_, game_options_)));
+  RunFiles files = options_.files;  // the level's classes, models and effects are known now
+  add_level_inputs(files, game_->world(), game_options_.root_dir);
+  files.check();
   // From the menu, the recording starts with the first mission launched (launch()); a second
   // arcfire recording to the same file is refused here, before a window opens.
   if (!options_.record_path.empty() && !menu_->has_main())

@@ -36,5 +36,9 @@ inline glm::dvec3 orientation(JsonObject& o) { return o.vec3("orientation", glm:
 
 // The optional "mission" block of a level (game/sim/mission_defs.cpp).
 void parse_mission(JsonObject& r, LevelDef& L);
+// A file a data file names (`what`: "model"), found as given when absolute, else through the data
+// layers of `root_dir`: InputError at the value naming the file looked for unless it is a
+// regular file. Checked in every mode, so a run without rendering refuses what a window would.
+void require_named_file(const JsonValue& v, const std::string& named, const std::string& root_dir, const char* what);
 
 }  // namespace arc::defs_internal

@@ -177,7 +177,8 @@ class EffectLibrary;
 // assets/settings/ai.json below `root_dir`: every difficulty and key is required.
 AiDifficultyTable load_ai_difficulties(const std::string& root_dir);
 
-ShipClassDef load_ship_class(const std::string& path, const std::string& name);
+// With `root_dir`, the class's model must resolve through its data layers to a file.
+ShipClassDef load_ship_class(const std::string& path, const std::string& name, const std::string& root_dir = "");
 // Parses ship class text as if it were the file `path` (fuzz targets, tests).
 ShipClassDef parse_ship_class(const std::string& text, const std::string& path, const std::string& name);
 // With `effects`, every effect a level names must be in it (checked at its position).

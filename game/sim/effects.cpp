@@ -6,15 +6,31 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/data_layers.h"
+#include "core/error.h"
 #include "game/sim/geometry.h"
 #include "game/sim/world.h"
 #include "particles/effect_library.h"
+#include "particles/sprites.h"
 
 namespace arc {
 
 std::shared_ptr<const EffectLibrary> load_effect_library(const std::string& root_dir) {
   auto lib = std::make_shared<EffectLibrary>();
   lib->load_directory((std::filesystem::path(root_dir) / "assets/effects").string());
+  // The texture each cluster's sprite names is checked here, rendering or not, as a window would
+  // find it missing.
+  for (const std::string& name : lib->names()) {
+    const EffectDef& def = lib->get(name);
+    for (const ClusterDef& c : def.clusters) {
+      const std::string sprite(kSpriteNames.at(c.sprite));
+      const std::string texture = data_file(root_dir, "assets/textures/sprite_" + sprite + ".png");
+      std::error_code ec;
+      if (!std::filesystem::is_regular_file(texture, ec))
+        throw InputError(def.path + ": cluster '" + c.name + "': sprite '" + sprite + "' names texture " + texture +
+                         ": no such file");
+    }
+  }
   return lib;
 }
 

@@ -58,7 +58,7 @@ void load_class_of(LevelDef& L, const ShipSpawnDef& d, const JsonValue& cls, con
   std::string file = data_file(root_dir, "assets/ships/" + d.ship_class + ".json");  // a mod's class first
   if (!std::filesystem::exists(file))
     cls.fail("ship class '" + d.ship_class + "' not found: no file " + file);
-  L.classes.emplace(d.ship_class, std::make_shared<const ShipClassDef>(load_ship_class(file, d.ship_class)));
+  L.classes.emplace(d.ship_class, std::make_shared<const ShipClassDef>(load_ship_class(file, d.ship_class, root_dir)));
 }
 
 void parse_ships(JsonObject& r, LevelDef& L, const std::string& root_dir) {
@@ -89,11 +89,12 @@ void parse_ships(JsonObject& r, LevelDef& L, const std::string& root_dir) {
   if (L.ships.empty()) r.fail_key(r.has("ships") ? "ships" : "name", "a level needs at least one ship in 'ships'");
 }
 
-void parse_props(JsonObject& r, LevelDef& L) {
+void parse_props(JsonObject& r, LevelDef& L, const std::string& root_dir) {
   r.check_list_length("props", kMaxLevelProps);
   for (JsonObject p : r.objects("props")) {
     PropDef d;
     d.model = p.require_string("model");
+    require_named_file(p.require("model"), d.model, root_dir, "model");
     d.label = p.string("label", "");
     d.position = p.vec3("position", glm::dvec3(0.0), -kSpace, kSpace);
     d.orientation_deg = orientation(p);
@@ -128,15 +129,17 @@ void parse_effect_motion(JsonObject& e, EffectSpawnDef& d, const EffectLibrary* 
   }
 }
 
-void parse_effects(JsonObject& r, LevelDef& L, const EffectLibrary* fx) {
+void parse_effects(JsonObject& r, LevelDef& L, const EffectLibrary* fx, const std::string& root_dir) {
   r.check_list_length("effects", kMaxLevelEffects);
   for (JsonObject e : r.objects("effects")) {
     EffectSpawnDef d;
     JsonValue name = e.require("effect");
     d.effect = name.string();
     if (fx && !fx->has(d.effect)) {
+      // The library holds every file of assets/effects: an effect it lacks is a missing file.
       std::vector<std::string> known = fx->names();
-      name.fail("unknown effect \"" + d.effect + "\"; known: " + join_allowed(known));
+      name.fail("'" + name.name() + "' names effect file " + data_file(root_dir, "assets/effects/" + d.effect + ".json") +
+                ": no such file; effects: " + join_allowed(known));
     }
     d.label = e.string("label", "");
     d.position = e.vec3("position", glm::dvec3(0.0), -kSpace, kSpace);
@@ -186,8 +189,8 @@ LevelDef parse_level_doc(std::shared_ptr<const JsonDoc> doc, const std::string& 
   L.objective = r.require_string("objective");
   parse_rules(r, L);
   parse_ships(r, L, root_dir);
-  parse_props(r, L);
-  parse_effects(r, L, fx);
+  parse_props(r, L, root_dir);
+  parse_effects(r, L, fx, root_dir);
   parse_camera(r, L);
   parse_team_colors(r, L);
   parse_mission(r, L);

@@ -1,9 +1,35 @@
 // game/sim/ship_class_defs.cpp — ship classes and their weapons from assets/ships/*.json.
+#include <filesystem>
+#include <system_error>
+
+#include "core/data_layers.h"
 #include "game/sim/def_parsing.h"
 #include "game/sim/defs.h"
 
 namespace arc {
 using namespace defs_internal;
+
+void defs_internal::require_named_file(const JsonValue& v, const std::string& named, const std::string& root_dir,
+                                       const char* what) {
+  namespace fs = std::filesystem;
+  const std::string file = fs::path(named).is_absolute() ? named : data_file(root_dir, named);
+  std::error_code ec;
+  const fs::file_status st = fs::status(file, ec);
+  if (fs::is_regular_file(st)) return;
+  const std::string why = fs::is_directory(st)                               ? "is a folder, not a file"
+                          : fs::exists(st)                                   ? "is not a regular file"
+                          : ec && ec != std::errc::no_such_file_or_directory ? ec.message()
+                                                                             : "no such file";
+  std::string message = "'";
+  message += v.name();
+  message += "' names ";
+  message += what;
+  message += ' ';
+  message += file;
+  message += ": ";
+  message += why;
+  v.fail(message);
+}
 
 namespace {
 
@@ -23,12 +49,14 @@ ProjectileWeaponDef projectile_weapon(JsonObject& o, bool homing) {
   return w;
 }
 
-ShipClassDef parse_ship_class_doc(const std::shared_ptr<const JsonDoc>& doc, const std::string& name) {
+ShipClassDef parse_ship_class_doc(const std::shared_ptr<const JsonDoc>& doc, const std::string& name,
+                                  const std::string& root_dir) {
   JsonObject r = root_of(doc);
   ShipClassDef c;
   c.name = name;
   c.path = doc->path();
-  c.model = r.require_string("model");
+  const JsonValue model = r.require("model");
+  c.model = model.string();
   c.mass = r.require_number("mass", 1.0, 1.0e9);
   c.thrust = r.require_number("thrust", 0.0, 1.0e12);
   c.strafe_thrust = r.number("strafe_thrust", c.thrust * 0.5, 0.0, 1.0e12);
@@ -69,17 +97,18 @@ ShipClassDef parse_ship_class_doc(const std::shared_ptr<const JsonDoc>& doc, con
   }
   c.exhausts = points(r, "exhausts", 100.0);
   r.finish();
+  if (!root_dir.empty()) require_named_file(model, c.model, root_dir, "model");  // what the file names, once it is whole
   return c;
 }
 
 }  // namespace
 
-ShipClassDef load_ship_class(const std::string& path, const std::string& name) {
-  return parse_ship_class_doc(JsonDoc::load_file(path), name);
+ShipClassDef load_ship_class(const std::string& path, const std::string& name, const std::string& root_dir) {
+  return parse_ship_class_doc(JsonDoc::load_file(path), name, root_dir);
 }
 
 ShipClassDef parse_ship_class(const std::string& text, const std::string& path, const std::string& name) {
-  return parse_ship_class_doc(JsonDoc::parse(text, path), name);
+  return parse_ship_class_doc(JsonDoc::parse(text, path), name, "");
 }
 
 }  // namespace arc

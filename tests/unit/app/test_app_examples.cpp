@@ -3,7 +3,10 @@
 // text).
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cstdlib>
+#include <fstream>
 #include <memory>
 #include <glm/geometric.hpp>
 #include <filesystem>
@@ -11,6 +14,7 @@
 #include <vector>
 
 #include "core/data_root.h"
+#include "core/error.h"
 #include "audio/audio_engine.h"
 #include "game/app/all_settings.h"
 #include "game/app/audio_session.h"
@@ -19,6 +23,7 @@
 #include "game/app/menu.h"
 #include "game/app/menu_input.h"
 #include "game/app/mission_catalog.h"
+#include "game/app/run_files.h"
 #include "game/app/user_settings.h"
 #include "game/render/menu_layout.h"
 #include "game/render/sound_events.h"
@@ -153,6 +158,50 @@ TEST(AppExamples, WorkbenchStage) {
   stage.scrub(90);                         // tick 90 (1.5 s), exactly
   stage.build_view(camera, width, height, view);   // meshes and particles for the renderer
   SUCCEED() << view.particles.size() << " particles at tick 90";
+}
+
+TEST(AppExamples, RunFiles) {
+  RunFiles files;
+  files.input("--level", "levels/duel.json");
+  files.output("--summary", "out/summary.json");
+  files.output_folder("--out", "out/frames", [](const std::string& name) { return name.ends_with(".png"); });
+  files.check();  // InputError when an output is one of the inputs
+}
+
+// The same file by another name, a symbolic link, a hard link or a file an output folder
+// writes is refused, naming both; a file that merely sits beside an input is not.
+TEST(RunFiles, AnOutputThatIsAnInputIsRefused) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("arcfire_run_files_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir / "sub");
+  { std::ofstream(dir / "level.json") << "{}"; }
+  fs::create_symlink("level.json", dir / "link.json");
+  fs::create_hard_link(dir / "level.json", dir / "hard.json");
+  auto refused = [&](const std::string& output) {
+    RunFiles f;
+    f.input("--level", (dir / "level.json").string());
+    f.output("--summary", output);
+    try {
+      f.check();
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("--summary " + output + " is the same file as --level "), std::string::npos)
+          << e.what();
+      return true;
+    }
+    return false;
+  };
+  EXPECT_TRUE(refused((dir / "level.json").string()));
+  EXPECT_TRUE(refused((dir / "sub" / ".." / "level.json").string()));
+  EXPECT_TRUE(refused((dir / "link.json").string()));
+  EXPECT_TRUE(refused((dir / "hard.json").string()));
+  EXPECT_FALSE(refused((dir / "summary.json").string()));
+  EXPECT_FALSE(refused((dir / "sub" / "level.json").string()));
+  RunFiles frames;
+  frames.input("--level", (dir / "frame_000030.png").string());
+  frames.output_folder("--out", dir.string(), [](const std::string& n) { return n.starts_with("frame_"); });
+  EXPECT_THROW(frames.check(), InputError);
+  fs::remove_all(dir);
 }
 
 }  // namespace

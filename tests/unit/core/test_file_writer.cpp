@@ -77,6 +77,27 @@ TEST(FileWriter, AtomicWriteReplacesWholeFile) {
   EXPECT_EQ(arc::read_text_file(p), "{\"a\": 2}");
 }
 
+// A write through a symbolic link (a chain of them, or one to a file not there yet) replaces the
+// target, beside which the temporary file is made: the link stays a link.
+TEST(FileWriter, WritesThroughASymbolicLink) {
+  const fs::path dir = fresh_dir("link");
+  fs::create_directories(dir / "real");
+  arc::write_file_atomic((dir / "real" / "f.txt").string(), "old\n");
+  fs::create_symlink("real/f.txt", dir / "link.txt");
+  fs::create_symlink("link.txt", dir / "link2.txt");
+  arc::write_file_atomic((dir / "link2.txt").string(), "new\n");
+  EXPECT_TRUE(fs::is_symlink(dir / "link.txt"));
+  EXPECT_TRUE(fs::is_symlink(dir / "link2.txt"));
+  EXPECT_EQ(read(dir / "real" / "f.txt"), "new\n");
+  EXPECT_EQ(files_in(dir / "real"), 1) << "the temporary file must be gone";
+  fs::create_symlink("real/g.txt", dir / "dangling.txt");
+  arc::write_file_atomic((dir / "dangling.txt").string(), "g\n");
+  EXPECT_TRUE(fs::is_symlink(dir / "dangling.txt"));
+  EXPECT_EQ(read(dir / "real" / "g.txt"), "g\n");
+  fs::create_symlink("loop.txt", dir / "loop.txt");
+  EXPECT_EQ(error_of([&] { arc::write_file_atomic((dir / "loop.txt").string(), "x"); }).exit_code, arc::kExitBadInput);
+}
+
 TEST(FileWriter, AtomicWriteIsCheckedToo) {
   const fs::path dir = fresh_dir("atomic");
   const fs::path file = dir / "bindings.json";

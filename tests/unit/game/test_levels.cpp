@@ -256,7 +256,7 @@ TEST(LevelErrors, EffectTargetsAndVelocitiesAreChecked) {
   EXPECT_EQ(e.rfind("bad.json:7:63: 'label' must be a string", 0), 0u) << e;
 }
 
-TEST(LevelErrors, UnknownEffectIsReportedAtItsPosition) {
+TEST(LevelErrors, UnknownEffectIsAMissingFileAtItsPosition) {
   std::string t = kGood;
   t.replace(t.find("\"ships\""), 0, "\"effects\": [{ \"effect\": \"no_such_effect\" }],\n  ");
   auto fx = load_effect_library(kRoot);
@@ -264,7 +264,10 @@ TEST(LevelErrors, UnknownEffectIsReportedAtItsPosition) {
     parse_level_def(t, "bad.json", kRoot, fx.get());
     FAIL() << "no error";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()).rfind("bad.json:6:27: unknown effect \"no_such_effect\"", 0), 0u) << e.what();
+    const std::string m = e.what();
+    EXPECT_EQ(m.rfind("bad.json:6:27: '", 0), 0u) << m;
+    EXPECT_NE(m.find("effect' names effect file "), std::string::npos) << m;
+    EXPECT_NE(m.find("assets/effects/no_such_effect.json: no such file; effects: "), std::string::npos) << m;
   }
   EXPECT_NO_THROW(parse_level_def(t, "bad.json", kRoot));  // without a library names are not checked
 }

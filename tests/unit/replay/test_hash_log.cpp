@@ -27,8 +27,12 @@ TEST(HashLog, BadLinesArePositioned) {
     return std::string("(none)");
   };
   EXPECT_EQ(err("nope\n").rfind("h.txt:1:1: a hash log starts with", 0), 0u) << err("nope\n");
-  EXPECT_EQ(err("arcfire-hashlog 1\n0 1\n2 3\n").rfind("h.txt:3:1: expected tick 1, got 2", 0), 0u);
+  const std::string h = "0000000000000001";
+  EXPECT_EQ(err("arcfire-hashlog 1\n0 " + h + "\n2 " + h + "\n").rfind("h.txt:3:1: expected tick 1, got 2", 0), 0u);
   EXPECT_EQ(err("arcfire-hashlog 1\n0 zz\n").rfind("h.txt:2:3: hash must be", 0), 0u);
-  EXPECT_EQ(err("arcfire-hashlog 1\n0 1 q\n").rfind("h.txt:2:5: full hash must be", 0), 0u);
+  EXPECT_EQ(err("arcfire-hashlog 1\n0 " + h + " q\n").rfind("h.txt:2:20: full hash must be", 0), 0u);
+  // Cut short: mid-value, and mid-line after a whole value.
+  EXPECT_EQ(err("arcfire-hashlog 1\n0 " + h + " 00000\n").rfind("h.txt:2:20: full hash must be 16 hex digits", 0), 0u);
+  EXPECT_EQ(err("arcfire-hashlog 1\n0 " + h).rfind("h.txt:2:19: the file is cut short", 0), 0u) << err("arcfire-hashlog 1\n0 " + h);
   EXPECT_EQ(err("").rfind("h.txt:1:1: empty hash log", 0), 0u);
 }

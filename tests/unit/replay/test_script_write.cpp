@@ -129,6 +129,13 @@ TEST(ReplayWrite, RecordedDiffsReplayToTheSameHeldState) {
   EXPECT_EQ(input_diff_lines(3, live[4], live[4]), "");
 }
 
+// Only the value's bytes change: CR LF line ends and a missing final newline stay as they were.
+TEST(ReplayWrite, FillHashValuesKeepsLineEndsAndTheLastByte) {
+  const std::string text = "arcfire-replay 1\r\nlevel x\r\n60 hash 12\r\n60 end";
+  Script s = parse_script(text, "f.replay", known());
+  EXPECT_EQ(fill_hash_values(text, s, {0xabcULL}), "arcfire-replay 1\r\nlevel x\r\n60 hash 0000000000000abc\r\n60 end");
+}
+
 TEST(ReplayWrite, FillHashValuesKeepsEverythingElse) {
   const std::string text =
       "arcfire-replay 1\nlevel x\n# keep me\n+60 hash ?   # after one second\n120 full_hash 12\n120 end\n";
