@@ -1,3 +1,4 @@
+// assets/gltf_claims.cpp — a glTF file's version and required extensions, its node transforms and extent.
 #include "assets/gltf_claims.h"
 
 #include <cfloat>

@@ -315,15 +315,13 @@ class GltfReader {
     const uint64_t element = csize * v.components;
     v.stride = bv.byteStride ? bv.byteStride : element;
     if (v.stride < element) fail(name + ": byteStride " + std::to_string(v.stride) + " is smaller than one element");
-    {
-      const uint64_t view_len = bv.byteLength;
-      // count is bounded by the view length first, so the product below cannot overflow.
-      if (v.count > view_len || uint64_t(acc.byteOffset) > view_len ||
-          (v.count - 1) * v.stride + element > view_len - acc.byteOffset)
-        fail(name + " (offset " + std::to_string(acc.byteOffset) + ", " + std::to_string(v.count) + " elements of " +
-             std::to_string(element) + " bytes, stride " + std::to_string(v.stride) + ") exceeds bufferView " +
-             std::to_string(acc.bufferView) + " of " + std::to_string(view_len) + " bytes");
-    }
+    const uint64_t view_len = bv.byteLength;
+    // count is bounded by the view length first, so the product below cannot overflow.
+    if (v.count > view_len || uint64_t(acc.byteOffset) > view_len ||
+        (v.count - 1) * v.stride + element > view_len - acc.byteOffset)
+      fail(name + " (offset " + std::to_string(acc.byteOffset) + ", " + std::to_string(v.count) + " elements of " +
+           std::to_string(element) + " bytes, stride " + std::to_string(v.stride) + ") exceeds bufferView " +
+           std::to_string(acc.bufferView) + " of " + std::to_string(view_len) + " bytes");
     v.base = buffer.data.data() + bv.byteOffset + acc.byteOffset;
     return v;
   }
