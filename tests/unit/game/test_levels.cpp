@@ -296,7 +296,7 @@ TEST(LevelMissions, BlockIsReadAndErrorsArePositioned) {
   EXPECT_EQ(L.mission.order, 4);
   EXPECT_EQ(L.mission.order_where, "m.json:3:76");
   std::string e = error_of(with_mission(R"({ "title": "", "briefing": "B.", "objective": "O.", "order": 1 })"));
-  EXPECT_EQ(e.rfind("bad.json:3:25: 'title' must be a text of 1 to 40 characters, got 0", 0), 0u) << e;
+  EXPECT_EQ(e.rfind("bad.json:3:25: 'mission.title' must be a text of 1 to 40 characters, got 0", 0), 0u) << e;
   e = error_of(with_mission(R"({ "title": "T", "briefing": "B.", "objective": "O.", "order": 0 })"));
   EXPECT_EQ(e.rfind("bad.json:3:76: 'mission.order' must be in [1, 1000], got 0", 0), 0u) << e;
   e = error_of(with_mission(R"({ "title": "T", "briefing": "B.", "order": 1 })"));
