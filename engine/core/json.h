@@ -2,8 +2,8 @@
 //
 // Every data file (levels, ships, effects, quality presets, key bindings) is JSON with
 // comments, parsed by nlohmann::json. A second SAX pass records the line and column of every
-// key and value by JSON pointer, so a loader can say *where* a value is wrong:
-//   levels/duel.json:14:18: 'hull' must be a number in [1, 1e6], got -5
+// key and value by JSON pointer, so a loader can say *where* a value is wrong, by whole key path:
+//   levels/duel.json:14:18: 'ships[1].position[2]' must be in [-1073741824, 1073741824], got -2e+09
 //
 // Loaders read through JsonObject, which checks types, ranges and finiteness and, at
 // finish(), rejects every key that was not read ("unknown key 'hul'; allowed: hull, shield").
