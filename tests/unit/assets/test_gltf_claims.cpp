@@ -54,7 +54,7 @@ std::string base64(const std::string& in) {
 struct Claims {
   std::string asset = R"({"version": "2.0"})";
   std::string nodes = R"([{"mesh": 0}])";
-  std::string count = "3";
+  int count = 3;
   std::string extra;
 };
 
@@ -70,7 +70,7 @@ std::string with_part(std::string text, const std::string& key, const std::strin
 std::string gltf_text(const Claims& c, bool embedded_uri) {
   std::string t = with_part(kModel, "ASSET", c.asset);
   t = with_part(t, "NODES", c.nodes);
-  t = with_part(t, "COUNT", c.count);
+  t = with_part(t, "COUNT", std::to_string(c.count));
   t = with_part(t, "EXTRA", c.extra);
   return with_part(t, "BUFFER", embedded_uri ? "\"uri\": \"data:application/octet-stream;base64," + base64(triangle_bytes()) + "\", " : "");
 }
@@ -160,7 +160,7 @@ TEST_F(GltfClaims, RequiredExtensionsTheLoaderLacksAreNamed) {
 
 TEST_F(GltfClaims, AnAccessorOfZeroPositionsIsNamed) {
   Claims c;
-  c.count = "0";
+  c.count = 0;
   expect_refused(c, "mesh 0 primitive 0: POSITION accessor 0: count is 0; allowed: at least 1 element "
                     "(glTF accessors are never empty)");
 }
