@@ -72,10 +72,9 @@ Range read_range(JsonObject& o, const std::string& key, double unit = 1.0) {
 
 // [[t, value], ...] with t in [0, 1] increasing, or a single number.
 std::vector<CurveKey> read_keys(const JsonValue& v, double lo, double hi, int component) {
-  const std::string curve = v.name();
   auto checked = [&](const JsonValue& x, double value) {
     if (value < lo || value > hi)
-      x.fail("'" + curve + "' values must be in [" + std::to_string(lo).substr(0, std::to_string(lo).find('.')) + ", " +
+      x.fail("'" + v.name() + "' values must be in [" + std::to_string(lo).substr(0, std::to_string(lo).find('.')) + ", " +
              std::to_string(hi).substr(0, std::to_string(hi).find('.')) + "], got " + x.raw().dump());
     return value;
   };
