@@ -14,6 +14,7 @@
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 #include <tiny_gltf.h>
+#include "assets/gltf_claims.h"
 #include "assets/image_codec.h"
 #include "assets/image_decode.h"
 #include "assets/model.h"
@@ -214,8 +215,12 @@ class GltfReader {
     return roots;
   }
 
+  static std::string node_label(const tinygltf::Node& node, int index) {
+    return "node " + std::to_string(index) + (node.name.empty() ? std::string() : " '" + node.name + "'");
+  }
+
   glm::dmat4 local_transform(const tinygltf::Node& node, int index) const {
-    const std::string what = "node " + std::to_string(index);
+    const std::string what = node_label(node, index);
     if (!node.matrix.empty()) {
       if (node.matrix.size() != 16) fail(what + ": 'matrix' must have 16 numbers");
       for (double v : node.matrix)
@@ -255,16 +260,24 @@ class GltfReader {
     on_path_.insert(index);
     const tinygltf::Node& node = gltf_.nodes[size_t(index)];
     const glm::dmat4 world = parent * local_transform(node, index);
+    check_world(node, index, world);
     if (node.mesh >= 0) {
       check_index(node.mesh, gltf_.meshes, "mesh");
       const auto& mesh = gltf_.meshes[size_t(node.mesh)];
       for (size_t p = 0; p < mesh.primitives.size(); ++p) {
         out.primitives.push_back(read_primitive(mesh.primitives[p], node.mesh, int(p), world, out));
+        check_gltf_placed_vertices(out.primitives.back().positions, path_ + ": " + node_label(node, index) + ": mesh " +
+                                                                        std::to_string(node.mesh) + " primitive " + std::to_string(p));
         count_output(out.primitives.back());
       }
     }
     for (int child : node.children) visit_node(out, child, world, depth + 1);
     on_path_.erase(index);
+  }
+
+  void check_world(const tinygltf::Node& node, int index, const glm::dmat4& world) const {
+    const char* what = !node.matrix.empty() ? "matrix" : !node.scale.empty() ? "scale" : !node.translation.empty() ? "translation" : "rotation";
+    check_gltf_world_transform(world, path_ + ": " + node_label(node, index) + ": " + what);
   }
 
   // Meshes placed by several nodes are copied once per node: bound the model as it is built.
@@ -296,20 +309,19 @@ class GltfReader {
     v.components = component_count(acc.type);
     v.normalized = acc.normalized;
     v.count = acc.count;
+    if (v.count == 0) fail(name + ": count is 0; allowed: at least 1 element (glTF accessors are never empty)");
     const size_t csize = component_size(acc.componentType);
     if (csize == 0 || v.components == 0) fail(name + ": unknown componentType or type");
     const uint64_t element = csize * v.components;
     v.stride = bv.byteStride ? bv.byteStride : element;
     if (v.stride < element) fail(name + ": byteStride " + std::to_string(v.stride) + " is smaller than one element");
-    if (v.count > 0) {
-      const uint64_t view_len = bv.byteLength;
-      // count is bounded by the view length first, so the product below cannot overflow.
-      if (v.count > view_len || uint64_t(acc.byteOffset) > view_len ||
-          (v.count - 1) * v.stride + element > view_len - acc.byteOffset)
-        fail(name + " (offset " + std::to_string(acc.byteOffset) + ", " + std::to_string(v.count) + " elements of " +
-             std::to_string(element) + " bytes, stride " + std::to_string(v.stride) + ") exceeds bufferView " +
-             std::to_string(acc.bufferView) + " of " + std::to_string(view_len) + " bytes");
-    }
+    const uint64_t view_len = bv.byteLength;
+    // count is bounded by the view length first, so the product below cannot overflow.
+    if (v.count > view_len || uint64_t(acc.byteOffset) > view_len ||
+        (v.count - 1) * v.stride + element > view_len - acc.byteOffset)
+      fail(name + " (offset " + std::to_string(acc.byteOffset) + ", " + std::to_string(v.count) + " elements of " +
+           std::to_string(element) + " bytes, stride " + std::to_string(v.stride) + ") exceeds bufferView " +
+           std::to_string(acc.bufferView) + " of " + std::to_string(view_len) + " bytes");
     v.base = buffer.data.data() + bv.byteOffset + acc.byteOffset;
     return v;
   }
@@ -327,18 +339,18 @@ class GltfReader {
     return out;
   }
 
-  std::vector<glm::vec2> read_uvs(int accessor) const {
-    AccessorView v = view_accessor(accessor, "TEXCOORD_0");
+  std::vector<glm::vec2> read_uvs(int accessor, const std::string& what) const {
+    AccessorView v = view_accessor(accessor, what);
     const bool ok_type = v.component_type == TINYGLTF_COMPONENT_TYPE_FLOAT ||
                          (v.normalized && (v.component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
                                            v.component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT));
     if (v.components != 2 || !ok_type)
-      fail("TEXCOORD_0 accessor " + std::to_string(accessor) + " must be VEC2 of FLOAT or normalized UNSIGNED_BYTE/SHORT");
+      fail(what + " accessor " + std::to_string(accessor) + " must be VEC2 of FLOAT or normalized UNSIGNED_BYTE/SHORT");
     std::vector<glm::vec2> out(v.count);
     for (size_t i = 0; i < v.count; ++i) {
       out[i] = glm::vec2(float(v.component(i, 0)), float(v.component(i, 1)));
       if (!std::isfinite(out[i].x) || !std::isfinite(out[i].y))
-        fail("TEXCOORD_0 accessor " + std::to_string(accessor) + " contains NaN or infinity");
+        fail(what + " accessor " + std::to_string(accessor) + " contains NaN or infinity");
     }
     return out;
   }
@@ -352,18 +364,18 @@ class GltfReader {
     MeshPrimitive out;
     auto pos = prim.attributes.find("POSITION");
     if (pos == prim.attributes.end()) fail(name + ": has no POSITION attribute");
-    out.positions = read_vec3(pos->second, "POSITION");
+    out.positions = read_vec3(pos->second, name + ": POSITION");
     const size_t n = out.positions.size();
     if (auto it = prim.attributes.find("NORMAL"); it != prim.attributes.end()) {
-      out.normals = read_vec3(it->second, "NORMAL");
+      out.normals = read_vec3(it->second, name + ": NORMAL");
       if (out.normals.size() != n) fail(name + ": NORMAL count differs from POSITION count");
     }
     if (auto it = prim.attributes.find("TEXCOORD_0"); it != prim.attributes.end()) {
-      out.uvs = read_uvs(it->second);
+      out.uvs = read_uvs(it->second, name + ": TEXCOORD_0");
       if (out.uvs.size() != n) fail(name + ": TEXCOORD_0 count differs from POSITION count");
     }
     if (prim.indices >= 0) {
-      AccessorView v = view_accessor(prim.indices, "indices");
+      AccessorView v = view_accessor(prim.indices, name + ": indices");
       const bool int_type = v.component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
                             v.component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ||
                             v.component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
@@ -515,8 +527,10 @@ ModelData parse_model(const std::string& bytes, const std::string& path) {
   if (binary) {
     validate_glb_container(path, bytes);
     check_json_text(bytes.data() + 20, read_u32(bytes, 12), path + " (JSON chunk)", kModelJsonLimits);
+    check_gltf_claims(bytes.data() + 20, read_u32(bytes, 12), path);
   } else {
     check_json_text(bytes, path, kModelJsonLimits);
+    check_gltf_claims(bytes.data(), bytes.size(), path);
   }
 
   tinygltf::TinyGLTF loader;

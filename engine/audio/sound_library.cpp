@@ -31,7 +31,7 @@ SoundLayerDef parse_layer(JsonObject o) {
   l.burst_length = o.number("burst_length", l.burst_period * 0.5, 0, 5);
   l.jitter = o.number("jitter", 0, 0, 1);
   if (l.burst_period > 0 && l.burst_length > l.burst_period)
-    o.fail_key("burst_length", "'burst_length' must not be longer than 'burst_period' (" +
+    o.fail_key("burst_length", "'" + o.key_path("burst_length") + "' must not be longer than 'burst_period' (" +
                                    std::to_string(l.burst_period) + " s)");
   o.allow({"doc"});
   o.finish();

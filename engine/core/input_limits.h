@@ -25,9 +25,12 @@ constexpr size_t kMaxDataFileBytes = size_t(256) << 10;
 // glTF models (.glb or .gltf with embedded buffers) and images.
 constexpr size_t kMaxModelFileBytes = size_t(64) << 20;
 constexpr size_t kMaxImageFileBytes = size_t(32) << 20;
-// Decoded images: pixels per side and RGBA8 bytes in all.
-constexpr int kMaxImageSide = 8192;
-constexpr size_t kMaxImageDecodedBytes = size_t(64) << 20;
+// Decoded images: pixels per side and RGBA8 bytes in all. 16384 a side is what every current
+// GPU takes as a texture. Images are handed out as RGBA8, and a decode holds the codec's pixels
+// and the RGBA8 copy at once, so a 16384² image (1 GiB of RGBA8) cannot fit the 500 MB a run
+// may use: 128 MiB of RGBA8 (16384×2048, 8192×4096, 5792²) keeps a decode within 256 MiB.
+constexpr int kMaxImageSide = 16384;
+constexpr size_t kMaxImageDecodedBytes = size_t(128) << 20;
 // glTF models: vertices and indices after node instancing and flat shading; the
 // images of one model decoded together.
 constexpr size_t kMaxModelVertices = size_t(4) << 20;

@@ -280,16 +280,45 @@ std::string join_allowed(const std::vector<std::string>& names) {
 
 // ---- JsonValue -------------------------------------------------------------------------------
 
-std::string JsonValue::name() const {
-  auto s = ptr_.rfind('/');
-  std::string n = s == std::string::npos ? ptr_ : ptr_.substr(s + 1);
-  if (n.empty()) return "document";
-  if (!n.empty() && std::isdigit(static_cast<unsigned char>(n[0]))) {
-    auto p = ptr_.substr(0, s);
-    auto s2 = p.rfind('/');
-    return (s2 == std::string::npos ? p : p.substr(s2 + 1)) + "[" + n + "]";
+// A key as written after its parent: `.hull`, or `["render.scale"]` when the key holds
+// characters (a dot, a space) that would make the dotted path ambiguous.
+static std::string path_member(const std::string& key, bool first) {
+  bool plain = !key.empty();
+  for (char c : key) plain = plain && (std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-');
+  if (!plain) return "[\"" + key + "\"]";
+  return first ? key : "." + key;
+}
+
+std::string json_key_path(const nlohmann::json& root, const std::string& pointer) {
+  // Walk from the root so an object key made of digits is told apart from an array index.
+  std::string out;
+  const nlohmann::json* at = &root;
+  size_t i = 0;
+  while (i < pointer.size()) {
+    size_t next = pointer.find('/', i + 1);
+    if (next == std::string::npos) next = pointer.size();
+    std::string part;
+    for (size_t k = i + 1; k < next; ++k) {
+      if (pointer[k] == '~' && k + 1 < next) part += pointer[++k] == '1' ? '/' : '~';
+      else part += pointer[k];
+    }
+    if (at && at->is_array()) {
+      out += "[" + part + "]";
+      const size_t index = std::strtoul(part.c_str(), nullptr, 10);
+      at = index < at->size() ? &(*at)[index] : nullptr;
+    } else {
+      out += path_member(part, out.empty());
+      at = at && at->is_object() && at->contains(part) ? &(*at)[part] : nullptr;
+    }
+    i = next;
   }
-  return n;
+  return out.empty() ? "document" : out;
+}
+
+std::string JsonValue::name() const { return json_key_path(doc_->root(), ptr_); }
+
+std::string JsonObject::key_path(const std::string& key) const {
+  return json_key_path(doc_->root(), ptr_ + "/" + json_pointer_escape(key));
 }
 
 void JsonValue::fail(const std::string& message) const {
@@ -415,7 +444,8 @@ std::optional<JsonValue> JsonObject::get(const std::string& key) {
 
 JsonValue JsonObject::require(const std::string& key) {
   auto v = get(key);
-  if (!v) fail("missing required key '" + key + "' in " + (ptr_.empty() ? std::string("the top-level object") : "'" + name() + "'"));
+  if (!v)
+    fail("missing required key '" + key + "' in " + (ptr_.empty() ? std::string("the top-level object") : "'" + name() + "'"));
   return *v;
 }
 
@@ -471,7 +501,7 @@ void JsonObject::check_list_length(const std::string& key, size_t max) const {
   if (!has(key)) return;
   const nlohmann::json& list = (*j_)[key];
   if (list.is_array() && list.size() > max)
-    fail_key(key, "'" + key + "' lists " + std::to_string(list.size()) + " entries; at most " + std::to_string(max) +
+    fail_key(key, "'" + key_path(key) + "' lists " + std::to_string(list.size()) + " entries; at most " + std::to_string(max) +
                       " are allowed");
 }
 

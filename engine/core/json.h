@@ -2,8 +2,8 @@
 //
 // Every data file (levels, ships, effects, quality presets, key bindings) is JSON with
 // comments, parsed by nlohmann::json. A second SAX pass records the line and column of every
-// key and value by JSON pointer, so a loader can say *where* a value is wrong:
-//   levels/duel.json:14:18: 'hull' must be a number in [1, 1e6], got -5
+// key and value by JSON pointer, so a loader can say *where* a value is wrong, by whole key path:
+//   levels/duel.json:14:18: 'ships[1].position[2]' must be in [-1073741824, 1073741824], got -2e+09
 //
 // Loaders read through JsonObject, which checks types, ranges and finiteness and, at
 // finish(), rejects every key that was not read ("unknown key 'hul'; allowed: hull, shield").
@@ -69,7 +69,8 @@ class JsonValue {
 
   const nlohmann::json& raw() const { return *j_; }
   const std::string& pointer() const { return ptr_; }
-  std::string name() const;  // the last pointer component, for messages
+  // The whole key path from the top, for messages: ships[3].position[1], beam.mounts[0][0].
+  std::string name() const;
   std::string where() const { return doc_->where_value(ptr_); }
   [[noreturn]] void fail(const std::string& message) const;
 
@@ -122,6 +123,8 @@ class JsonObject : public JsonValue {
   std::vector<JsonObject> objects(const std::string& key);  // optional array of objects; missing → empty
   // Throws at the key's position when the member is an array of more than `max` elements.
   void check_list_length(const std::string& key, size_t max) const;
+  // The whole key path of a member, as name() gives it for values: "ships[3].player".
+  std::string key_path(const std::string& key) const;
   // Error at a member's key position.
   [[noreturn]] void fail_key(const std::string& key, const std::string& message) const;
   // Throws for the first key that was never read, listing the allowed ones.
@@ -135,6 +138,8 @@ class JsonObject : public JsonValue {
 
 // Escapes a key for use in a JSON pointer (RFC 6901).
 std::string json_pointer_escape(const std::string& key);
+// A JSON pointer into `root` as a key path for messages: /ships/3/position/1 → ships[3].position[1].
+std::string json_key_path(const nlohmann::json& root, const std::string& pointer);
 // "a, b or c" for messages.
 std::string join_allowed(const std::vector<std::string>& names);
 

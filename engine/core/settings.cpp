@@ -67,6 +67,10 @@ SettingDef* Settings::find_mut(const std::string& key) {
 }
 
 void Settings::set(const std::string& key, const std::string& value, const std::string& where) {
+  set(key, value, where, "setting '" + key + "'");
+}
+
+void Settings::set(const std::string& key, const std::string& value, const std::string& where, const std::string& what) {
   SettingDef* d = find_mut(key);
   if (!d) {
     std::vector<std::string> keys;
@@ -74,7 +78,7 @@ void Settings::set(const std::string& key, const std::string& value, const std::
     throw InputError(where + ": unknown setting '" + key + "'; known: " + join_allowed(keys));
   }
   auto bad = [&]() {
-    throw InputError(where + ": setting '" + key + "' must be " + allowed_text(*d) + ", got '" + value + "'");
+    throw InputError(where + ": " + what + " must be " + allowed_text(*d) + ", got '" + value + "'");
   };
   switch (d->kind) {
     case SettingDef::Kind::Number: {
@@ -85,10 +89,14 @@ void Settings::set(const std::string& key, const std::string& value, const std::
       break;
     }
     case SettingDef::Kind::Integer: {
+      // A whole number written with a fraction of zero ("50000.0", "5e4", as JSON writers put
+      // it) is that integer; a non-zero fraction is refused.
       char* end = nullptr;
-      long long v = std::strtoll(value.c_str(), &end, 10);
-      if (value.empty() || *end || double(v) < d->min || double(v) > d->max) bad();
-      d->value = std::to_string(v);
+      const double v = std::strtod(value.c_str(), &end);
+      const bool decimal = value.find_first_not_of("0123456789+-.eE") == std::string::npos;
+      if (value.empty() || *end || !decimal || !std::isfinite(v) || std::floor(v) != v || v < d->min || v > d->max)
+        bad();
+      d->value = std::to_string(static_cast<long long>(v));
       break;
     }
     case SettingDef::Kind::Flag:
@@ -141,12 +149,8 @@ void Settings::apply_preset_doc(const std::shared_ptr<const JsonDoc>& doc, const
     if (v.raw().is_string()) text = v.raw().get<std::string>();
     else if (v.raw().is_boolean()) text = v.raw().get<bool>() ? "true" : "false";
     else if (v.raw().is_number()) text = v.raw().dump();
-    else v.fail("setting '" + it.key() + "' must be a string, number or boolean");
-    try {
-      set(it.key(), text, doc->where(obj.pointer() + "/" + json_pointer_escape(it.key())));
-    } catch (const InputError&) {
-      throw;
-    }
+    else v.fail("'" + v.name() + "' must be a string, number or boolean");
+    set(it.key(), text, doc->where(obj.pointer() + "/" + json_pointer_escape(it.key())), "'" + v.name() + "'");
   }
 }
 

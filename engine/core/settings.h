@@ -46,6 +46,8 @@ class Settings {
 
   // Sets one key from text; `where` prefixes the error ("--set", "quality.json:4:9").
   void set(const std::string& key, const std::string& value, const std::string& where);
+  // The same, the value named `what` in the message (a file's key path: "'presets.low.sim.substeps'").
+  void set(const std::string& key, const std::string& value, const std::string& where, const std::string& what);
   // "key=value" form of --set.
   void set_from_text(const std::string& assignment, const std::string& where);
   // Applies a named preset from a quality file; unknown preset or bad values → InputError.

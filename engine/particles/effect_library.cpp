@@ -63,19 +63,18 @@ Range read_range(JsonObject& o, const std::string& key, double unit = 1.0) {
     return {x, x};
   }
   if (!v->is_array() || v->raw().size() != 2)
-    v->fail("'" + key + "' must be a number or [min, max] with numbers in [" + std::to_string(lo) + ", " +
+    v->fail("'" + v->name() + "' must be a number or [min, max] with numbers in [" + std::to_string(lo) + ", " +
             std::to_string(hi) + "]");
   std::vector<double> n = v->numbers(lo, hi);
-  if (n[0] > n[1]) v->fail("'" + key + "' must be [min, max] with min <= max");
+  if (n[0] > n[1]) v->fail("'" + v->name() + "' must be [min, max] with min <= max");
   return {n[0] * unit, n[1] * unit};
 }
 
 // [[t, value], ...] with t in [0, 1] increasing, or a single number.
 std::vector<CurveKey> read_keys(const JsonValue& v, double lo, double hi, int component) {
-  const std::string curve = v.name();
   auto checked = [&](const JsonValue& x, double value) {
     if (value < lo || value > hi)
-      x.fail("'" + curve + "' values must be in [" + std::to_string(lo).substr(0, std::to_string(lo).find('.')) + ", " +
+      x.fail("'" + v.name() + "' values must be in [" + std::to_string(lo).substr(0, std::to_string(lo).find('.')) + ", " +
              std::to_string(hi).substr(0, std::to_string(hi).find('.')) + "], got " + x.raw().dump());
     return value;
   };
@@ -84,12 +83,21 @@ std::vector<CurveKey> read_keys(const JsonValue& v, double lo, double hi, int co
     v.fail("'" + v.name() + "' must be a number or a non-empty array of [t, value] keyframes");
   v.check_list_length(kMaxCurveKeys);
   std::vector<CurveKey> keys;
+  double last_t = 0.0;
   for (const JsonValue& k : v.array()) {
     if (!k.is_array() || k.raw().size() != 2)
       k.fail("a keyframe must be [t, value] with t in [0, 1]");
     std::vector<JsonValue> tv = k.array();
-    float t = float(tv[0].number(0.0, 1.0));
+    const double t_file = tv[0].number(0.0, 1.0);
+    const float t = float(t_file);
     if (!keys.empty() && t < keys.back().t) tv[0].fail("keyframe times must not decrease");
+    // Curves are evaluated in float: two times apart in the file but equal as floats would
+    // make a step the author did not write.
+    if (!keys.empty() && t == keys.back().t && t_file != last_t)
+      tv[0].fail("'" + tv[0].name() + "': key times " + nlohmann::json(last_t).dump() + " and " + tv[0].raw().dump() +
+                 " are the same in single precision; allowed: times equal (a step) or apart as floats "
+                 "(about 1e-7 near 1)");
+    last_t = t_file;
     double value;
     if (component < 0) {
       value = checked(tv[1], tv[1].number(-1e300, 1e300));
@@ -113,7 +121,7 @@ void read_curves(JsonObject o, ClusterDef& c) {
   curve("burn", c.burn);
   if (auto v = o.get("color")) {
     const EffectField& f = effect_field(B::Curves, "color");
-    if (v->is_number()) v->fail("'color' must be an array of [t, [r, g, b]] keyframes");
+    if (v->is_number()) v->fail("'" + v->name() + "' must be an array of [t, [r, g, b]] keyframes");
     c.red = Curve::from_keys(read_keys(*v, f.min, f.max, 0));
     c.green = Curve::from_keys(read_keys(*v, f.min, f.max, 1));
     c.blue = Curve::from_keys(read_keys(*v, f.min, f.max, 2));
@@ -138,7 +146,7 @@ void read_emitter(JsonObject o, ClusterDef& c) {
     const EffectField& f = effect_field(B::Emitter, "axis");
     const glm::dvec3 a = axis->vec3(f.min, f.max);
     const double l = std::sqrt(a.x * a.x + a.y * a.y + a.z * a.z);
-    if (l < 1e-6) axis->fail("'axis' must be a non-zero direction [x, y, z]");
+    if (l < 1e-6) axis->fail("'" + axis->name() + "' must be a non-zero direction [x, y, z]");
     e.axis_rotation = rotation_from_forward(a / l);
   }
   const bool needs_radius = e.shape == EmitterShape::Sphere || e.shape == EmitterShape::SphereSurface;
@@ -155,7 +163,7 @@ void read_emitter(JsonObject o, ClusterDef& c) {
     tri.check_list_length(3 * kMaxEmitterTriangles);
     for (const JsonValue& v : tri.array()) e.triangles.push_back(v.vec3(f.min, f.max));
     if (e.triangles.empty() || e.triangles.size() % 3 != 0)
-      tri.fail("'triangles' must list 3 vertices [x, y, z] per triangle, got " + std::to_string(e.triangles.size()) +
+      tri.fail("'" + tri.name() + "' must list 3 vertices [x, y, z] per triangle, got " + std::to_string(e.triangles.size()) +
                " vertices");
     double total = 0.0;
     for (size_t i = 0; i < e.triangles.size(); i += 3) {
@@ -164,14 +172,14 @@ void read_emitter(JsonObject o, ClusterDef& c) {
       total += 0.5 * std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
       e.area_prefix.push_back(total);
     }
-    if (!(total > 0.0)) tri.fail("'triangles' must have a total area above zero");
+    if (!(total > 0.0)) tri.fail("'" + tri.name() + "' must have a total area above zero");
   }
   e.rate = number(o, B::Emitter, "rate");
   e.spacing = number(o, B::Emitter, "spacing");
   if (e.spacing > 0.0 && e.spacing < kMinSpacing)
-    o.fail_key("spacing", "'spacing' must be 0 (none) or at least 0.01 m, got " + std::to_string(e.spacing));
+    o.fail_key("spacing", "'" + o.key_path("spacing") + "' must be 0 (none) or at least 0.01 m, got " + std::to_string(e.spacing));
   if (e.spacing > 0.0 && (c.animation != AnimationType::Linear || c.owner_space))
-    o.fail_key("spacing", "'spacing' needs a world-space linear cluster: particles are laid along the emitter's path");
+    o.fail_key("spacing", "'" + o.key_path("spacing") + "' needs a world-space linear cluster: particles are laid along the emitter's path");
   e.burst = uint32_t(integer(o, B::Emitter, "burst"));
   e.duration = number(o, B::Emitter, "duration");
   std::string dir = pick(o, B::Emitter, "direction");
@@ -185,7 +193,7 @@ void read_particles(JsonObject o, ClusterDef& c) {
   p.speed = read_range(o, "speed");
   p.lifetime = read_range(o, "lifetime");
   p.size = read_range(o, "size");
-  if (p.size.max <= 0.0) o.fail_key("size", "'size' must be above zero");
+  if (p.size.max <= 0.0) o.fail_key("size", "'" + o.key_path("size") + "' must be above zero");
   p.rotation = read_range(o, "rotation_deg", kDeg);
   p.spin = read_range(o, "spin_deg", kDeg);
   p.inherit_velocity = number(o, B::Particles, "inherit_velocity");
@@ -220,10 +228,10 @@ void read_animation(JsonObject o, ClusterDef& c) {
     auto seed = o.require("seed_length");
     const EffectField& sf = effect_field(B::Animation, "seed_length");
     l.seed_length = seed.number(sf.min, sf.max);
-    if (l.seed_length <= 0.0) seed.fail("'seed_length' must be above zero (a zero-length seed has no direction)");
+    if (l.seed_length <= 0.0) seed.fail("'" + seed.name() + "' must be above zero (a zero-length seed has no direction)");
     l.max_length = required_number(o, B::Animation, "max_length");
     if (l.max_length < l.seed_length)
-      o.fail_key("max_length", "'max_length' must be at least 'seed_length'");
+      o.fail_key("max_length", "'" + o.key_path("max_length") + "' must be at least 'seed_length'");
     l.max_angle = number(o, B::Animation, "max_angle_deg") * kDeg;
     l.length_jitter = number(o, B::Animation, "length_jitter");
     l.guide_distance = number(o, B::Animation, "guide_distance");
@@ -231,7 +239,7 @@ void read_animation(JsonObject o, ClusterDef& c) {
     l.width = number(o, B::Animation, "width");
     l.free_lifetime = number(o, B::Animation, "free_lifetime");
     if (l.max_length / (l.seed_length * (1.0 - l.length_jitter)) > 4096.0)
-      o.fail_key("max_length", "'max_length' allows more than 4096 segments; raise 'seed_length'");
+      o.fail_key("max_length", "'" + o.key_path("max_length") + "' allows more than 4096 segments; raise 'seed_length'");
   }
   o.finish();
 }
@@ -243,7 +251,7 @@ void read_billboard(JsonObject& o, ClusterDef& c) {
   if (velocity) {
     c.stretch = number(o, B::Cluster, "stretch");
   } else if (o.has("stretch")) {
-    o.fail_key("stretch", "'stretch' applies to \"billboard\": \"velocity\" only");
+    o.fail_key("stretch", "'" + o.key_path("stretch") + "' applies to \"billboard\": \"velocity\" only");
   }
 }
 
@@ -255,7 +263,7 @@ ClusterDef read_cluster(JsonObject o, int index) {
   if (!s) {
     std::vector<std::string> names;
     for (auto n : kSpriteNames) names.emplace_back("\"" + std::string(n) + "\"");
-    o.require("sprite").fail("'sprite' must be one of " + join_allowed(names) + ", got \"" + sprite + "\"");
+    o.require("sprite").fail("'" + o.key_path("sprite") + "' must be one of " + join_allowed(names) + ", got \"" + sprite + "\"");
   }
   c.sprite = *s;
   std::string soft = pick(o, B::Cluster, "soft_edge");
@@ -303,7 +311,7 @@ std::shared_ptr<EffectDef> parse_effect(const std::shared_ptr<const JsonDoc>& do
   clusters.check_list_length(kMaxEffectClusters);
   int i = 0;
   for (const JsonValue& v : clusters.array()) def->clusters.push_back(read_cluster(v.object(), i++));
-  if (def->clusters.empty()) clusters.fail("'clusters' must list at least one cluster");
+  if (def->clusters.empty()) clusters.fail("'" + clusters.name() + "' must list at least one cluster");
   root.finish();
   return def;
 }

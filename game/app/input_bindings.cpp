@@ -29,7 +29,7 @@ KeyAxis axis(JsonObject& o, const char* k) {
   auto v = o.get(k);
   if (!v) return {};
   auto items = v->array();
-  if (items.size() != 2) v->fail("'" + std::string(k) + "' must be [negative key, positive key]");
+  if (items.size() != 2) v->fail("'" + v->name() + "' must be [negative key, positive key]");
   return {lookup(items[0], key_code, "key"), lookup(items[1], key_code, "key")};
 }
 

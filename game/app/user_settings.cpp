@@ -29,7 +29,7 @@ JsonObject root_object(const std::shared_ptr<const JsonDoc>& doc) { return JsonV
 void check_format(JsonObject& r) {
   JsonValue f = r.require("format");
   if (f.integer(0, 1000000) != kFormat)
-    f.fail("'format' must be " + std::to_string(kFormat) + " (the format this version writes), got " + f.raw().dump());
+    f.fail("'" + f.name() + "' must be " + std::to_string(kFormat) + " (the format this version writes), got " + f.raw().dump());
 }
 
 std::vector<std::string> action_ids() {
@@ -52,10 +52,10 @@ void parse_keys(JsonObject& r, UserSettings& s) {
     const int code = name == "NONE" ? -1 : code_of_label(name);
     const bool pad_action = id.rfind("pad_", 0) == 0;
     if (pad_action && name != "NONE" && code < kPadButtonBase)
-      v.fail("'" + id + "' must be a gamepad button (PAD_A, PAD_X, PAD_LEFT_BUMPER, ...) or NONE, got \"" + name +
+      v.fail("'" + v.name() + "' must be a gamepad button (PAD_A, PAD_X, PAD_LEFT_BUMPER, ...) or NONE, got \"" + name +
              "\"");
     if (!pad_action && name != "NONE" && (code < 0 || code >= kPadButtonBase))
-      v.fail("'" + id + "' must be a key name (A, SPACE, LEFT_SHIFT, MOUSE_LEFT, ...) or NONE, got \"" + name + "\"");
+      v.fail("'" + v.name() + "' must be a key name (A, SPACE, LEFT_SHIFT, MOUSE_LEFT, ...) or NONE, got \"" + name + "\"");
     s.keys[id] = name;
   }
   k.finish();
@@ -70,7 +70,7 @@ void parse_render(JsonObject& r, UserSettings& s) {
   for (const auto& [key, value] : rv->raw().items()) {
     JsonValue v = o.require(key);
     const std::string text = value.is_string() ? value.get<std::string>() : value.dump();
-    check.set(key, text, v.where());
+    check.set(key, text, v.where(), "'" + v.name() + "'");
     s.render[key] = text;
   }
   o.finish();
@@ -156,7 +156,7 @@ UserSettings parse_settings(const std::string& text, const std::string& path,
     s.quality = q->string();
     bool known = quality_presets.empty() || s.quality == kDefaultQuality;
     for (const std::string& p : quality_presets) known = known || p == s.quality;
-    if (!known) q->fail("'quality' must be one of " + join_allowed(quality_presets) + ", got \"" + s.quality + "\"");
+    if (!known) q->fail("'" + q->name() + "' must be one of " + join_allowed(quality_presets) + ", got \"" + s.quality + "\"");
   }
   s.mouse_sensitivity = r.number("mouse_sensitivity", s.mouse_sensitivity, 0.001, 10.0);
   s.invert_y = r.boolean("invert_y", s.invert_y);
@@ -169,7 +169,7 @@ UserSettings parse_settings(const std::string& text, const std::string& path,
   parse_render(r, s);
   if (auto m = r.get("mods")) {
     const std::vector<JsonValue> list = m->array();
-    if (list.size() > kMaxUserMods) m->fail("'mods' lists at most " + std::to_string(kMaxUserMods) + " folders");
+    if (list.size() > kMaxUserMods) m->fail("'" + m->name() + "' lists at most " + std::to_string(kMaxUserMods) + " folders");
     for (const JsonValue& v : list) s.mods.push_back(v.string());
   }
   r.finish();

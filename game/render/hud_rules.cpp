@@ -32,7 +32,7 @@ HudRules load_hud_rules(const std::string& path) {
     r.radar_min_range = o->number("min_range", r.radar_min_range, 10.0, 1e7);
     r.radar_max_range = o->number("max_range", r.radar_max_range, 10.0, 1e7);
     if (r.radar_max_range < r.radar_min_range)
-      o->fail_key("max_range", "'max_range' must be at least 'min_range' (" + std::to_string(r.radar_min_range) + ")");
+      o->fail_key("max_range", "'" + o->key_path("max_range") + "' must be at least 'min_range' (" + std::to_string(r.radar_min_range) + ")");
     r.radar_margin = o->number("margin", r.radar_margin, 1.0, 10.0);
     r.radar_threats = int(o->integer("threats", r.radar_threats, 1, 64));
     o->finish();

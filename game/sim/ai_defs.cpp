@@ -25,7 +25,7 @@ AiDifficultyTable load_ai_difficulties(const std::string& root_dir) {
     d.tail_limit_s = o.require_number("tail_limit_s", 0.0, 600.0);
     d.tail_break_s = o.require_number("tail_break_s", 0.0, 600.0);
     if (d.tail_limit_s > 0 && d.tail_break_s <= 0)
-      o.fail_key("tail_break_s", "'tail_break_s' must be above zero when 'tail_limit_s' is (a break-off needs a length)");
+      o.fail_key("tail_break_s", "'" + o.key_path("tail_break_s") + "' must be above zero when 'tail_limit_s' is (a break-off needs a length)");
     o.finish();
   }
   root.finish();

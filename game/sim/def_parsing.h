@@ -16,7 +16,10 @@
 namespace arc::defs_internal {
 
 constexpr double kHuge = 1.0e6;
-constexpr double kSpace = 1.0e12;  // positions: world space is big but bounded (doubles stay exact to 0.1 mm)
+// Positions: each coordinate within ±2^30 m (1 073 741 824), the range the game is tested in end
+// to end (levels/gallery_far.json sits 1e9 out on every axis) with room for a scene built
+// around 1e9; doubles step 0.12 µm there, so motion and particles stay exact.
+constexpr double kSpace = 1073741824.0;
 
 inline std::vector<glm::dvec3> points(JsonObject& o, const std::string& key, double limit) {
   std::vector<glm::dvec3> out;

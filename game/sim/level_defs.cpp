@@ -54,7 +54,7 @@ void parse_rules(JsonObject& r, LevelDef& L) {
 void load_class_of(LevelDef& L, const ShipSpawnDef& d, const JsonValue& cls, const std::string& root_dir) {
   if (L.classes.count(d.ship_class)) return;
   if (d.ship_class.empty() || d.ship_class.find_first_of("/\\.") != std::string::npos)
-    cls.fail("'class' must be a ship class name (a file stem in assets/ships/), got \"" + d.ship_class + "\"");
+    cls.fail("'" + cls.name() + "' must be a ship class name (a file stem in assets/ships/), got \"" + d.ship_class + "\"");
   std::string file = data_file(root_dir, "assets/ships/" + d.ship_class + ".json");  // a mod's class first
   if (!std::filesystem::exists(file))
     cls.fail("ship class '" + d.ship_class + "' not found: no file " + file);
@@ -118,9 +118,9 @@ void parse_effect_motion(JsonObject& e, EffectSpawnDef& d, const EffectLibrary* 
     d.target = to->vec3(-kSpace, kSpace);
     if (e.has("orientation")) e.fail_key("orientation", "give 'orientation' or 'to' (which aims the channel), not both");
     if (!(glm::length(d.target - d.position) > 1.0e-3))
-      to->fail("'to' must lie away from 'position' (at least 1 mm): the channel runs from one to the other");
+      to->fail("'" + to->name() + "' must lie away from 'position' (at least 1 mm): the channel runs from one to the other");
     if (fx && !has_lightning(*fx, d.effect))
-      to->fail("'to' aims a lightning channel, and effect \"" + d.effect + "\" has no lightning cluster");
+      to->fail("'" + to->name() + "' aims a lightning channel, and effect \"" + d.effect + "\" has no lightning cluster");
   }
   if (auto v = e.get("velocity")) {
     d.velocity = v->vec3(-1.0e5, 1.0e5);
@@ -171,7 +171,7 @@ void check_protected_ship(JsonObject& r, const LevelDef& L) {
   for (const ShipSpawnDef& s : L.ships) found = found || s.name == L.protect_ship;
   if (!found) {
     JsonObject lose2 = r.require_object("lose");
-    lose2.fail_key("ship", "'ship' names no ship of this level: \"" + L.protect_ship + "\"");
+    lose2.fail_key("ship", "'" + lose2.key_path("ship") + "' names no ship of this level: \"" + L.protect_ship + "\"");
   }
 }
 

@@ -18,7 +18,7 @@ void parse_mission(JsonObject& r, LevelDef& L) {
     JsonValue v = o.require(key);
     std::string s = v.string();
     if (s.empty() || s.size() > longest)
-      v.fail(std::string("'") + key + "' must be a text of 1 to " + std::to_string(longest) + " characters, got " +
+      v.fail("'" + v.name() + "' must be a text of 1 to " + std::to_string(longest) + " characters, got " +
              std::to_string(s.size()));
     return s;
   };

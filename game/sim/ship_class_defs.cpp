@@ -37,7 +37,7 @@ ProjectileWeaponDef projectile_weapon(JsonObject& o, bool homing) {
   ProjectileWeaponDef w;
   w.present = true;
   w.hardpoints = points(o, "hardpoints", 100.0);
-  if (w.hardpoints.empty()) o.fail_key("hardpoints", "'hardpoints' must list at least one [x, y, z]");
+  if (w.hardpoints.empty()) o.fail_key("hardpoints", "'" + o.key_path("hardpoints") + "' must list at least one [x, y, z]");
   w.speed = o.number("speed", homing ? 220.0 : 450.0, 1.0, 5000.0);
   w.damage = o.number("damage", homing ? 45.0 : 18.0, 0.0, kHuge);
   w.energy = o.number("energy", homing ? 15.0 : 6.0, 0.0, kHuge);
@@ -78,11 +78,11 @@ ShipClassDef parse_ship_class_doc(const std::shared_ptr<const JsonDoc>& doc, con
   c.collision_radius = r.require_number("collision_radius", 0.1, 1000.0);
   c.shield_radius = r.number("shield_radius", c.collision_radius * 1.3, 0.1, 1000.0);
   if (c.shield_radius < c.collision_radius)
-    r.fail_key("shield_radius", "'shield_radius' must be at least 'collision_radius' (" +
+    r.fail_key("shield_radius", "'" + r.key_path("shield_radius") + "' must be at least 'collision_radius' (" +
                                     std::to_string(c.collision_radius) + ")");
   JsonObject beam = r.require_object("beam");
   c.beam.mounts = points(beam, "mounts", 100.0);
-  if (c.beam.mounts.empty()) beam.fail_key("mounts", "'mounts' must list at least one [x, y, z]");
+  if (c.beam.mounts.empty()) beam.fail_key("mounts", "'" + beam.key_path("mounts") + "' must list at least one [x, y, z]");
   c.beam.range = beam.number("range", 600.0, 1.0, 1.0e5);
   c.beam.damage_per_second = beam.number("damage_per_second", 40.0, 0.0, kHuge);
   c.beam.energy_per_second = beam.number("energy_per_second", 25.0, 0.0, kHuge);

@@ -58,8 +58,9 @@ void load_stage_models(Renderer& renderer, const std::string& root, WorkbenchSta
   const std::vector<std::string> ship_files = data_files(root, "assets/ships", ".json");
   std::vector<StageModel> ships;
   for (const std::string& f : ship_files) {
-    const nlohmann::json j = nlohmann::json::parse(read_text_file(f), nullptr, true, true);
-    ships.push_back(load(j.at("model").get<std::string>()));
+    // Parsed as the game parses it (core/json.h): a key written twice is refused here too.
+    const std::shared_ptr<const JsonDoc> doc = JsonDoc::load_file(f);
+    ships.push_back(load(doc->root().at("model").get<std::string>()));
   }
   stage.set_models(std::move(ships), load("assets/models/wall.glb"));
   std::vector<Image> sprites;

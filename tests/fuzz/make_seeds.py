@@ -35,6 +35,24 @@ BAD = {
     "sprite": {"bad_header.png": b"\x89PNG\r\n\x1a\n\x00\x00\x00\x0dIHDR\x7f\xff\xff\xff\x7f\xff\xff\xff\x08\x06\x00\x00\x00"},
 }
 
+# glTF files that are not what they claim (assets/gltf_claims.h): one triangle in a data URI with
+# its version, nodes, position count or required extensions changed.
+GLTF_TRIANGLE = ('{"asset": ASSET, "scenes": [{"nodes": [0]}], "nodes": NODES, "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}], "buffers": [{"uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAABAAIA", "byteLength": 42}], "bufferViews": [{"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 6}], "accessors": [{"bufferView": 0, "componentType": 5126, "count": COUNT, "type": "VEC3"}, {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}]EXTRA}')
+
+
+def gltf_claim(asset='{"version": "2.0"}', nodes='[{"mesh": 0}]', count="3", extra=""):
+    return (GLTF_TRIANGLE.replace("ASSET", asset).replace("NODES", nodes).replace("COUNT", count)
+            .replace("EXTRA", extra))
+
+
+BAD["model_gltf"].update({
+    "bad_version_1.gltf": gltf_claim(asset='{"version": "1.0"}'),
+    "bad_draco_required.gltf": gltf_claim(extra=', "extensionsRequired": ["KHR_draco_mesh_compression"]'),
+    "bad_zero_positions.gltf": gltf_claim(count="0"),
+    "bad_scale_overflow.gltf": gltf_claim(nodes='[{"name": "hull", "scale": [1e30, 1e30, 1e30], "children": [1]}, '
+                                                '{"name": "wing", "scale": [1e30, 1e30, 1e30], "mesh": 0}]'),
+})
+
 
 def glb_to_gltf(path):
     """The same model as a .gltf with its BIN chunk as a base64 data URI."""

@@ -144,7 +144,7 @@ TEST(UserSettings, ValuesAreValidated) {
   EXPECT_NE(error(R"({ "format": 1, "keys": { "fire_primary": "BANANA" } })").find("must be a key name"),
             std::string::npos);
   EXPECT_NE(error(R"({ "format": 1, "render": { "render.sorting": "random" } })")
-                .find("s.json:1:46: setting 'render.sorting' must be one of"),
+                .find("s.json:1:46: 'render[\"render.sorting\"]' must be one of"),
             std::string::npos)
       << error(R"({ "format": 1, "render": { "render.sorting": "random" } })");
   EXPECT_NE(error(R"({ "format": 1, "render": { "render.fancy": true } })").find("unknown setting 'render.fancy'"),

@@ -8,6 +8,7 @@
 #include <thread>
 #include <vector>
 
+#include "assets/gltf_claims.h"
 #include "assets/image.h"
 #include "assets/image_codec.h"
 #include "assets/model.h"
@@ -56,6 +57,13 @@ TEST(AssetExamples, LoadAModel) {
   arc::ModelData ship = arc::load_model("assets/models/viper.glb");
   EXPECT_FALSE(ship.primitives.empty());
   EXPECT_GT(ship.radius, 0.0f);
+}
+
+TEST(AssetExamples, CheckGltfClaims) {
+  const std::string json_text = R"({"asset": {"version": "2.0"}, "extensionsRequired": []})";
+  check_gltf_claims(json_text.data(), json_text.size(), "ship.gltf");  // throws InputError
+  const std::string old = R"({"asset": {"version": "1.0"}})";
+  EXPECT_THROW(check_gltf_claims(old.data(), old.size(), "old.gltf"), InputError);
 }
 
 TEST(AssetExamples, ShotsInTheBackground) {

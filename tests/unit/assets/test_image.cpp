@@ -82,6 +82,33 @@ TEST(LoadImage, CorruptPngAnswersWithOneLineAndPrintsNothing) {
   EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
 }
 
+// Sides up to 16384 (every current GPU's texture limit) load; the RGBA8 budget, not the side,
+// bounds the area (core/input_limits.h). Narrow strips keep the files cheap.
+TEST(LoadImage, SidesUpTo16384LoadWithinTheByteBudget) {
+  const auto dir = test::scratch_dir();
+  const Image wide = load_image(write_raw<uint8_t>(dir / "wide.png", 16384, 2, 1, OIIO::TypeDesc::UINT8,
+                                                   std::vector<uint8_t>(16384 * 2, 9)));
+  EXPECT_EQ(wide.width, 16384);
+  EXPECT_EQ(pixel(wide, 16383, 1), (Px{9, 9, 9, 255}));
+  const Image tall = load_image(write_raw<uint8_t>(dir / "tall.png", 1, 8193, 1, OIIO::TypeDesc::UINT8,
+                                                   std::vector<uint8_t>(8193, 3)));
+  EXPECT_EQ(tall.height, 8193);
+  auto error_of = [](const std::string& path) {
+    try {
+      load_image(path);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("loaded");
+  };
+  const std::string over = write_raw<uint8_t>(dir / "over.png", 16385, 1, 1, OIIO::TypeDesc::UINT8,
+                                              std::vector<uint8_t>(16385, 1));
+  EXPECT_EQ(error_of(over), over + ": image size 16385x1 is not allowed (1 to 16384 pixels per side)");
+  const std::string big = write_raw<uint8_t>(dir / "big.png", 16384, 2049, 1, OIIO::TypeDesc::UINT8,
+                                             std::vector<uint8_t>(size_t(16384) * 2049, 0));
+  EXPECT_EQ(error_of(big), big + ": image size 16384x2049 decodes to more than 128 MiB of RGBA8, the limit");
+}
+
 TEST(LoadImage, BadInputThrowsNamingTheFile) {
   const auto dir = test::scratch_dir();
   const std::string missing = (dir / "missing.png").string();

@@ -60,14 +60,14 @@ TEST(SoundLibrary, LoopsHaveNoSeam) {
 
 TEST(SoundLibrary, BadFilesArePositionedErrors) {
   EXPECT_EQ(error_of("{\"sounds\": {\"x\": {\"layers\": [{\"freq\": -5}]}}}"),
-            "sounds.json:1:39: 'freq' must be in [10, 20000], got -5");
+            "sounds.json:1:39: 'sounds.x.layers[0].freq' must be in [10, 20000], got -5");
   EXPECT_NE(error_of("{\"sounds\": {\"x\": {\"layers\": [{\"sorce\": \"sine\"}]}}}").find("sounds.json:1:"), std::string::npos);
   EXPECT_NE(error_of("{\"sounds\": {\"x\": {\"layers\": [{\"sorce\": \"sine\"}]}}}").find("unknown key 'sorce'"),
             std::string::npos);
   EXPECT_NE(error_of("{\"sounds\": {\"x\": {\"layers\": [{\"source\": \"flute\"}]}}}").find("sine"), std::string::npos);
   EXPECT_NE(error_of("{\"sounds\": {\"x\": {\"loop\": true}}}").find("needs 'layers'"), std::string::npos);
   EXPECT_NE(error_of("{\"sounds\": {\"x\": {\"layers\": [{\"burst_period\": 0.1, \"burst_length\": 0.5}]}}}")
-                .find("'burst_length' must not be longer"),
+                .find("'sounds.x.layers[0].burst_length' must not be longer"),
             std::string::npos);
 }
 

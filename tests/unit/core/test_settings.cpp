@@ -80,6 +80,21 @@ TEST(Settings, SetChecksKeyTypeAndRange) {
   }
 }
 
+// An integer written with a zero fraction (as JSON writers put 50000) is that integer, in a
+// preset as on the command line; a non-zero fraction, hex and infinities are refused.
+TEST(Settings, IntegersWrittenWithAZeroFractionAreAccepted) {
+  arc::Settings s = sample();
+  s.set_from_text("particles.budget=50000.0", "--set");
+  EXPECT_EQ(s.integer("particles.budget"), 50000);
+  s.set_from_text("particles.budget=6e4", "--set");
+  EXPECT_EQ(s.integer("particles.budget"), 60000);
+  for (const char* bad : {"particles.budget=50000.5", "particles.budget=0x1000", "particles.budget=inf",
+                          "particles.budget=5e6", "particles.budget="})
+    EXPECT_THROW(s.set_from_text(bad, "--set"), arc::InputError) << bad;
+  s.apply_preset_text(R"({ "presets": { "p": { "particles.budget": 70000.0 } } })", "q.json", "p");
+  EXPECT_EQ(s.integer("particles.budget"), 70000);
+}
+
 TEST(Settings, PresetsApplyOrNameTheirFault) {
   arc::Settings s = sample();
   EXPECT_EQ(arc::Settings::preset_names_text(kPresets, "q.json").size(), 3u);

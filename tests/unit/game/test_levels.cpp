@@ -213,12 +213,12 @@ TEST(LevelErrors, BadAiDifficultyFileIsReportedInThatFile) {
   EXPECT_EQ(error_for(ok), "");
   std::string m = error_for(std::string(ok).replace(ok.find("\"aggression\": 0.5"), 17, "\"aggression\": 1.5"));
   EXPECT_NE(m.find("ai.json:2:"), std::string::npos) << m;
-  EXPECT_NE(m.find("'aggression'"), std::string::npos) << m;
+  EXPECT_NE(m.find("'easy.aggression'"), std::string::npos) << m;
   m = error_for(std::string(ok).replace(ok.find("\"jink\""), 6, "\"jinx\""));
   EXPECT_NE(m.find("missing required key 'jink'"), std::string::npos) << m;
   m = error_for(std::string(ok).replace(ok.find("\"tail_break_s\": 2"), 17, "\"tail_break_s\": 0"));
   EXPECT_NE(m.find("ai.json:2:"), std::string::npos) << m;
-  EXPECT_NE(m.find("'tail_break_s' must be above zero"), std::string::npos) << m;
+  EXPECT_NE(m.find("'easy.tail_break_s' must be above zero"), std::string::npos) << m;
   m = error_for("{ \"easy\": {" + row + R"( "tail_limit_s": 0, "tail_break_s": 0 } })");
   EXPECT_NE(m.find("normal"), std::string::npos) << m;
 }
@@ -244,16 +244,16 @@ TEST(LevelErrors, EffectTargetsAndVelocitiesAreChecked) {
   EXPECT_EQ(e.rfind("bad.json:6:", 0), 0u) << e;
   EXPECT_NE(e.find("'orientation' or 'to'"), std::string::npos) << e;
   e = error_with_library(with_effect(beam + R"("to": [0, 0, 0] })"));
-  EXPECT_EQ(e.rfind("bad.json:6:74: 'to' must lie away from 'position'", 0), 0u) << e;
+  EXPECT_EQ(e.rfind("bad.json:6:74: 'effects[0].to' must lie away from 'position'", 0), 0u) << e;
   e = error_with_library(with_effect(R"({ "effect": "shield_hit", "to": [1, 0, 0] })"));
-  EXPECT_EQ(e.rfind("bad.json:6:47: 'to' aims a lightning channel", 0), 0u) << e;
+  EXPECT_EQ(e.rfind("bad.json:6:47: 'effects[0].to' aims a lightning channel", 0), 0u) << e;
   e = error_with_library(with_effect(R"({ "effect": "plasma_bolt", "velocity": [10, 0, 0] })"));
   EXPECT_EQ(e.rfind("bad.json:6:54: a moving effect needs 'repeat_ticks'", 0), 0u) << e;
   e = error_with_library(with_effect(R"({ "effect": "plasma_bolt", "label_at": [1, 2] })"));
-  EXPECT_EQ(e.rfind("bad.json:6:54: 'label_at' must be", 0), 0u) << e;
+  EXPECT_EQ(e.rfind("bad.json:6:54: 'effects[0].label_at' must be", 0), 0u) << e;
   std::string t = kGood;
   e = error_of(t.replace(t.find("\"player\": true"), 0, "\"label\": 3, "));
-  EXPECT_EQ(e.rfind("bad.json:7:63: 'label' must be a string", 0), 0u) << e;
+  EXPECT_EQ(e.rfind("bad.json:7:63: 'ships[0].label' must be a string", 0), 0u) << e;
 }
 
 TEST(LevelErrors, UnknownEffectIsAMissingFileAtItsPosition) {
@@ -299,13 +299,13 @@ TEST(LevelMissions, BlockIsReadAndErrorsArePositioned) {
   EXPECT_EQ(L.mission.order, 4);
   EXPECT_EQ(L.mission.order_where, "m.json:3:76");
   std::string e = error_of(with_mission(R"({ "title": "", "briefing": "B.", "objective": "O.", "order": 1 })"));
-  EXPECT_EQ(e.rfind("bad.json:3:25: 'title' must be a text of 1 to 40 characters, got 0", 0), 0u) << e;
+  EXPECT_EQ(e.rfind("bad.json:3:25: 'mission.title' must be a text of 1 to 40 characters, got 0", 0), 0u) << e;
   e = error_of(with_mission(R"({ "title": "T", "briefing": "B.", "objective": "O.", "order": 0 })"));
-  EXPECT_EQ(e.rfind("bad.json:3:76: 'order' must be in [1, 1000], got 0", 0), 0u) << e;
+  EXPECT_EQ(e.rfind("bad.json:3:76: 'mission.order' must be in [1, 1000], got 0", 0), 0u) << e;
   e = error_of(with_mission(R"({ "title": "T", "briefing": "B.", "order": 1 })"));
   EXPECT_NE(e.find("missing required key 'objective'"), std::string::npos) << e;
   e = error_of(with_mission(R"({ "title": "T", "briefing": "B.", "objective": "O.", "order": 1, "category": "x" })"));
-  EXPECT_NE(e.find("'category' must be one of \"mission\", \"effects\" or \"demo\""), std::string::npos) << e;
+  EXPECT_NE(e.find("'mission.category' must be one of \"mission\", \"effects\" or \"demo\""), std::string::npos) << e;
   e = error_of(with_mission(R"({ "title": "T", "briefing": "B.", "objective": "O.", "order": 1, "brief": "x" })"));
   EXPECT_NE(e.find("unknown key 'brief'"), std::string::npos) << e;
 }

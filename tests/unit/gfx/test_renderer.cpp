@@ -161,7 +161,7 @@ TEST(Renderer, LargeCoordinatesRenderLikeTheOrigin) {
   r->render(offset_scene(*r, wall, box, glm::dvec3(0)), 320, 180);
   Image a = r->read_pixels();
   test::dump_if_asked("origin", a);
-  for (double far : {1e9, 1e12}) {  // 1e12: the level files' limit (kSpace, game/sim/def_parsing.h)
+  for (double far : {1e9, 1e12}) {  // 1e12: far beyond the level files' limit (kSpace, game/sim/def_parsing.h)
     r->render(offset_scene(*r, wall, box, glm::dvec3(far, -far, far)), 320, 180);
     Image b = r->read_pixels();
     test::dump_if_asked(far > 1e10 ? "level_limit" : "far_away", b);

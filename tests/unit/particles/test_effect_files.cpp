@@ -110,7 +110,18 @@ TEST(EffectFiles, ZeroLinearLifetime) {
 
 TEST(EffectFiles, BurnOutsideZeroOne) {
   expect_error(with("\"lifetime\": [0.5, 1] }", "\"lifetime\": [0.5, 1] }, \"curves\": { \"burn\": [[0, 1.5]] }"), "1.5",
-               "'burn' values must be in [0, 1]");
+               "'clusters[0].curves.burn' values must be in [0, 1]");
+}
+
+// Curves run in float: times apart in the file but one float would be a step nobody wrote.
+// Equal times (a step written as one) stay allowed.
+TEST(EffectFiles, KeyTimesEqualInFloatAreRefused) {
+  const std::string alpha = "\"curves\": { \"alpha\": [[0, 1], [0.1000000001, 1], [0.1000000002, 0.5], [1, 0]] }";
+  expect_error(with("\"lifetime\": [0.5, 1] }", "\"lifetime\": [0.5, 1] }, " + alpha), "0.1000000002",
+               "'clusters[0].curves.alpha[2][0]': key times 0.1000000001 and 0.1000000002 are the same in single "
+               "precision; allowed: times equal (a step) or apart as floats (about 1e-7 near 1)");
+  const std::string step = "\"curves\": { \"alpha\": [[0, 1], [0.5, 1], [0.5, 0.2], [1, 0]] }";
+  EXPECT_EQ(load_error(with("\"lifetime\": [0.5, 1] }", "\"lifetime\": [0.5, 1] }, " + step)), "");
 }
 
 TEST(EffectFiles, ZeroLengthSeedSegment) {
@@ -182,7 +193,7 @@ TEST(EffectFiles, VelocityBillboardsAndTheirStretch) {
 TEST(EffectFiles, FreeLightningNeedsALifetime) {
   const std::string text = R"({ "clusters": [ { "sprite": "flare",
     "animation": { "type": "lightning", "seed_length": 5, "max_length": 100, "free_lifetime": 0 } } ] })";
-  expect_error(text, "0 }", "'free_lifetime' must be in [0.01");
+  expect_error(text, "0 }", "'clusters[0].animation.free_lifetime' must be in [0.01");
 }
 
 TEST(EffectFiles, MissingFileAndFolder) {

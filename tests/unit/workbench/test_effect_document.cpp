@@ -29,7 +29,7 @@ TEST(EffectDocument, OpenRefusesABadFileWithTheLoadersLine) {
   std::string error;
   EXPECT_FALSE(EffectDocument::open(path, error));
   EXPECT_EQ(error.rfind(path + ":2:", 0), 0u) << error;
-  EXPECT_NE(error.find("'sprite' must be one of"), std::string::npos) << error;
+  EXPECT_NE(error.find("'clusters[0].sprite' must be one of"), std::string::npos) << error;
   EXPECT_FALSE(EffectDocument::open(dir.write("x.txt", "") + "_missing", error));
   EXPECT_NE(error.find("cannot open"), std::string::npos) << error;
 }
@@ -59,9 +59,9 @@ TEST(EffectDocument, RefusedEditChangesNothingAndGivesTheLoadersMessage) {
   EditResult r = doc->set("/clusters/0/curves/alpha/1/1", 2.0);
   EXPECT_FALSE(r.ok);
   EXPECT_EQ(r.message.rfind(path + ":12:", 0), 0u) << r.message;
-  EXPECT_NE(r.message.find("'alpha' values must be in [0, 1], got 2"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("'clusters[0].curves.alpha' values must be in [0, 1], got 2"), std::string::npos) << r.message;
   r = doc->set("/clusters/0/emitter/shape", "teapot");
-  EXPECT_NE(r.message.find("'shape' must be one of \"point\""), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("'clusters[0].emitter.shape' must be one of \"point\""), std::string::npos) << r.message;
   r = doc->set("/clusters/0/emitter/burts", 3);
   EXPECT_NE(r.message.find("unknown key 'burts'"), std::string::npos) << r.message;
   r = doc->remove("/clusters/0/sprite");

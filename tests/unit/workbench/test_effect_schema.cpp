@@ -83,7 +83,10 @@ TEST(EffectSchema, TheLoaderRefusesValuesJustOutsideEverySchemaRange) {
     for (double outside : {f.max + step, f.min - (f.kind == FieldKind::Integer ? 1.0 : std::max(1e-6, std::abs(f.min) * 1e-3))}) {
       const EditResult r = doc->set(at, value_of(f, outside));
       EXPECT_FALSE(r.ok) << at << " = " << outside << " was accepted; the schema says [" << f.min << ", " << f.max << "]";
-      EXPECT_NE(r.message.find("'" + std::string(f.key)), std::string::npos) << at << ": " << r.message;
+      // Named by the whole key path: 'clusters[1].animation.radius'.
+      const std::string path = at.rfind("/clusters/", 0) == 0 ? "'clusters[" + at.substr(10, 1) + "]." : "'";
+      EXPECT_NE(r.message.find(path), std::string::npos) << at << ": " << r.message;
+      EXPECT_NE(r.message.find(std::string(f.key)), std::string::npos) << at << ": " << r.message;
       EXPECT_NE(r.message.find(" in [" + bound(f, f.min) + ", " + bound(f, f.max) + "]"), std::string::npos)
           << at << " refused, but not for the schema's range: " << r.message;
     }
