@@ -7,6 +7,7 @@
 
 #include "core/rng.h"
 #include "game/sim/geometry.h"
+#include "game/sim/wing.h"
 #include "game/sim/world.h"
 
 namespace arc {
@@ -89,6 +90,8 @@ void think(World& w, Ship& s) {
   const Rng rng{w.seed, kAiStream + static_cast<uint64_t>(s.id.index()), static_cast<uint64_t>(w.tick)};
   ai.next_think = w.tick + std::max<int64_t>(1, seconds_to_ticks(w, tune.reaction_s));
   if (!ai.target || !w.ship(ai.target).alive || rng.uniform(0) < 0.25) ai.target = pick_target(w, s.id);
+  const Wingman* wing = wingman_of(w, s.id);  // the player's orders come first (ai_orders.cpp)
+  if (wing) ai.target = wing_target(w, s, *wing, ai.target);
   s.target = ai.target;
   ai.aim_error = rng.unit_vector(1) * (tune.aim_error * rng.uniform(2));
   if (!ai.target) return;
@@ -103,6 +106,7 @@ void think(World& w, Ship& s) {
   }
   ai.mode = AiMode::Attack;
   if (break_off_players_tail(w, s, t, rel, dist, rng)) return;
+  if (wing && wing_withdraw(w, s, rng)) return;
   const double evade_at = 0.35 * (1.3 - tune.aggression);
   // After an evasion or a break-off the pilot turns back and fights for a while before it may
   // evade again: a ship that is still under fire never recharges, so endless evading only
@@ -171,6 +175,10 @@ void drive_ai(World& w, Ship& s) {
   const AiDifficultyDef& tune = ai_difficulty(w);
   AiState& ai = s.ai_state;
   InputFrame c;
+  if (const Wingman* m = wingman_of(w, s.id); m && fly_formation(w, s, *m, c)) {
+    s.controls = c;
+    return;
+  }
   if (!ai.target || !w.ship(ai.target).alive) {
     c.throttle = quantise_axis(0.5);
     c.roll = quantise_axis(-0.3 * s.angular_velocity.z);

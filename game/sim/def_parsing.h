@@ -37,4 +37,10 @@ inline glm::dvec3 orientation(JsonObject& o) { return o.vec3("orientation", glm:
 // The optional "mission" block of a level (game/sim/mission_defs.cpp).
 void parse_mission(JsonObject& r, LevelDef& L);
 
+// One entry of "ships" (or of a wave's "ships"), its class loaded into L; names are unique
+// among every ship already in L (level_defs.cpp).
+ShipSpawnDef parse_ship_entry(JsonObject& s, LevelDef& L, const std::string& root_dir);
+// The optional "waves" list, after "ships" (game/sim/wave_defs.cpp).
+void parse_waves(JsonObject& r, LevelDef& L, const std::string& root_dir);
+
 }  // namespace arc::defs_internal
