@@ -43,7 +43,8 @@ glm::dvec3 lead_point(const Ship& shooter, const Ship& target, double projectile
 }
 
 // The nearest hostile, but a damaged one counts as nearer: pilots go for the kill, so fights end
-// in explosions instead of spreading damage over everyone.
+// in explosions instead of spreading damage over everyone. Where the player leads a wing, the
+// player and ships already under attack count as farther (target_weight, ai_orders.cpp).
 ShipId pick_target(const World& w, ShipId self) {
   ShipId best;
   double best_score = 0;
@@ -51,7 +52,7 @@ ShipId pick_target(const World& w, ShipId self) {
   for (const Ship& s : w.ships) {
     if (s.id == self || !s.alive || !w.hostile(me, s)) continue;
     const double health = (s.hull + s.shield) / std::max(1e-9, s.cls->hull + s.cls->shield);
-    const double score = safe_len(s.position - me.position) * (0.4 + health);
+    const double score = safe_len(s.position - me.position) * (0.4 + health) * target_weight(w, me, s);
     if (!best || score < best_score) best = s.id, best_score = score;
   }
   return best;

@@ -97,6 +97,14 @@ bool wing_withdraw(World& w, Ship& s, const Rng& rng) {
   return true;
 }
 
+double target_weight(const World& w, const Ship& chooser, const Ship& candidate) {
+  if (w.wing.empty()) return 1.0;
+  int hunters = 0;
+  for (const Ship& o : w.ships)
+    hunters += o.alive && o.id != chooser.id && o.team == chooser.team && o.ai_state.target == candidate.id ? 1 : 0;
+  return (candidate.player ? 1.5 : 1.0) * (1.0 + 0.6 * hunters);
+}
+
 bool fly_formation(const World& w, const Ship& s, const Wingman& m, InputFrame& c) {
   if (s.ai_state.target || !w.player || !w.ship(w.player).alive) return false;
   const Ship& p = w.ship(w.player);

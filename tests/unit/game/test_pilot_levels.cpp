@@ -2,6 +2,8 @@
 #include "test_pilot_levels.h"
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 
 #include "game/sim/game.h"
 #include "game/sim/world.h"
@@ -37,6 +39,8 @@ LevelRun fly_level(const std::string& root_dir, const std::string& level, int di
   for (size_t i = 0; i < w.level.waves.size(); ++i)
     for (size_t k = 0; k < w.level.waves[i].ships.size(); ++k) arrival[next++] = w.waves[i].arrived_tick;
   const Ship& p = w.ship(w.player);
+  r.player_kills = p.kills;
+  if (!p.alive && p.last_attacker) r.player_killer = w.ship(p.last_attacker).name;
   for (const Ship& s : w.ships) {
     if (s.player) continue;
     ShipLife l;
@@ -59,6 +63,9 @@ LevelRates level_rates(const std::string& root_dir, const std::string& level, in
   int wing_n = 0, enemy_n = 0;
   for (int s = 1; s <= seeds; ++s) {
     const LevelRun run = fly_level(root_dir, level, difficulty, static_cast<uint64_t>(s), pilot);
+    if (std::getenv("WING_VERBOSE"))
+      std::printf("  seed %2d %s at %5.1f s, player kills %d, killed by %s\n", s, run.won ? "won " : run.lost ? "lost" : "open",
+                  run.seconds, run.player_kills, run.player_killer.c_str());
     ++r.fights;
     r.wins += run.won;
     r.losses += run.lost;

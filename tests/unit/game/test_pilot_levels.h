@@ -21,6 +21,8 @@ struct ShipLife {
 struct LevelRun {
   bool won = false, lost = false;
   double seconds = 0;  // when it was decided, or the time limit
+  int player_kills = 0;
+  std::string player_killer;  // the last ship to hit the player, when it died
   std::vector<ShipLife> lives;
 };
 

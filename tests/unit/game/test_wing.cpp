@@ -142,9 +142,11 @@ TEST(WingSurvival, DISABLED_Report) {
   const int seeds = std::getenv("WING_SEEDS") ? std::atoi(std::getenv("WING_SEEDS")) : 20;
   // WING_LEVEL_DIR: another folder's skirmish.json and arena.json (e.g. the levels before a change).
   const char* base = std::getenv("WING_LEVEL_DIR");
+  const char* only = std::getenv("WING_ONLY");  // "skirmish:1": one level at one difficulty
   for (const char* level : {"skirmish", "arena"}) {
     const std::string path = (base ? std::string(base) : std::string("levels")) + "/" + level + ".json";
     for (int d = 0; d < 3; ++d) {
+      if (only && std::string(only) != std::string(level) + ":" + std::to_string(d)) continue;
       const LevelRates r = level_rates(arc::data_root(), path, d, seeds);
       std::printf("%-9s %-6s wins %2d/%2d (%3.0f %%) losses %2d  wing life %5.1f s  enemy life %5.1f s\n", level,
                   difficulty_name(static_cast<Difficulty>(d)), r.wins, r.fights, 100.0 * r.win_rate, r.losses,
