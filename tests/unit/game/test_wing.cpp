@@ -118,6 +118,20 @@ TEST(WingOrders, NoWingmenIsSaid) {
   EXPECT_EQ(f.w().messages.size(), 4u);
 }
 
+TEST(WingOrders, NewStateIsVisitedWhole) {
+  Wingman m;
+  WaveState wave;
+  SimMessage msg;
+  EXPECT_EQ(fields::visited_field_count(m), fields::aggregate_field_count<Wingman>());
+  EXPECT_EQ(fields::visited_field_count(wave), fields::aggregate_field_count<WaveState>());
+  EXPECT_EQ(fields::visited_field_count(msg), fields::aggregate_field_count<SimMessage>());
+  for (int pass : {kStateHashPass, kPresentationHashPass}) {
+    EXPECT_EQ(fields::check_hash_words(fields::hash_slots(m, pass)), "");
+    EXPECT_EQ(fields::check_hash_words(fields::hash_slots(wave, pass)), "");
+    EXPECT_EQ(fields::check_hash_words(fields::hash_slots(msg, pass)), "");
+  }
+}
+
 TEST(WingOrders, SnapshotKeepsOrdersAndMessages) {
   Flight f(wing_level(kFarHostile), "wing_snapshot.json");
   f.run(0.5, {Command::OrderFormUp});
