@@ -152,7 +152,8 @@ TEST(Targeting, NearestHostileNextHostileAndNext) {
   g.step(InputFrame{}, {Command::TargetNext});
   EXPECT_EQ(w.ship(w.player).target, w.ships[5].id);
   g.step(InputFrame{}, {Command::TargetNext});
-  // Next goes round every live ship, the wingmen included; the waiting wave (6, 7) is skipped.
+  g.step(InputFrame{}, {Command::TargetNext});
+  // Next goes round every live ship, the wingmen included; the waiting wave (7, 8) is skipped.
   EXPECT_EQ(w.ship(w.player).target, w.ships[1].id);
 }
 

@@ -59,7 +59,7 @@ TEST(LevelFiles, RequiredLevelsHaveTheirShapes) {
   LevelDef duel = load_level_def(kRoot + "/levels/duel.json", kRoot);
   EXPECT_EQ(duel.ships.size(), 2u);
   LevelDef sk = load_level_def(kRoot + "/levels/skirmish.json", kRoot);
-  EXPECT_EQ(sk.ships.size(), 6u);
+  EXPECT_EQ(sk.ships.size(), 7u);
   LevelDef arena = load_level_def(kRoot + "/levels/arena.json", kRoot);
   size_t arena_ships = arena.ships.size();
   for (const WaveDef& wave : arena.waves) arena_ships += wave.ships.size();
