@@ -95,6 +95,7 @@ static Bindings bindings_from(const std::shared_ptr<const JsonDoc>& doc) {
     b.order_cover = key(k, "order_cover");
     b.order_form_up = key(k, "order_form_up");
     b.order_engage = key(k, "order_engage");
+    b.comms = key(k, "comms");
     b.pause = key(k, "pause");
     b.screenshot = key(k, "screenshot");
     b.fps = key(k, "fps");
@@ -192,11 +193,33 @@ void LiveInput::queue_commands_and_actions(const InputState& s) {
   command(presses(b_.order_cover, -1), Command::OrderCover);
   command(presses(b_.order_form_up, -1), Command::OrderFormUp);
   command(presses(b_.order_engage, -1), Command::OrderEngage);
+  const bool closed_by_pause = comms_keys(s);
   action(presses(b_.camera, b_.pad_camera), AppAction::ToggleCamera);
   action(presses(b_.camera_padlock, -1), AppAction::TogglePadlock);
-  action(presses(b_.pause, b_.pad_pause), AppAction::TogglePause);
+  if (!closed_by_pause) action(presses(b_.pause, b_.pad_pause), AppAction::TogglePause);
   action(presses(b_.screenshot, -1), AppAction::Screenshot);
   action(presses(b_.fps, -1), AppAction::ToggleFps);
+}
+
+// The comms key opens and closes the menu; while open, 1..4 issue the orders in the menu's
+// order (the same commands as the order keys, so replays record them) and close it, and the
+// pause key or Escape closes it without pausing.
+bool LiveInput::comms_keys(const InputState& s) {
+  if (presses_between(prev_, s, b_.comms) % 2 == 1) comms_open_ = !comms_open_;
+  if (!comms_open_) return false;
+  static const Command orders[] = {Command::OrderAttack, Command::OrderCover, Command::OrderFormUp, Command::OrderEngage};
+  for (int i = 0; i < 4; ++i) {
+    if (presses_between(prev_, s, key_code(std::string(1, char('1' + i)))) > 0) {
+      commands_.push_back(orders[i]);
+      comms_open_ = false;
+      return false;
+    }
+  }
+  if (presses_between(prev_, s, b_.pause) > 0 || presses_between(prev_, s, key_code("ESCAPE")) > 0) {
+    comms_open_ = false;
+    return true;
+  }
+  return false;
 }
 
 // The virtual cursor stays within the radius, so turning back starts at once.

@@ -37,6 +37,7 @@ struct Bindings {
   int target_next = -1, target_nearest = -1, target_next_hostile = -1, switch_weapon = -1;
   int camera = -1, camera_padlock = -1, pause = -1, screenshot = -1, fps = -1;
   int countermeasure = -1, order_attack = -1, order_cover = -1, order_form_up = -1, order_engage = -1;
+  int comms = -1;  // opens the comms menu: 1..4 give the wing orders, the key again or Escape closes it
   bool mouse_enabled = true;
   MouseMode mouse_mode = MouseMode::Relative;
   double mouse_sensitivity = 0.12;  // relative mode: degrees of turn per pixel of travel
@@ -96,10 +97,16 @@ class LiveInput {
   MouseReticle reticle() const;
   std::vector<Command> take_commands();
   std::vector<AppAction> take_actions();
+  // The comms menu (the HUD lists the four wing orders under keys 1..4 while it is open).
+  bool comms_open() const { return comms_open_; }
+  void close_comms() { comms_open_ = false; }
 
  private:
   bool down(const InputState& s, int code) const;
   void queue_commands_and_actions(const InputState& s);
+  // While the comms menu is open: a number key's order, or closing it. True when the pause
+  // key's presses were taken to close it.
+  bool comms_keys(const InputState& s);
   void move_joystick(double dx, double dy);
   void advance_throttle(double change);
   double joystick_axis(double offset) const;
@@ -115,6 +122,7 @@ class LiveInput {
   double set_throttle_ = 0;
   bool throttle_held_at_zero_ = false;          // crossed zero with the key held: wait for a new press
   bool first_sample_ = true;  // the cursor jumps when it is first captured: ignore that motion
+  bool comms_open_ = false;
   std::vector<Command> commands_;
   std::vector<AppAction> actions_;
 };

@@ -18,7 +18,7 @@ int* slot(Bindings& b, const std::string& id) {
       {"camera", &Bindings::camera},               {"camera_padlock", &Bindings::camera_padlock},
       {"countermeasure", &Bindings::countermeasure}, {"order_attack", &Bindings::order_attack},
       {"order_cover", &Bindings::order_cover},     {"order_form_up", &Bindings::order_form_up},
-      {"order_engage", &Bindings::order_engage},
+      {"order_engage", &Bindings::order_engage}, {"comms", &Bindings::comms},
       {"pause", &Bindings::pause},
       {"screenshot", &Bindings::screenshot},       {"fps", &Bindings::fps}};
   static const std::map<std::string, std::pair<KeyAxis Bindings::*, bool>> axes = {
@@ -76,7 +76,7 @@ const std::vector<RemapAction>& remap_actions() {
       {"camera", "Camera"},                 {"camera_padlock", "Padlock view"},
       {"countermeasure", "Countermeasure"}, {"order_attack", "Wing: attack my target"},
       {"order_cover", "Wing: cover me"},    {"order_form_up", "Wing: form up"},
-      {"order_engage", "Wing: engage at will"},
+      {"order_engage", "Wing: engage at will"}, {"comms", "Comms menu (wing orders)"},
       {"pause", "Pause menu"},
       {"screenshot", "Screenshot"},         {"fps", "FPS counter"},
       {"pad_fire_primary", "Gamepad: fire beam"},       {"pad_fire_secondary", "Gamepad: fire missile"},

@@ -102,6 +102,7 @@ void WindowSession::update(double frame_seconds) {
   sync_pause_screen();
   const bool menu_open = menu_->open();
   handle_actions(menu_->over_game());
+  if (menu_->open() || game_->paused()) input_->close_comms();  // the menu has the keys
   if (menu_open) update_menu();
   handle_sound_keys(menu_open);
   const bool f1 = presses_between(previous_devices_, devices_, key_code("F1")) > 0;
@@ -184,6 +185,7 @@ void WindowSession::draw() {
   const bool menu_open = menu_->open();
   const MouseReticle r = input_->reticle();
   hud_.reticle = {r.shown && !w.paused && !menu_open, r.x, r.y, r.radius, r.deadzone};
+  hud_.comms_open = input_->comms_open() && !w.paused && !menu_open;
   hud_.show_hud = !menu_->over_game();
   hud_.show_outcome = !menu_open;  // the pause screen and the results have it as their title
   CameraSettings camera;  // the player's field of view, except for a level's fixed camera

@@ -154,21 +154,34 @@ void layout_combat_cues(const World& w, const Ship& me, const Projector& pr, con
 }
 
 void layout_kill_feed(const World& w, const Ship* me, const HudRules& rules, double x, double y, HudLayer& h) {
-  std::vector<const Ship*> dead;
-  for (const Ship& s : w.ships)
-    if (!s.alive && s.death_tick >= 0 && seconds_since(w, s.death_tick) < rules.kill_feed_seconds) dead.push_back(&s);
-  std::sort(dead.begin(), dead.end(), [](const Ship* a, const Ship* b) {
-    return a->death_tick != b->death_tick ? a->death_tick > b->death_tick : a->id < b->id;
+  // The kills and the messages (wing replies, reinforcements), newest first, one list.
+  struct Line {
+    int64_t tick;
+    size_t order;
+    std::string text;
+    glm::vec4 colour;
+  };
+  std::vector<Line> lines;
+  for (const Ship& s : w.ships) {
+    if (s.alive || s.death_tick < 0 || seconds_since(w, s.death_tick) >= rules.kill_feed_seconds) continue;
+    const ShipId killer = s.last_attacker;
+    std::string t = killer && killer != s.id ? w.ship(killer).name + " destroyed " + s.name : s.name + " destroyed";
+    const glm::vec4 col = !me ? kHudWhite : w.hostile(*me, s) ? kHudGreen : kHudRed;
+    lines.push_back({s.death_tick, s.id.index(), std::move(t), col});
+  }
+  for (size_t i = 0; i < w.messages.size(); ++i) {
+    const SimMessage& m = w.messages[i];
+    if (seconds_since(w, m.tick) >= rules.kill_feed_seconds) continue;
+    const glm::vec4 col = m.kind == MessageKind::Hostile ? kHudYellow : kHudBlue;
+    lines.push_back({m.tick, w.ships.size() + i, m.text, col});
+  }
+  std::sort(lines.begin(), lines.end(), [](const Line& a, const Line& b) {
+    return a.tick != b.tick ? a.tick > b.tick : a.order < b.order;
   });
-  if (dead.size() > size_t(std::max(rules.kill_feed_lines, 0))) dead.resize(size_t(std::max(rules.kill_feed_lines, 0)));
-  for (const Ship* s : dead) {
-    const ShipId killer = s->last_attacker;
-    const std::string line_text = killer && killer != s->id
-                                      ? w.ship(killer).name + " destroyed " + s->name
-                                      : s->name + " destroyed";
-    const glm::vec4 col = !me ? kHudWhite : w.hostile(*me, *s) ? kHudGreen : kHudRed;
-    const double left = rules.kill_feed_seconds - seconds_since(w, s->death_tick);
-    text(h, x, y, 1.0, faded(col, std::min(1.0, left)), line_text);
+  if (lines.size() > size_t(std::max(rules.kill_feed_lines, 0))) lines.resize(size_t(std::max(rules.kill_feed_lines, 0)));
+  for (const Line& l : lines) {
+    const double left = rules.kill_feed_seconds - seconds_since(w, l.tick);
+    text(h, x, y, 1.0, faded(l.colour, std::min(1.0, left)), l.text);
     y += 18.0;
   }
 }

@@ -11,7 +11,8 @@
 //                   toward each missile homing on `me`;
 //   range cue       above the target's brackets, "IN RANGE" while the beam reaches it;
 //   kill feed       the last kills (killer and victim, from the dead ships' death tick and last
-//                   attacker), newest first, under the objective, each for kill_feed_seconds.
+//                   attacker) and the World's messages (wing replies in blue, reinforcements),
+//                   newest first, under the objective, each for kill_feed_seconds.
 // Sizes are in canvas units (hud_draw.h).
 #pragma once
 #include "game/render/hud_rules.h"

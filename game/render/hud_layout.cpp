@@ -8,6 +8,7 @@
 
 #include "game/render/hud_aim.h"
 #include "game/render/hud_combat.h"
+#include "game/render/hud_comms.h"
 #include "game/render/hud_draw.h"
 #include "game/render/hud_radar.h"
 #include "game/render/screen_projection.h"
@@ -327,6 +328,7 @@ void layout_hud(const World& w, const CameraView& cam, const HudState& state, do
       marks.panel("weapon", [&] { hud_weapon(me, width, height, h); });
       marks.panel("target panel", [&] { hud_target_panel(w, me, width, height, h); });
       marks.panel("radar", [&] { layout_radar(w, me, state.rules, width, height, h); });
+      if (state.comms_open) marks.panel("comms", [&] { hud_comms_menu(w, width, height, h); });
     }
   }
   hud_reticle(state.reticle, width, height, h);

@@ -18,7 +18,7 @@
 // room for it, so no panel overlaps another at any size from 640x360 up.
 //
 // HudState is what the app knows and the World does not: whether the HUD and the FPS counter
-// are on, the measured frame rate, the reticle, and the notice and error texts.
+// are on, the measured frame rate, the reticle, the comms menu, and the notice and error texts.
 #pragma once
 #include <string>
 #include <vector>
@@ -43,6 +43,7 @@ struct HudState {
   double fps = 0;           // shown when show_fps
   std::string frame_stats;  // shown under it when show_fps: the renderer's particle figures
   HudReticle reticle;
+  bool comms_open = false;   // the comms menu (hud_comms.h) is drawn while flying
   std::string notice;        // one line above the radar (e.g. "Recording stopped ...")
   std::string error_banner;  // a failed hot reload, wrapped within the screen below the objective
   HudRules rules;           // tunable numbers (assets/settings/hud.json), also the own-effect view rules

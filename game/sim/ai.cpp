@@ -7,6 +7,7 @@
 
 #include "core/rng.h"
 #include "game/sim/geometry.h"
+#include "game/sim/wing.h"
 #include "game/sim/world.h"
 
 namespace arc {
@@ -42,7 +43,8 @@ glm::dvec3 lead_point(const Ship& shooter, const Ship& target, double projectile
 }
 
 // The nearest hostile, but a damaged one counts as nearer: pilots go for the kill, so fights end
-// in explosions instead of spreading damage over everyone.
+// in explosions instead of spreading damage over everyone. Where the player leads a wing, the
+// player and ships already under attack count as farther (target_weight, ai_orders.cpp).
 ShipId pick_target(const World& w, ShipId self) {
   ShipId best;
   double best_score = 0;
@@ -50,7 +52,7 @@ ShipId pick_target(const World& w, ShipId self) {
   for (const Ship& s : w.ships) {
     if (s.id == self || !s.alive || !w.hostile(me, s)) continue;
     const double health = (s.hull + s.shield) / std::max(1e-9, s.cls->hull + s.cls->shield);
-    const double score = safe_len(s.position - me.position) * (0.4 + health);
+    const double score = safe_len(s.position - me.position) * (0.4 + health) * target_weight(w, me, s);
     if (!best || score < best_score) best = s.id, best_score = score;
   }
   return best;
@@ -89,6 +91,8 @@ void think(World& w, Ship& s) {
   const Rng rng{w.seed, kAiStream + static_cast<uint64_t>(s.id.index()), static_cast<uint64_t>(w.tick)};
   ai.next_think = w.tick + std::max<int64_t>(1, seconds_to_ticks(w, tune.reaction_s));
   if (!ai.target || !w.ship(ai.target).alive || rng.uniform(0) < 0.25) ai.target = pick_target(w, s.id);
+  const Wingman* wing = wingman_of(w, s.id);  // the player's orders come first (ai_orders.cpp)
+  if (wing) ai.target = wing_target(w, s, *wing, ai.target);
   s.target = ai.target;
   ai.aim_error = rng.unit_vector(1) * (tune.aim_error * rng.uniform(2));
   if (!ai.target) return;
@@ -103,6 +107,7 @@ void think(World& w, Ship& s) {
   }
   ai.mode = AiMode::Attack;
   if (break_off_players_tail(w, s, t, rel, dist, rng)) return;
+  if (wing && wing_withdraw(w, s, rng)) return;
   const double evade_at = 0.35 * (1.3 - tune.aggression);
   // After an evasion or a break-off the pilot turns back and fights for a while before it may
   // evade again: a ship that is still under fire never recharges, so endless evading only
@@ -171,6 +176,10 @@ void drive_ai(World& w, Ship& s) {
   const AiDifficultyDef& tune = ai_difficulty(w);
   AiState& ai = s.ai_state;
   InputFrame c;
+  if (const Wingman* m = wingman_of(w, s.id); m && fly_formation(w, s, *m, c)) {
+    s.controls = c;
+    return;
+  }
   if (!ai.target || !w.ship(ai.target).alive) {
     c.throttle = quantise_axis(0.5);
     c.roll = quantise_axis(-0.3 * s.angular_velocity.z);

@@ -1,7 +1,8 @@
 // game/sim/commands.cpp — a tick's discrete commands: pause and resume, the camera keys, the
-// player's target (next, nearest hostile, next hostile) and secondary weapon.
+// player's target (next, nearest hostile, next hostile), secondary weapon and wing orders.
 #include "game/sim/commands.h"
 
+#include "game/sim/wing.h"
 #include "game/sim/world.h"
 
 namespace arc {
@@ -55,6 +56,10 @@ void apply_commands(World& w, const std::vector<Command>& commands) {
         if (p.cls->missile.present && p.cls->plasma.present)
           p.secondary = p.secondary == SecondaryWeapon::Missile ? SecondaryWeapon::Plasma : SecondaryWeapon::Missile;
         break;
+      case Command::OrderAttack:
+      case Command::OrderCover:
+      case Command::OrderFormUp:
+      case Command::OrderEngage: order_wing(w, c); break;
       default: break;
     }
   }

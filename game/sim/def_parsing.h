@@ -44,4 +44,10 @@ void parse_mission(JsonObject& r, LevelDef& L);
 // regular file. Checked in every mode, so a run without rendering refuses what a window would.
 void require_named_file(const JsonValue& v, const std::string& named, const std::string& root_dir, const char* what);
 
+// One entry of "ships" (or of a wave's "ships"), its class loaded into L; names are unique
+// among every ship already in L (level_defs.cpp).
+ShipSpawnDef parse_ship_entry(JsonObject& s, LevelDef& L, const std::string& root_dir);
+// The optional "waves" list, after "ships" (game/sim/wave_defs.cpp).
+void parse_waves(JsonObject& r, LevelDef& L, const std::string& root_dir);
+
 }  // namespace arc::defs_internal

@@ -5,7 +5,8 @@
 // ShipClassDef comes from assets/ships/*.json, LevelDef from levels/*.json, the AI pilots'
 // difficulties from assets/settings/ai.json (see levels/README.md for every key). Paths inside
 // files are relative to GameOptions::root_dir. One loader file per format: ship_class_defs.cpp,
-// level_defs.cpp, mission_defs.cpp (a level's "mission" block), ai_defs.cpp.
+// level_defs.cpp, mission_defs.cpp (a level's "mission" block), wave_defs.cpp (its "waves"),
+// ai_defs.cpp.
 //
 // Example, compiled as GameExamples.LoadALevel in tests/unit/game/test_game_examples.cpp:
 //   LevelDef level = load_level_def("levels/duel.json", ".");   // also loads the ship classes
@@ -77,10 +78,20 @@ struct ShipSpawnDef {
   std::string ship_class;  // key into LevelDef::classes
   std::string team;
   bool player = false;
+  bool wing = false;       // one of the player's wingmen: takes the wing orders
   AiKind ai = AiKind::Fighter;
   glm::dvec3 position{0.0};
   glm::dvec3 orientation_deg{0.0};  // yaw, pitch, roll
   glm::dvec3 velocity{0.0};
+};
+
+// A reinforcement wave ("waves"): its ships enter the fight at once when the trigger holds,
+// after `after_seconds`, or when `team` has fewer than `below` ships alive. (wave_defs.cpp)
+struct WaveDef {
+  double after_seconds = -1;  // < 0: triggered by a team's losses
+  std::string team;           // with `below`: the team counted
+  int below = 0;
+  std::vector<ShipSpawnDef> ships;
 };
 
 struct PropDef {
@@ -159,6 +170,7 @@ struct LevelDef {
   double splash_radius = 60.0;
   double splash_damage = 40.0;
   std::vector<ShipSpawnDef> ships;
+  std::vector<WaveDef> waves;  // their ships follow `ships` in World::ships, waiting until the wave
   std::vector<PropDef> props;
   std::vector<EffectSpawnDef> effects;
   CameraHintDef camera;

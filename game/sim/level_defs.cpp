@@ -61,32 +61,34 @@ void load_class_of(LevelDef& L, const ShipSpawnDef& d, const JsonValue& cls, con
   L.classes.emplace(d.ship_class, std::make_shared<const ShipClassDef>(load_ship_class(file, d.ship_class, root_dir)));
 }
 
+// "wing": a wingman flies on the player's team and is not the player.
+void check_wing(JsonObject& r, const LevelDef& L) {
+  const ShipSpawnDef* player = nullptr;
+  for (const ShipSpawnDef& d : L.ships)
+    if (d.player) player = &d;
+  std::vector<JsonObject> entries = r.objects("ships");
+  for (size_t i = 0; i < L.ships.size() && i < entries.size(); ++i) {
+    const ShipSpawnDef& d = L.ships[i];
+    if (!d.wing) continue;
+    if (d.player) entries[i].fail_key("wing", "the player leads the wing: 'wing' is for the player's wingmen");
+    if (!player) entries[i].fail_key("wing", "a wingman needs a player ship to follow ('player': true on one ship)");
+    if (d.team != player->team)
+      entries[i].fail_key("wing", "a wingman flies on the player's team \"" + player->team + "\", not \"" + d.team + "\"");
+    if (d.ai != AiKind::Fighter) entries[i].fail_key("wing", "a wingman needs 'ai': \"fighter\"");
+  }
+}
+
 void parse_ships(JsonObject& r, LevelDef& L, const std::string& root_dir) {
-  bool have_player = false;
   r.check_list_length("ships", kMaxLevelShips);
   for (JsonObject s : r.objects("ships")) {
-    ShipSpawnDef d;
-    d.name = s.require_string("name");
-    d.has_label = s.has("label");
-    d.label = s.string("label", "");
-    JsonValue cls = s.require("class");
-    d.ship_class = cls.string();
-    d.team = s.require_string("team");
-    d.player = s.boolean("player", false);
-    if (d.player && have_player) s.fail_key("player", "only one ship may be the player");
-    have_player = have_player || d.player;
-    std::string ai = s.choice("ai", d.player ? "none" : "fighter", {"none", "fighter", "gunner"});
-    d.ai = ai == "none" ? AiKind::None : ai == "fighter" ? AiKind::Fighter : AiKind::Gunner;
-    d.position = s.vec3("position", glm::dvec3(0.0), -kSpace, kSpace);
-    d.orientation_deg = orientation(s);
-    d.velocity = s.vec3("velocity", glm::dvec3(0.0), -1.0e5, 1.0e5);
-    s.finish();
-    for (const ShipSpawnDef& other : L.ships)
-      if (other.name == d.name) s.fail_key("name", "ship name '" + d.name + "' is used twice");
-    load_class_of(L, d, cls, root_dir);
+    ShipSpawnDef d = parse_ship_entry(s, L, root_dir);
+    if (d.player)
+      for (const ShipSpawnDef& other : L.ships)
+        if (other.player) s.fail_key("player", "only one ship may be the player");
     L.ships.push_back(std::move(d));
   }
   if (L.ships.empty()) r.fail_key(r.has("ships") ? "ships" : "name", "a level needs at least one ship in 'ships'");
+  check_wing(r, L);
 }
 
 void parse_props(JsonObject& r, LevelDef& L, const std::string& root_dir) {
@@ -177,6 +179,32 @@ void check_protected_ship(JsonObject& r, const LevelDef& L) {
 
 }  // namespace
 
+ShipSpawnDef defs_internal::parse_ship_entry(JsonObject& s, LevelDef& L, const std::string& root_dir) {
+  ShipSpawnDef d;
+  d.name = s.require_string("name");
+  d.has_label = s.has("label");
+  d.label = s.string("label", "");
+  JsonValue cls = s.require("class");
+  d.ship_class = cls.string();
+  d.team = s.require_string("team");
+  d.player = s.boolean("player", false);
+  d.wing = s.boolean("wing", false);
+  std::string ai = s.choice("ai", d.player ? "none" : "fighter", {"none", "fighter", "gunner"});
+  d.ai = ai == "none" ? AiKind::None : ai == "fighter" ? AiKind::Fighter : AiKind::Gunner;
+  d.position = s.vec3("position", glm::dvec3(0.0), -kSpace, kSpace);
+  d.orientation_deg = orientation(s);
+  d.velocity = s.vec3("velocity", glm::dvec3(0.0), -1.0e5, 1.0e5);
+  s.finish();
+  auto taken = [&](const std::vector<ShipSpawnDef>& list) {
+    for (const ShipSpawnDef& other : list)
+      if (other.name == d.name) s.fail_key("name", "ship name '" + d.name + "' is used twice");
+  };
+  taken(L.ships);
+  for (const WaveDef& wave : L.waves) taken(wave.ships);
+  load_class_of(L, d, cls, root_dir);
+  return d;
+}
+
 LevelDef parse_level_doc(std::shared_ptr<const JsonDoc> doc, const std::string& root_dir, const EffectLibrary* fx) {
   JsonObject r = root_of(doc);
   LevelDef L;
@@ -189,8 +217,14 @@ LevelDef parse_level_doc(std::shared_ptr<const JsonDoc> doc, const std::string& 
   L.objective = r.require_string("objective");
   parse_rules(r, L);
   parse_ships(r, L, root_dir);
+<<<<<<< HEAD
   parse_props(r, L, root_dir);
   parse_effects(r, L, fx, root_dir);
+=======
+  parse_waves(r, L, root_dir);
+  parse_props(r, L);
+  parse_effects(r, L, fx);
+>>>>>>> wing
   parse_camera(r, L);
   parse_team_colors(r, L);
   parse_mission(r, L);

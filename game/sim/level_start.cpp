@@ -31,26 +31,34 @@ TeamId add_team(World& w, const std::string& name) {
   return TeamId::from_index(w.team_names.size() - 1);
 }
 
+void add_ship(World& w, const ShipSpawnDef& d, bool waiting) {
+  Ship s;
+  s.id = ShipId::from_index(w.ships.size());
+  s.name = d.name;
+  s.team = add_team(w, d.team);
+  s.particle_owner = allocate_owner(w);
+  s.cls = w.level.classes.at(d.ship_class).get();
+  s.model = add_model(w, s.cls->model);
+  s.player = d.player;
+  s.ai = d.ai;
+  s.position = s.prev_position = d.position;
+  s.orientation = s.prev_orientation = orientation_from_degrees(d.orientation_deg);
+  s.velocity = d.velocity;
+  s.hull = s.cls->hull;
+  s.shield = s.cls->shield;
+  s.energy = s.cls->energy;
+  s.alive = !waiting;  // a wave's ships wait out of play until it arrives (waves.cpp)
+  if (!s.cls->missile.present && s.cls->plasma.present) s.secondary = SecondaryWeapon::Plasma;
+  if (d.player) w.player = s.id;
+  if (d.wing) w.wing.push_back({s.id, WingOrder::EngageAtWill, ShipId{}, int32_t(w.wing.size() + 1)});
+  w.ships.push_back(std::move(s));
+}
+
 void add_ships(World& w) {
-  for (const ShipSpawnDef& d : w.level.ships) {
-    Ship s;
-    s.id = ShipId::from_index(w.ships.size());
-    s.name = d.name;
-    s.team = add_team(w, d.team);
-    s.particle_owner = allocate_owner(w);
-    s.cls = w.level.classes.at(d.ship_class).get();
-    s.model = add_model(w, s.cls->model);
-    s.player = d.player;
-    s.ai = d.ai;
-    s.position = s.prev_position = d.position;
-    s.orientation = s.prev_orientation = orientation_from_degrees(d.orientation_deg);
-    s.velocity = d.velocity;
-    s.hull = s.cls->hull;
-    s.shield = s.cls->shield;
-    s.energy = s.cls->energy;
-    if (!s.cls->missile.present && s.cls->plasma.present) s.secondary = SecondaryWeapon::Plasma;
-    if (d.player) w.player = s.id;
-    w.ships.push_back(std::move(s));
+  for (const ShipSpawnDef& d : w.level.ships) add_ship(w, d, false);
+  for (const WaveDef& wave : w.level.waves) {
+    for (const ShipSpawnDef& d : wave.ships) add_ship(w, d, true);
+    w.waves.push_back({});
   }
 }
 
@@ -67,24 +75,22 @@ void add_props(World& w) {
   }
 }
 
-void attach_ship_effects(World& w) {
-  for (Ship& s : w.ships) {
-    // Spawned at full intensity: the burst's particle count is scaled by the intensity of the
-    // first particle step, after which update_shields_and_energy() dims it to what it shows.
-    if (s.cls->shield > 0) spawn_shield(w, s, 4);
-    for (const glm::dvec3& e : s.cls->exhausts) {
-      SpawnParams ep;
-      ep.owner = s.particle_owner;
-      ep.position = e;
-      ep.orientation = glm::angleAxis(kPi, glm::dvec3(0, 1, 0));  // exhaust cone points backwards (+Z)
-      ep.scale = s.cls->collision_radius / 8.0;
-      ep.priority = 0;
-      s.exhaust_fx.push_back(spawn_fx(w, w.fx.engine_exhaust, ep));
-    }
+}  // namespace
+
+void attach_ship_effects(World& w, Ship& s) {
+  // Spawned at full intensity: the burst's particle count is scaled by the intensity of the
+  // first particle step, after which update_shields_and_energy() dims it to what it shows.
+  if (s.cls->shield > 0) spawn_shield(w, s, 4);
+  for (const glm::dvec3& e : s.cls->exhausts) {
+    SpawnParams ep;
+    ep.owner = s.particle_owner;
+    ep.position = e;
+    ep.orientation = glm::angleAxis(kPi, glm::dvec3(0, 1, 0));  // exhaust cone points backwards (+Z)
+    ep.scale = s.cls->collision_radius / 8.0;
+    ep.priority = 0;
+    s.exhaust_fx.push_back(spawn_fx(w, w.fx.engine_exhaust, ep));
   }
 }
-
-}  // namespace
 
 void init_world(World& w, LevelDef level, std::shared_ptr<const EffectLibrary> effects, const GameOptions& o) {
   w.options = o;
@@ -111,7 +117,8 @@ void init_world(World& w, LevelDef level, std::shared_ptr<const EffectLibrary> e
   publish_owner_transforms(w);
   try {
     w.fx = resolve_game_effects(*w.effects, w.level);
-    attach_ship_effects(w);
+    for (Ship& s : w.ships)
+      if (s.alive) attach_ship_effects(w, s);
   } catch (const InputError& e) {
     throw InputError(w.level.path + ": " + e.what());
   }

@@ -9,9 +9,12 @@ namespace arc {
 
 class EffectLibrary;
 class World;
+struct Ship;
 
 // Ships, props, the particle world, the camera rig and the ships' shields and exhausts, from a
 // validated LevelDef. A level naming an effect the library lacks throws InputError.
 void init_world(World& w, LevelDef level, std::shared_ptr<const EffectLibrary> effects, const GameOptions& options);
+// A ship's shield sphere and engine exhausts, at the start or when its wave arrives.
+void attach_ship_effects(World& w, Ship& s);
 
 }  // namespace arc

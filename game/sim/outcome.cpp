@@ -1,4 +1,5 @@
-// game/sim/outcome.cpp — victory, defeat or the winning team, by the level's win and lose rules.
+// game/sim/outcome.cpp — victory, defeat or the winning team, by the level's win and lose rules;
+// a wave's ships still waiting to arrive count as in the fight.
 #include "game/sim/outcome.h"
 
 #include <algorithm>
@@ -16,7 +17,7 @@ void decide(World& w, Outcome o, TeamId winner) {
 
 TeamId first_live_team(const World& w, TeamId except) {
   for (const Ship& s : w.ships)
-    if (s.alive && s.team != except) return s.team;
+    if (in_fight(s) && s.team != except) return s.team;
   return {};
 }
 
@@ -37,8 +38,8 @@ void update_outcome(World& w) {
     case WinKind::DestroyAllHostiles: {
       bool any = false, friends = false;
       for (const Ship& s : w.ships) {
-        any = any || (s.alive && s.team != side);
-        friends = friends || (s.alive && s.team == side);
+        any = any || (in_fight(s) && s.team != side);
+        friends = friends || (in_fight(s) && s.team == side);
       }
       if (!any) decide(w, player ? Outcome::Victory : Outcome::TeamWon, side);
       else if (!friends) decide(w, player ? Outcome::Defeat : Outcome::TeamWon, first_live_team(w, side));
@@ -50,7 +51,7 @@ void update_outcome(World& w) {
     case WinKind::LastTeamStanding: {
       std::vector<TeamId> teams;
       for (const Ship& s : w.ships)
-        if (s.alive && std::find(teams.begin(), teams.end(), s.team) == teams.end()) teams.push_back(s.team);
+        if (in_fight(s) && std::find(teams.begin(), teams.end(), s.team) == teams.end()) teams.push_back(s.team);
       if (teams.size() > 1) break;
       const TeamId winner = teams.empty() ? TeamId{} : teams.front();
       if (player) decide(w, player->team == winner ? Outcome::Victory : Outcome::Defeat, winner);

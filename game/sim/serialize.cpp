@@ -31,8 +31,9 @@ static void write_leaf(snapshot::Writer& out, const std::optional<ParticleWorld>
 namespace {
 
 constexpr uint64_t kMagic = snapshot::magic("ARCSNAP1");
-// 3: typed ids (ships, teams, model slots, particle owners) as their u32 values; 4: ship combat stats
-constexpr uint32_t kVersion = 4;
+// 3: typed ids (ships, teams, model slots, particle owners) as their u32 values; 4: ship combat stats;
+// 5: the wing, the waves and the messages
+constexpr uint32_t kVersion = 5;
 
 using snapshot::Reader;
 using snapshot::Writer;

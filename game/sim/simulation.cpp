@@ -13,6 +13,8 @@
 #include "game/sim/outcome.h"
 #include "game/sim/projectiles.h"
 #include "game/sim/shields.h"
+#include "game/sim/waves.h"
+#include "game/sim/wing.h"
 #include "game/sim/world.h"
 
 namespace arc {
@@ -25,6 +27,8 @@ void step_world(World& w, const InputFrame& input, const std::vector<Command>& c
     s.prev_position = s.position;
     s.prev_orientation = s.orientation;
   }
+  if (!w.waves.empty()) update_waves(w);
+  if (!w.wing.empty()) update_wing_orders(w);
   for (Ship& s : w.ships) {
     if (!s.alive) continue;
     if (s.id == w.player && s.ai == AiKind::None) s.controls = input;

@@ -42,11 +42,17 @@ enum class AiMode : uint8_t { Attack = 0, Evade = 1, BreakOff = 2 };
 // Padlock: the chase camera turned to keep the player's target in view (camera_rig.h).
 enum class CameraMode : uint8_t { Chase = 0, Cockpit = 1, Fixed = 2, Padlock = 3 };
 enum class Outcome : uint8_t { Undecided = 0, Victory = 1, Defeat = 2, TeamWon = 3 };
+// The player's standing order to the wing (game/sim/wing.h).
+enum class WingOrder : uint8_t { EngageAtWill = 0, Attack = 1, Cover = 2, FormUp = 3 };
+// Who a message on the HUD speaks for: a wingman, reinforcements of the player's side or hostile ones.
+enum class MessageKind : uint8_t { Wing = 0, Friendly = 1, Hostile = 2 };
 // The last value of each enum: a snapshot's byte beyond it is an error.
 constexpr SecondaryWeapon last_enumerator(SecondaryWeapon) { return SecondaryWeapon::Plasma; }
 constexpr AiMode last_enumerator(AiMode) { return AiMode::BreakOff; }
 constexpr CameraMode last_enumerator(CameraMode) { return CameraMode::Padlock; }
 constexpr Outcome last_enumerator(Outcome) { return Outcome::TeamWon; }
+constexpr WingOrder last_enumerator(WingOrder) { return WingOrder::FormUp; }
+constexpr MessageKind last_enumerator(MessageKind) { return MessageKind::Hostile; }
 
 // Where the per-tick hash takes a field: word W of the state pass or of the presentation pass.
 inline constexpr int kStateHashPass = 0;
@@ -162,6 +168,11 @@ struct Ship {
   AiState ai_state;
   CombatStats stats;
 };
+
+// A wave's ship before its wave arrives: not alive, never killed (game/sim/waves.h).
+inline bool waiting(const Ship& s) { return !s.alive && s.death_tick < 0; }
+// Alive, or still to arrive with its wave: the outcome counts it.
+inline bool in_fight(const Ship& s) { return s.alive || waiting(s); }
 
 // Name, class, team, player, AI kind and model come from the level and never change: unhashed.
 template <fields::MaybeConst<Ship> S, class V>
@@ -282,6 +293,47 @@ void visit_fields(C& c, V&& v) {
   v("orientation", c.orientation, fields::saved, presentation_hash<1>);
 }
 
+// A ship the level flags "wing": it takes the player's orders. `target` is the ship an attack
+// order named; `slot` its place in the formation (1 = first off the player's wing).
+struct Wingman {
+  ShipId ship;
+  WingOrder order = WingOrder::EngageAtWill;
+  ShipId target;
+  int32_t slot = 1;
+};
+
+template <fields::MaybeConst<Wingman> M, class V>
+void visit_fields(M& m, V&& v) {
+  v("ship", m.ship, ship_ref, state_hash<0>);
+  v("order", m.order, fields::saved, state_hash<1>);
+  v("target", m.target, ship_ref, state_hash<2>);
+  v("slot", m.slot, fields::saved, state_hash<3>);
+}
+
+// A reinforcement wave of the level (LevelDef::waves): the tick it arrived, −1 while it waits.
+struct WaveState {
+  int64_t arrived_tick = -1;
+};
+
+template <fields::MaybeConst<WaveState> S, class V>
+void visit_fields(S& s, V&& v) {
+  v("arrived_tick", s.arrived_tick, fields::saved, state_hash<0>);
+}
+
+// A line the HUD shows for a while (wing replies, reinforcements), with the tick it was posted.
+struct SimMessage {
+  int64_t tick = 0;
+  MessageKind kind = MessageKind::Wing;
+  std::string text;
+};
+
+template <fields::MaybeConst<SimMessage> M, class V>
+void visit_fields(M& m, V&& v) {
+  v("tick", m.tick, fields::saved, presentation_hash<0>);
+  v("kind", m.kind, fields::saved, presentation_hash<1>);
+  v("text", m.text, fields::saved, presentation_hash<2>);
+}
+
 class World {
  public:
   LevelDef level;
@@ -309,6 +361,9 @@ class World {
   CameraRig camera, prev_camera;
   GameOptions options;
   uint64_t steps = 0;  // step() calls, paused ones included
+  std::vector<Wingman> wing;            // the player's wingmen, in level order (empty: no wing)
+  std::vector<WaveState> waves;         // one per LevelDef::waves entry; their ships wait, not alive
+  std::vector<SimMessage> messages;     // newest last, at most kMaxMessages
 
   Ship& ship(ShipId id) { return ships[id.index()]; }
   const Ship& ship(ShipId id) const { return ships[id.index()]; }
@@ -345,6 +400,10 @@ void visit_fields(W& w, V&& v) {
   v("props", w.props, fields::checked, fields::unhashed);
   v("explosions", w.explosions, fields::saved, presentation_hash<2>);
   v("particles", w.particles, fields::saved, presentation_hash<6>);  // its own snapshot; hash_summary
+  // Empty lists hash to nothing, so levels without a wing or waves keep their hashes.
+  v("wing", w.wing, fields::saved, state_hash<11>);
+  v("waves", w.waves, fields::checked, state_hash<12>);
+  v("messages", w.messages, fields::saved, presentation_hash<7>);
   v("team_names", w.team_names, fields::not_saved, fields::unhashed);    // from the level
   v("model_paths", w.model_paths, fields::not_saved, fields::unhashed);  // from the level
   v("effects", w.effects, fields::not_saved, fields::unhashed);          // the shared library
@@ -355,6 +414,9 @@ void visit_fields(W& w, V&& v) {
 // A particle owner no ship or projectile of this World has had before. (Moving level effects
 // use owners of their own from 2^31 up, level_effect_owner in game/sim/effects.h.)
 inline OwnerId allocate_owner(World& w) { return OwnerId{w.next_particle_owner++}; }
+
+// How many messages World::messages keeps.
+inline constexpr size_t kMaxMessages = 8;
 
 inline int64_t seconds_to_ticks(const World& w, double s) { return static_cast<int64_t>(std::llround(s / w.dt)); }
 

@@ -94,8 +94,8 @@ TEST(Menu, ScriptedSessionReachesTheResultsAndGoesOn) {
   run(m, "down accept");  // Skirmish's briefing
   ASSERT_EQ(m.screen(), MenuScreen::Briefing);
   EXPECT_EQ(m.page().title, "Skirmish");
-  EXPECT_NE(m.page().paragraph.find("wingman"), std::string::npos);
-  EXPECT_TRUE(has_line(m.page(), "subtitle: Objective: With your wingman, destroy all four hostiles."));
+  EXPECT_NE(m.page().paragraph.find("Alpha 2"), std::string::npos);
+  EXPECT_TRUE(has_line(m.page(), "subtitle: Objective: With your wing, destroy the red patrol and its reinforcements."));
   run(m, "right");  // hard
   EXPECT_TRUE(has_line(m.page(), "line: Difficulty: hard"));
   run(m, "back left accept");  // back in the list, easy there, the briefing again

@@ -176,9 +176,9 @@ TEST(KeyRemap, AConflictSwapsTheKeys) {
   EXPECT_EQ(bound_key(b, "strafe_up"), key_code("MOUSE_LEFT"));
   // The same key again changes nothing; a free key is no conflict.
   EXPECT_FALSE(remap_key(b, "fire_primary", key_code("SPACE")).changed);
-  RemapOutcome free_key = remap_key(b, "camera", key_code("B"));
+  RemapOutcome free_key = remap_key(b, "camera", key_code("K"));
   EXPECT_EQ(free_key.conflict, "");
-  EXPECT_EQ(free_key.message, "Camera: B");
+  EXPECT_EQ(free_key.message, "Camera: K");
   // What is saved: only what differs from the defaults, and it applies back.
   const auto overrides = key_overrides(b, defaults);
   EXPECT_EQ(overrides.size(), 3u);

@@ -93,7 +93,7 @@ FightStats run(const std::string& level, int difficulty, uint64_t seed, double m
   Game g = load(level, difficulty, seed);
   const World& w = g.world();
   FightStats st;
-  const ShipId wing = ship_named(w, "Wingman");
+  const ShipId wing = ship_named(w, "Alpha 2");
   const int64_t limit = int64_t(max_s / w.dt);
   std::vector<bool> was_alive(w.ships.size(), true);
   while (int64_t(w.tick) < limit && w.outcome == Outcome::Undecided) {

@@ -146,14 +146,15 @@ TEST(Targeting, NearestHostileNextHostileAndNext) {
   Game g = Game::load_level(repo("levels/skirmish.json"), options());
   const World& w = g.world();
   g.step(InputFrame{}, {Command::TargetNearest});
-  EXPECT_EQ(w.ship(w.player).target, w.ships[2].id);  // Red 1, not the wingman, who is closer
+  EXPECT_EQ(w.ship(w.player).target, w.ships[3].id);  // Red 1, not a wingman, who is closer
   g.step(InputFrame{}, {Command::TargetNextHostile});
-  EXPECT_EQ(w.ship(w.player).target, w.ships[3].id);
-  g.step(InputFrame{}, {Command::TargetNext});
   EXPECT_EQ(w.ship(w.player).target, w.ships[4].id);
   g.step(InputFrame{}, {Command::TargetNext});
+  EXPECT_EQ(w.ship(w.player).target, w.ships[5].id);
   g.step(InputFrame{}, {Command::TargetNext});
-  EXPECT_EQ(w.ship(w.player).target, w.ships[1].id);  // next goes round every ship, the wingman included
+  g.step(InputFrame{}, {Command::TargetNext});
+  // Next goes round every live ship, the wingmen included; the waiting wave (7, 8) is skipped.
+  EXPECT_EQ(w.ship(w.player).target, w.ships[1].id);
 }
 
 TEST(Summary, HasShipsTickWinnerAndParticleCounts) {
