@@ -35,7 +35,7 @@ class World;
 
 struct HumanSkill {
   double reaction_min_s = 0.2, reaction_max_s = 0.3;  // drawn once per seed
-  double aim_noise_px = 8.0;        // the hand's wander, standard deviation in pixels at 720 p
+  double aim_noise_px = 10.0;       // the hand's wander, standard deviation in pixels at 720 p
   double aim_noise_hold_s = 0.3;    // it picks a new offset this often
   double aim_noise_smooth_s = 0.15; // and drifts to it with this time constant
   double move_error = 0.15;         // each move's size is off by this share (standard deviation)

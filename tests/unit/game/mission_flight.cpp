@@ -28,6 +28,7 @@ struct HostileTrack {
 };
 
 // One tick's share of the figures: the target's picture, the player's first hits and kills.
+// (The first call, before the first tick, only registers the hostiles.)
 void count_tick(const World& w, const HumanPilot& pilot, std::map<uint32_t, HostileTrack>& hostiles, MissionRun& r) {
   const Ship& me = w.ship(w.player);
   const Sight& s = pilot.now();
@@ -41,8 +42,15 @@ void count_tick(const World& w, const HumanPilot& pilot, std::map<uint32_t, Host
       r.hidden_ticks += s.hidden ? 1 : 0;
     }
   }
-  for (auto& [index, h] : hostiles) {
-    const Ship& e = w.ships[index];
+  // Hostiles are tracked from the first tick they fly (waves may join later).
+  for (size_t i = 0; i < w.ships.size(); ++i) {
+    const Ship& e = w.ships[i];
+    auto it = hostiles.find(uint32_t(i));
+    if (it == hostiles.end()) {
+      if (e.alive && w.hostile(me, e)) hostiles[uint32_t(i)] = {e.hull + e.shield};
+      continue;
+    }
+    HostileTrack& h = it->second;
     const double left = e.alive ? e.hull + e.shield : 0.0;
     if (h.first_hit < 0 && left < h.left && e.last_attacker == me.id) h.first_hit = w.tick;
     h.left = left;
@@ -82,11 +90,9 @@ MissionRun fly_mission(const std::string& root_dir, const std::string& level_pat
   HumanPilot pilot(w, root_dir, seed, skill);
   MissionRun r;
   std::map<uint32_t, HostileTrack> hostiles;
-  const Ship& me = w.ship(w.player);
-  for (size_t i = 0; i < w.ships.size(); ++i)
-    if (w.ships[i].alive && w.hostile(me, w.ships[i])) hostiles[uint32_t(i)] = {w.ships[i].hull + w.ships[i].shield};
-  r.hostiles = int(hostiles.size());
   r.reaction_s = pilot.reaction_s();
+  r.tick_s = w.dt;
+  count_tick(w, pilot, hostiles, r);
   InputFrame in;
   std::vector<Command> keys;
   const int64_t limit = seconds_to_ticks(w, max_seconds);
@@ -95,6 +101,7 @@ MissionRun fly_mission(const std::string& root_dir, const std::string& level_pat
     g.step(in, keys);
     count_tick(w, pilot, hostiles, r);
   }
+  r.hostiles = int(hostiles.size());
   const Ship& end = w.ship(w.player);
   r.end = w.outcome == Outcome::Victory                ? FightEnd::Won
           : w.outcome != Outcome::Undecided || !end.alive ? FightEnd::Lost
@@ -115,7 +122,7 @@ MissionFigures mission_figures(const std::string& root_dir, const std::string& l
   f.mission = mission_name(level_path);
   f.difficulty = difficulty;
   MissionRun sum;
-  double reaction = 0;
+  double reaction = 0, tick_s = 0;
   for (int s = 1; s <= seeds; ++s) {
     const MissionRun r = fly_mission(root_dir, level_path, difficulty, uint64_t(s), skill, max_seconds);
     ++f.fights;
@@ -131,11 +138,14 @@ MissionFigures mission_figures(const std::string& root_dir, const std::string& l
     sum.near_nose_ticks += r.near_nose_ticks, sum.hidden_ticks += r.hidden_ticks;
     sum.seconds += r.seconds;
     reaction += r.reaction_s;
+    tick_s = r.tick_s;
   }
   const double n = std::max(f.fights, 1);
   f.win_rate = f.wins / n;
   for (double k : sum.kill_s) f.mean_kill_s += k / double(sum.kill_s.size());
   f.kills_per_fight = sum.kills / n;
+  f.beam_s_per_fight = double(sum.beam_ticks) * tick_s / n;
+  f.missiles_per_fight = double(sum.missiles_fired) / n;
   f.beam_accuracy = accuracy(sum.beam_hit_ticks, sum.beam_ticks);
   f.missile_accuracy = accuracy(sum.missiles_hit, sum.missiles_fired);
   f.on_screen_share = accuracy(sum.on_screen_ticks, sum.target_ticks);
@@ -182,12 +192,14 @@ std::string figures_table(const std::vector<MissionFigures>& rows) {
 std::string figures_csv(const std::vector<MissionFigures>& rows) {
   std::string out =
       "mission,difficulty,fights,wins,losses,timeouts,win_rate,mean_kill_s,kills_per_fight,beam_accuracy,"
-      "missile_accuracy,on_screen_share,hidden_share,damage_dealt,damage_taken,mean_fight_s,reaction_s\n";
+      "missile_accuracy,beam_s_per_fight,missiles_per_fight,on_screen_share,hidden_share,damage_dealt,damage_taken,"
+      "mean_fight_s,reaction_s\n";
   for (const MissionFigures& f : rows)
-    out += printf_line("%s,%s,%d,%d,%d,%d,%.4f,%.3f,%.3f,%.4f,%.4f,%.4f,%.4f,%.1f,%.1f,%.2f,%.3f\n", f.mission.c_str(),
-               difficulty_name(static_cast<Difficulty>(f.difficulty)), f.fights, f.wins, f.losses, f.timeouts,
-               f.win_rate, f.mean_kill_s, f.kills_per_fight, f.beam_accuracy, f.missile_accuracy, f.on_screen_share,
-               f.hidden_share, f.damage_dealt, f.damage_taken, f.mean_fight_s, f.reaction_s);
+    out += printf_line("%s,%s,%d,%d,%d,%d,%.4f,%.3f,%.3f,%.4f,%.4f,%.2f,%.2f,%.4f,%.4f,%.1f,%.1f,%.2f,%.3f\n",
+                       f.mission.c_str(), difficulty_name(static_cast<Difficulty>(f.difficulty)), f.fights, f.wins,
+                       f.losses, f.timeouts, f.win_rate, f.mean_kill_s, f.kills_per_fight, f.beam_accuracy,
+                       f.missile_accuracy, f.beam_s_per_fight, f.missiles_per_fight, f.on_screen_share,
+                       f.hidden_share, f.damage_dealt, f.damage_taken, f.mean_fight_s, f.reaction_s);
   return out;
 }
 

@@ -32,6 +32,7 @@ struct MissionRun {
   FightEnd end = FightEnd::Timeout;
   double seconds = 0;         // game time when it ended
   double reaction_s = 0;      // the pilot's reaction time (drawn per seed)
+  double tick_s = 0;          // the level's tick
   int hostiles = 0, kills = 0;
   std::vector<double> kill_s; // one per hostile the player destroyed
   int64_t beam_ticks = 0, beam_hit_ticks = 0, missiles_fired = 0, missiles_hit = 0;
@@ -51,6 +52,7 @@ struct MissionFigures {
   double mean_kill_s = 0;        // over every kill; 0 without one
   double kills_per_fight = 0;
   double beam_accuracy = 0, missile_accuracy = 0;
+  double beam_s_per_fight = 0, missiles_per_fight = 0;  // seconds the beam fired, missiles fired
   double on_screen_share = 0, hidden_share = 0;
   double damage_dealt = 0, damage_taken = 0;  // means per fight
   double mean_fight_s = 0;
