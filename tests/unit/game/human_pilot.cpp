@@ -70,7 +70,7 @@ HumanPilot::HumanPilot(const World& w, const std::string& root_dir, uint64_t see
   seen_.push_back(look(w));
 }
 
-// Long: one field of the Sight per cue the HUD draws, each read in a line or two.
+// One field of the Sight per cue the HUD draws.
 Sight HumanPilot::look(const World& w) const {
   Sight s;
   s.tick = w.tick;
