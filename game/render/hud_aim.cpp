@@ -32,15 +32,12 @@ void circle(HudLayer& h, glm::dvec2 c, double r, const glm::vec4& col, float wid
   }
 }
 
-void crosshair(const World& w, const Ship& me, const Projector& pr, double alpha, double canvas_w, double canvas_h,
-               HudLayer& h) {
-  glm::dvec2 c(canvas_w * 0.5, canvas_h * 0.5);
-  pr.project(crosshair_point(me, alpha), c);
+void crosshair(glm::dvec2 c, bool beam_ring_lit, HudLayer& h) {
   line(h, c.x - 14, c.y, c.x - 5, c.y, kHudGreen);
   line(h, c.x + 5, c.y, c.x + 14, c.y, kHudGreen);
   line(h, c.x, c.y - 14, c.x, c.y - 5, kHudGreen);
   line(h, c.x, c.y + 5, c.x, c.y + 14, kHudGreen);
-  if (beam_would_hit(w, me)) {
+  if (beam_ring_lit) {
     circle(h, c, kBeamRingRadius, kHudGreen, 2.5f, 32);
     // On the left: the target's own labels stand right of and under it.
     text(h, c.x - kBeamRingRadius - 12.0 - 4 * kGlyphAdvance, c.y - 6.0, 1.0, kHudGreen, "BEAM");
@@ -58,14 +55,17 @@ void missile_cue(HudLayer& h, glm::dvec2 px, double r, bool ready) {
   text(h, px.x + radius + 5.0, px.y - 6.0, 1.0, col, "MSL");
 }
 
-// Where plasma bolts fired now meet the target: the diamond and its label.
-void plasma_lead(HudLayer& h, const Ship& me, const Ship& t, const glm::dvec3& drawn, const Projector& pr) {
+// Where plasma bolts fired now meet the target (drawn at `drawn`): false when behind the eye.
+bool plasma_lead_point(const Ship& me, const Ship& t, const glm::dvec3& drawn, const Projector& pr, glm::dvec2& lp) {
   const double speed = me.cls->plasma.speed;
   const glm::dvec3 rel = t.position - me.position, rv = t.velocity - me.velocity;
   double time = std::sqrt(glm::dot(rel, rel)) / speed;
   for (int i = 0; i < 2; ++i) time = std::sqrt(glm::dot(rel + rv * time, rel + rv * time)) / speed;
-  glm::dvec2 lp;
-  if (!pr.project(drawn + rv * time, lp)) return;
+  return pr.project(drawn + rv * time, lp);
+}
+
+// The plasma lead: the diamond and its label.
+void plasma_lead(HudLayer& h, glm::dvec2 lp) {
   const double d = 7;
   line(h, lp.x - d, lp.y, lp.x, lp.y - d, kHudYellow);
   line(h, lp.x, lp.y - d, lp.x + d, lp.y, kHudYellow);
@@ -100,13 +100,16 @@ glm::dvec2 offscreen_arrow_tip(glm::dvec2 dir, double canvas_w, double canvas_h,
   return c + dir * std::max(t, 0.0);
 }
 
-void offscreen_arrow(HudLayer& h, const Projector& pr, const glm::dvec3& at, double dist, double canvas_w,
-                     double canvas_h, const HudRect& area, const glm::vec4& col) {
+// The screen direction from the centre toward `at`, a point out of view.
+glm::dvec2 offscreen_direction(const Projector& pr, const glm::dvec3& at) {
   const glm::dvec3 v = pr.to_view(at);
-  glm::dvec2 dir(v.x, -v.y);
+  const glm::dvec2 dir(v.x, -v.y);
   const double len = std::sqrt(dir.x * dir.x + dir.y * dir.y);
-  dir = len > 1e-9 ? dir / len : glm::dvec2(0, 1);
-  const glm::dvec2 tip = offscreen_arrow_tip(dir, canvas_w, canvas_h, area);
+  return len > 1e-9 ? dir / len : glm::dvec2(0, 1);
+}
+
+void offscreen_arrow(HudLayer& h, glm::dvec2 dir, glm::dvec2 tip, double dist, const HudRect& area,
+                     const glm::vec4& col) {
   const glm::dvec2 side(-dir.y, dir.x);
   const glm::dvec2 b0 = tip - dir * 18.0 + side * 10.0, b1 = tip - dir * 18.0 - side * 10.0;
   line(h, tip.x, tip.y, b0.x, b0.y, col, 3.0f);
@@ -145,32 +148,56 @@ bool missile_ready(const Ship& me, const Ship& t) {
   return off_nose <= std::min(m.turn_rate * kMissileConeSeconds, 180.0) * kDeg;
 }
 
+AimCues aim_cues(const World& w, const Ship& me, const Projector& pr, double alpha, double canvas_w, double canvas_h,
+                 const HudRect& arrow_area) {
+  AimCues cues;
+  cues.crosshair = {canvas_w * 0.5, canvas_h * 0.5};
+  pr.project(crosshair_point(me, alpha), cues.crosshair);
+  cues.beam_ring_lit = beam_would_hit(w, me);
+  if (!me.target || !w.ship(me.target).alive) return cues;
+  const Ship& t = w.ship(me.target);
+  TargetCues& c = cues.target;
+  c.selected = true;
+  c.hostile = w.hostile(me, t);
+  c.distance = glm::length(t.position - me.position);
+  const glm::dvec3 tp = lerp_pos(t.prev_position, t.position, alpha);
+  double depth = 0;
+  const bool in_front = pr.project(tp, c.centre, &depth);
+  c.on_screen = in_front && c.centre.x >= 0 && c.centre.x <= canvas_w && c.centre.y >= 0 && c.centre.y <= canvas_h;
+  if (!c.on_screen) {
+    c.arrow_dir = offscreen_direction(pr, tp);
+    c.arrow_tip = offscreen_arrow_tip(c.arrow_dir, canvas_w, canvas_h, arrow_area);
+    return cues;
+  }
+  c.half_size = std::max(t.cls->shield_radius * pr.focal / depth, 14.0);
+  c.in_range = c.distance <= me.cls->beam.range;
+  if (!c.hostile) return cues;
+  if (me.secondary == SecondaryWeapon::Plasma && me.cls->plasma.present) {
+    c.plasma_lead = plasma_lead_point(me, t, tp, pr, c.lead);
+  } else if (me.secondary == SecondaryWeapon::Missile && me.cls->missile.present) {
+    c.missile_cue = true;
+    c.missile_ready = missile_ready(me, t);
+  }
+  return cues;
+}
+
 void layout_aim_cues(const World& w, const Ship& me, const Projector& pr, double alpha, double canvas_w,
                      double canvas_h, const HudRect& arrow_area, HudLayer& h) {
   if (w.paused) return;  // the pause menu stands in the middle of the screen
-  crosshair(w, me, pr, alpha, canvas_w, canvas_h, h);
-  if (!me.target || !w.ship(me.target).alive) return;
-  const Ship& t = w.ship(me.target);
-  const glm::dvec3 tp = lerp_pos(t.prev_position, t.position, alpha);
-  const glm::vec4 col = w.hostile(me, t) ? kHudRed : kHudBlue;
-  const double dist = glm::length(t.position - me.position);
-  glm::dvec2 px;
-  double depth = 0;
-  const bool in_front = pr.project(tp, px, &depth);
-  if (!(in_front && px.x >= 0 && px.x <= canvas_w && px.y >= 0 && px.y <= canvas_h)) {
-    offscreen_arrow(h, pr, tp, dist, canvas_w, canvas_h, arrow_area, col);
+  const AimCues cues = aim_cues(w, me, pr, alpha, canvas_w, canvas_h, arrow_area);
+  crosshair(cues.crosshair, cues.beam_ring_lit, h);
+  const TargetCues& c = cues.target;
+  if (!c.selected) return;
+  const glm::vec4 col = c.hostile ? kHudRed : kHudBlue;
+  if (!c.on_screen) {
+    offscreen_arrow(h, c.arrow_dir, c.arrow_tip, c.distance, arrow_area, col);
     return;
   }
-  const double r = std::max(t.cls->shield_radius * pr.focal / depth, 14.0);
-  const bool in_range = dist <= me.cls->beam.range;
-  brackets(h, px, r, col, in_range ? 3.0f : 2.0f);
-  layout_range_cue(h, px, r, in_range, col);
-  bracket_readout(h, t, px, r, dist, col);
-  if (!w.hostile(me, t)) return;
-  if (me.secondary == SecondaryWeapon::Plasma && me.cls->plasma.present)
-    plasma_lead(h, me, t, tp, pr);
-  else if (me.secondary == SecondaryWeapon::Missile && me.cls->missile.present)
-    missile_cue(h, px, r, missile_ready(me, t));
+  brackets(h, c.centre, c.half_size, col, c.in_range ? 3.0f : 2.0f);
+  layout_range_cue(h, c.centre, c.half_size, c.in_range, col);
+  bracket_readout(h, w.ship(me.target), c.centre, c.half_size, c.distance, col);
+  if (c.plasma_lead) plasma_lead(h, c.lead);
+  if (c.missile_cue) missile_cue(h, c.centre, c.half_size, c.missile_ready);
 }
 
 }  // namespace arc

@@ -33,6 +33,32 @@ bool beam_would_hit(const World& w, const Ship& me);
 inline constexpr double kMissileConeSeconds = 0.5;
 bool missile_ready(const Ship& me, const Ship& t);
 
+// What the aim cues show, in canvas units: where layout_aim_cues() draws each cue and what it
+// says. The renderer draws from it and the test pilot (tests/unit/game/human_pilot.h) reads it,
+// so the pilot sees the cues exactly as drawn.
+struct TargetCues {
+  bool selected = false;       // a live target: its cues (or its arrow) are drawn
+  bool hostile = false;        // red, else blue
+  bool on_screen = false;      // brackets around `centre`; otherwise the off-screen arrow
+  glm::dvec2 centre{0.0};
+  double half_size = 0;        // the brackets' half-size
+  double distance = 0;         // metres, as printed under the brackets or beside the arrow
+  bool in_range = false;       // within the beam's range: "IN RANGE", bolder brackets
+  bool missile_cue = false;    // the "MSL" circle (missiles selected, target hostile)
+  bool missile_ready = false;  //   whole: missile_ready()
+  bool plasma_lead = false;    // the "PLS" diamond at `lead` (plasma selected, target hostile)
+  glm::dvec2 lead{0.0};
+  glm::dvec2 arrow_dir{0.0};   // off screen: the arrow's unit direction from the screen centre
+  glm::dvec2 arrow_tip{0.0};   //   and its tip, within the arrow area
+};
+struct AimCues {
+  glm::dvec2 crosshair{0.0};
+  bool beam_ring_lit = false;  // "BEAM": beam_would_hit()
+  TargetCues target;
+};
+AimCues aim_cues(const World& w, const Ship& me, const Projector& pr, double alpha, double canvas_w, double canvas_h,
+                 const HudRect& arrow_area);
+
 // The crosshair with its beam ring, and the target's cues (or the off-screen arrow, drawn
 // within `arrow_area`). Not drawn while paused.
 void layout_aim_cues(const World& w, const Ship& me, const Projector& pr, double alpha, double canvas_w,

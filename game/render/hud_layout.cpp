@@ -340,6 +340,33 @@ void layout_hud(const World& w, const CameraView& cam, const HudState& state, do
   if (panels) marks.boxes(*panels);
 }
 
+HudPicture hud_picture(const World& w, const CameraView& cam, const HudState& state, double alpha, int width,
+                       int height) {
+  HudPicture pic;
+  alpha = std::clamp(alpha, 0.0, 1.0);
+  pic.scale = hud_canvas_scale(std::max(height, 1));
+  width = std::max(1, int(std::lround(std::max(width, 1) / pic.scale)));
+  height = std::max(1, int(std::lround(std::max(height, 1) / pic.scale)));
+  const ShipId focus = w.focus_ship();
+  pic.flying = state.show_hud && !w.paused && focus && w.ship(focus).alive && w.camera_mode != CameraMode::Fixed;
+  if (!pic.flying) return pic;
+  const Ship& me = w.ship(focus);
+  HudLayer scratch;  // the objective's height decides where the off-screen arrow may stand
+  const double feed_y = hud_objective(w.level.objective, true, width, height, scratch);
+  const HudRect arrows = arrow_area(feed_y, state.rules.kill_feed_lines, width, height);
+  pic.aim = aim_cues(w, me, Projector::of(cam, width, height), alpha, width, height, arrows);
+  pic.radar = radar_rect(width, height);
+  pic.radar_blips = radar_blips(w, me, state.rules, width, height);
+  // To window pixels, as scale_hud() scales the drawn layer.
+  const double k = pic.scale;
+  pic.aim.crosshair *= k;
+  TargetCues& t = pic.aim.target;
+  t.centre *= k, t.half_size *= k, t.lead *= k, t.arrow_tip *= k;
+  pic.radar = {pic.radar.x * k, pic.radar.y * k, pic.radar.w * k, pic.radar.h * k};
+  for (RadarBlip& b : pic.radar_blips) b.at *= k, b.size *= k, b.rise *= k;
+  return pic;
+}
+
 HudBox text_box(const HudText& t) {
   size_t longest = 0, lines = 1, run = 0;
   for (char c : t.text) {

@@ -23,6 +23,8 @@
 #include <string>
 #include <vector>
 
+#include "game/render/hud_aim.h"
+#include "game/render/hud_radar.h"
 #include "game/render/hud_rules.h"
 #include "gfx/render_view.h"
 
@@ -72,6 +74,20 @@ struct HudPanelBox {
 // in a width × height frame; `panels`, when given, receives the box of each panel drawn.
 void layout_hud(const World& world, const CameraView& camera, const HudState& state, double alpha, int width,
                 int height, HudLayer& out, std::vector<HudPanelBox>* panels = nullptr);
+
+// What a player reads off the flight HUD that layout_hud() would draw for `camera` in a
+// width × height window, in window pixels: the aim cues (hud_aim.h) and the radar's dots
+// (hud_radar.h), from the same functions the layout draws with. The test pilot
+// (tests/unit/game/human_pilot.h) plays from this alone.
+struct HudPicture {
+  bool flying = false;  // the followed ship is alive and the flight HUD is on: the rest is drawn
+  double scale = 1;     // window pixels per canvas unit (hud_canvas_scale)
+  AimCues aim;
+  HudRect radar{0, 0, 0, 0};
+  std::vector<RadarBlip> radar_blips;
+};
+HudPicture hud_picture(const World& world, const CameraView& camera, const HudState& state, double alpha, int width,
+                       int height);
 
 // `text` broken at spaces (and inside words longer than a line; its own line breaks count as
 // spaces) into lines of at most `max_chars` characters; at most `max_lines`, the last ending

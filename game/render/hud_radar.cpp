@@ -28,16 +28,15 @@ std::string range_label(double metres) {
   return metres >= 1000.0 ? fmt("%g km", metres / 1000.0) : fmt("%g m", metres);
 }
 
-void contact(HudLayer& h, double cx, double cy, double half, const glm::dvec3& local, double range, double dot,
-             const glm::vec4& c) {
+// A contact at `local` (the ship's frame) as a dot of side `size`, clamped to the radar's edge.
+RadarBlip blip(double cx, double cy, double half, const glm::dvec3& local, double range, double size,
+               RadarBlipKind kind, bool target) {
   double x = local.x / range, y = local.z / range;
   const double len = std::sqrt(x * x + y * y);
   if (len > 1.0) x /= len, y /= len;
-  const double px = cx + x * half, py = cy + y * half;
-  quad(h, px - dot * 0.5, py - dot * 0.5, dot, dot, c);
   // Above or below: a short tick shows the height, as in most space-sim radars.
-  const double up = std::clamp(local.y / range, -1.0, 1.0) * half * 0.5;
-  line(h, px, py, px, py - up, c, 1.0f);
+  const double rise = std::clamp(local.y / range, -1.0, 1.0) * half * 0.5;
+  return {{cx + x * half, cy + y * half}, size, rise, kind, target};
 }
 
 }  // namespace
@@ -60,6 +59,27 @@ double radar_range(const World& w, const Ship& me, const HudRules& rules) {
   return std::clamp(fitted, rules.radar_min_range, std::max(rules.radar_min_range, rules.radar_max_range));
 }
 
+std::vector<RadarBlip> radar_blips(const World& w, const Ship& me, const HudRules& rules, double canvas_w,
+                                   double canvas_h) {
+  const HudRect r = radar_rect(canvas_w, canvas_h);
+  const double cx = r.x + r.w * 0.5, cy = r.y + r.h * 0.5, half = r.w * 0.5;
+  const double range = radar_range(w, me, rules);
+  const glm::dquat inv = glm::conjugate(me.orientation);
+  // Blips grow with the radar, never below 4 canvas units: a lone pixel reads as a star.
+  const double dot = std::max(4.0, r.w * 0.035), target_dot = std::max(6.0, r.w * 0.06);
+  std::vector<RadarBlip> out;
+  for (const Ship& s : w.ships) {
+    if (!s.alive || s.id == me.id) continue;
+    const bool target = s.id == me.target;
+    out.push_back(blip(cx, cy, half, inv * (s.position - me.position), range, target ? target_dot : dot,
+                       w.hostile(me, s) ? RadarBlipKind::Hostile : RadarBlipKind::Friendly, target));
+  }
+  for (const Projectile& p : w.projectiles)
+    if (p.target == me.id && p.kind == SecondaryWeapon::Missile)
+      out.push_back(blip(cx, cy, half, inv * (p.position - me.position), range, dot * 0.75, RadarBlipKind::Missile, false));
+  return out;
+}
+
 void layout_radar(const World& w, const Ship& me, const HudRules& rules, double canvas_w, double canvas_h,
                   HudLayer& h) {
   const HudRect r = radar_rect(canvas_w, canvas_h);
@@ -79,17 +99,13 @@ void layout_radar(const World& w, const Ship& me, const HudRules& rules, double 
   const std::string label = range_label(range);
   quad(h, r.x + 2, r.y + 2, kGlyphAdvance * 0.9 * double(label.size()) + 5.0, 15.0, kHudBack);
   text(h, r.x + 4, r.y + 4, 0.9, kHudGreen, label);
-  const glm::dquat inv = glm::conjugate(me.orientation);
-  // Blips grow with the radar, never below 4 canvas units: a lone pixel reads as a star.
-  const double dot = std::max(4.0, r.w * 0.035), target_dot = std::max(6.0, r.w * 0.06);
-  for (const Ship& s : w.ships) {
-    if (!s.alive || s.id == me.id) continue;
-    contact(h, cx, cy, half, inv * (s.position - me.position), range, s.id == me.target ? target_dot : dot,
-            w.hostile(me, s) ? kHudRed : kHudBlue);
+  for (const RadarBlip& b : radar_blips(w, me, rules, canvas_w, canvas_h)) {
+    const glm::vec4 c = b.kind == RadarBlipKind::Hostile    ? kHudRed
+                        : b.kind == RadarBlipKind::Friendly ? kHudBlue
+                                                            : kHudWhite;
+    quad(h, b.at.x - b.size * 0.5, b.at.y - b.size * 0.5, b.size, b.size, c);
+    line(h, b.at.x, b.at.y, b.at.x, b.at.y - b.rise, c, 1.0f);
   }
-  for (const Projectile& p : w.projectiles)
-    if (p.target == me.id && p.kind == SecondaryWeapon::Missile)
-      contact(h, cx, cy, half, inv * (p.position - me.position), range, dot * 0.75, kHudWhite);
 }
 
 }  // namespace arc

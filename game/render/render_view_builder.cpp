@@ -8,6 +8,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "game/render/own_view.h"
+#include "game/render/screen_projection.h"
 #include "game/render/team_colors.h"
 #include "game/sim/world.h"
 
@@ -15,7 +16,6 @@ namespace arc {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-glm::dvec3 lerp_pos(const glm::dvec3& a, const glm::dvec3& b, double t) { return a + (b - a) * t; }
 
 // Ships as the mesh pass draws them at `alpha`; collect() places their attached clusters
 // (shield, exhausts, beams) in the same pose, so they sit on the mesh between ticks. Ships get
@@ -38,20 +38,11 @@ ModelId model_of(std::span<const ModelId> models, ModelSlot slot) {
 
 const std::vector<std::string>& required_models(const World& world) { return world.model_paths; }
 
-void build_render_view(const World& w, std::span<const ModelId> models, double alpha, const CameraSettings& cs, const HudState& hud, int width,
-                       int height, RenderView& out) {
+// Camera: the World's smoothed rig (deterministic), interpolated like everything else.
+CameraView frame_camera(const World& w, double alpha, const CameraSettings& cs) {
   alpha = std::clamp(alpha, 0.0, 1.0);
-  width = std::max(width, 1);
-  height = std::max(height, 1);
-  out.meshes.clear();
-  out.particles.clear();
-  out.starfield_seed = w.seed;
-  // Game time between the previous tick and this one (a paused game stands still).
-  out.time_seconds = (double(w.tick) - 1.0 + alpha) * w.dt;
-
-  // Camera: the World's smoothed rig (deterministic), interpolated like everything else.
   const CameraMode mode = cs.mode.value_or(w.camera_mode);
-  CameraView& cam = out.camera;
+  CameraView cam;
   cam.fov_y_radians = (cs.fov_deg > 0 ? cs.fov_deg : w.level.camera.fov_deg) * kPi / 180.0;
   if (mode == CameraMode::Fixed || !w.focus_ship()) {
     cam.position = w.level.camera.position;
@@ -63,6 +54,22 @@ void build_render_view(const World& w, std::span<const ModelId> models, double a
     cam.position = lerp_pos(w.prev_camera.position, w.camera.position, alpha);
     cam.orientation = glm::normalize(glm::slerp(w.prev_camera.orientation, w.camera.orientation, alpha));
   }
+  return cam;
+}
+
+void build_render_view(const World& w, std::span<const ModelId> models, double alpha, const CameraSettings& cs, const HudState& hud, int width,
+                       int height, RenderView& out) {
+  alpha = std::clamp(alpha, 0.0, 1.0);
+  width = std::max(width, 1);
+  height = std::max(height, 1);
+  out.meshes.clear();
+  out.particles.clear();
+  out.starfield_seed = w.seed;
+  // Game time between the previous tick and this one (a paused game stands still).
+  out.time_seconds = (double(w.tick) - 1.0 + alpha) * w.dt;
+
+  const CameraMode mode = cs.mode.value_or(w.camera_mode);
+  const CameraView& cam = out.camera = frame_camera(w, alpha, cs);
   const ShipId focus = w.focus_ship();
   const bool cockpit = mode == CameraMode::Cockpit;
 

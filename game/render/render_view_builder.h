@@ -36,6 +36,10 @@ class World;
 
 const std::vector<std::string>& required_models(const World& world);
 
+// The frame's camera at `alpha` between the previous tick and this one: the World's rig in its
+// mode, or the level's fixed camera (build_render_view() draws through it).
+CameraView frame_camera(const World& world, double alpha, const CameraSettings& camera);
+
 // `models`: the renderer's ModelId for each of World::model_paths, in order.
 void build_render_view(const World& world, std::span<const ModelId> models, double alpha, const CameraSettings& camera, const HudState& hud, int width,
                        int height, RenderView& out);

@@ -19,6 +19,7 @@
 #include "core/data_root.h"
 #include "game/app/all_settings.h"
 #include "game/app/script_feeder.h"
+#include "game/render/own_cover.h"
 #include "game/sim/camera_rig.h"
 #include "game/sim/geometry.h"
 #include "game/sim/world.h"
@@ -38,51 +39,14 @@ constexpr ChaseFraming kLowClose{.up_per_radius = 0.45,
                                  .lag_rate = 6.0,
                                  .max_lag_deg = 180.0};
 
-struct Box {
-  glm::dvec3 lo, hi;
-};
-
-Box model_box(const World& w, const Ship& s) {
+HullBox model_box(const World& w, const Ship& s) {
   const ModelData m = load_model(test::repo(w.model_paths[s.model.index()]));
   return {glm::dvec3(m.bounds_min), glm::dvec3(m.bounds_max)};
 }
 
-double cross2(glm::dvec2 o, glm::dvec2 a, glm::dvec2 b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }
-
-// The convex hull of points, counter-clockwise (monotone chain).
-std::vector<glm::dvec2> hull(std::vector<glm::dvec2> p) {
-  std::sort(p.begin(), p.end(), [](glm::dvec2 a, glm::dvec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-  std::vector<glm::dvec2> h(2 * p.size());
-  size_t k = 0;
-  for (size_t i = 0; i < p.size(); ++i) {
-    while (k >= 2 && cross2(h[k - 2], h[k - 1], p[i]) <= 0) --k;
-    h[k++] = p[i];
-  }
-  for (size_t i = p.size() - 1, t = k + 1; i > 0; --i) {
-    while (k >= t && cross2(h[k - 2], h[k - 1], p[i - 1]) <= 0) --k;
-    h[k++] = p[i - 1];
-  }
-  h.resize(k - 1);
-  return h;
-}
-
 // Whether `target` (a world point) is behind the ship's silhouette seen from `cam`.
-bool hidden_by_hull(const CameraRig& cam, const Ship& me, const Box& box, const glm::dvec3& target) {
-  const glm::dquat inv = glm::conjugate(cam.orientation);
-  const glm::dvec3 t = inv * (target - cam.position), c = inv * (me.position - cam.position);
-  if (t.z >= -1e-6 || glm::dot(t, t) <= glm::dot(c, c)) return false;  // behind the eye, or nearer than the ship
-  std::vector<glm::dvec2> corners;
-  for (int i = 0; i < 8; ++i) {
-    const glm::dvec3 local(i & 1 ? box.hi.x : box.lo.x, i & 2 ? box.hi.y : box.lo.y, i & 4 ? box.hi.z : box.lo.z);
-    const glm::dvec3 v = inv * (me.position + me.orientation * local - cam.position);
-    if (v.z >= -1e-6) return true;  // the eye inside the hull's box
-    corners.push_back({v.x / -v.z, v.y / -v.z});
-  }
-  const std::vector<glm::dvec2> h = hull(corners);
-  const glm::dvec2 p(t.x / -t.z, t.y / -t.z);
-  for (size_t i = 0; i < h.size(); ++i)
-    if (cross2(h[i], h[(i + 1) % h.size()], p) < 0) return false;
-  return true;
+bool hidden_by_hull(const CameraRig& cam, const Ship& me, const HullBox& box, const glm::dvec3& target) {
+  return covered_by_hull(cam.position, cam.orientation, me, box, target);
 }
 
 // The ship the player fights: its target, else the nearest live hostile (null: none).
@@ -113,7 +77,7 @@ void replay_and_count(const std::string& path, const std::vector<ChaseFraming>& 
   Game game = Game::load_level(resolve_script_level(script, root), script_game_options(script, settings, base));
   const World& w = game.world();
   if (!w.player) return;
-  const Box box = model_box(w, w.ship(w.player));
+  const HullBox box = model_box(w, w.ship(w.player));
   std::vector<CameraRig> rigs(framings.size());
   for (CameraRig& r : rigs) r.orientation = w.ship(w.player).orientation;
   ScriptFeeder feed(script);
@@ -192,7 +156,7 @@ TEST(ChaseFraming, TheHullSitsBelowTheCrosshairsLine) {
   Game g = Game::load_level(test::repo("levels/duel.json"), test::options());
   const World& w = g.world();
   const Ship& me = w.ship(w.player);
-  const Box box = model_box(w, me);
+  const HullBox box = model_box(w, me);
   CameraRig rig;
   rig.orientation = me.orientation;
   for (int i = 0; i < 120; ++i) rig = chase_rig(rig, me, w.dt);

@@ -5,7 +5,8 @@
 // game/render/hud_layout.cpp projects them at 1280×720), acts on what it saw 200 ms ago, aims
 // with a wandering hand, and steers through the player's own input path: quantised InputFrame
 // axes and key commands. fly_duel() plays levels/duel.json against the AI; the game tests check
-// its win rates with wide bounds and `arcfire-bench --scene test_pilot` prints them.
+// its win rates with wide bounds, and it flies the bench's recorded dogfight (combat_view). The
+// human-like pilot of human_pilot.h sees less: only the cues as drawn, never exact numbers.
 //
 //   DuelResult r = fly_duel(arc::data_root(), /*difficulty=*/1, /*seed=*/7, PilotKind::Person);
 #pragma once

@@ -1,8 +1,8 @@
 // The test pilot (test_pilot.h) in the duel: a person who sees only the HUD wins most fights on
 // easy, about half on normal and some on hard, and a pilot who does nothing loses on
 // every difficulty. The win-rate bounds are wider than the targets (easy >= 90 %, normal
-// 50–80 %, hard 15–45 %; the median win on normal under 90 s) that `arcfire-bench --scene
-// test_pilot` reports, so a small tuning change does not flip the test; the table per seed is
+// 50–80 %, hard 15–45 %; the median win on normal under 90 s), so a small tuning change does not
+// flip the test; the table per seed is
 //
 //   ./build/test_game --gtest_also_run_disabled_tests --gtest_filter='TestPilot.DISABLED_Report'
 #include <algorithm>
