@@ -94,7 +94,8 @@ int write_all(int fd, const void* data, size_t size) {
 }
 
 FileWriter::FileWriter(const std::string& path) : path_(path), tmp_(temporary_name(path)) {
-  if (fs::is_directory(path)) throw WriteError(path + ": cannot write: it is a folder", kExitBadInput);
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) throw WriteError(path + ": cannot write: it is a folder", kExitBadInput);
   fd_ = ::open(tmp_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
   if (fd_ < 0) {
     const int err = errno;
@@ -155,9 +156,10 @@ void write_file_atomic(const std::string& path, const std::string& text, const s
 void check_output_file(const std::string& path, const std::string& option) {
   const std::string what = option.empty() ? path : option + " " + path;
   if (path.empty()) throw WriteError(option + ": needs a file name", kExitBadInput);
-  if (fs::is_directory(path)) throw WriteError(what + ": is a folder, not a file", kExitBadInput);
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) throw WriteError(what + ": is a folder, not a file", kExitBadInput);
   const std::string folder = folder_of(path);
-  if (!fs::is_directory(folder)) throw WriteError(what + ": folder " + folder + " does not exist", kExitBadInput);
+  if (!fs::is_directory(folder, ec)) throw WriteError(what + ": folder " + folder + " does not exist", kExitBadInput);
   if (const int err = probe_create(temporary_name(path)))
     throw WriteError(what + ": cannot write: " + system_reason(err), kExitBadInput);
 }
@@ -166,7 +168,7 @@ void check_output_dir(const std::string& dir, const std::string& option) {
   const std::string what = option.empty() ? dir : option + " " + dir;
   std::error_code ec;
   fs::create_directories(dir, ec);
-  if (ec || !fs::is_directory(dir))
+  if (ec || !fs::is_directory(dir, ec))
     throw WriteError(what + ": cannot create folder (" + (ec ? ec.message() : std::string("a file is in the way")) +
                          ")",
                      kExitBadInput);

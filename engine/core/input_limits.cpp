@@ -122,25 +122,25 @@ class JsonScanner {
   std::vector<Frame> stack_;
 };
 
-std::string size_text(size_t bytes) {
+}  // namespace
+
+std::string byte_size_text(size_t bytes) {
   if (bytes >= (size_t(1) << 20) && bytes % (size_t(1) << 20) == 0) return std::to_string(bytes >> 20) + " MiB";
   if (bytes >= (size_t(1) << 10) && bytes % (size_t(1) << 10) == 0) return std::to_string(bytes >> 10) + " KiB";
   return std::to_string(bytes) + " bytes";
 }
-
-}  // namespace
 
 void check_file_size(const std::string& path, size_t max_bytes, const std::string& what) {
   struct stat st {};
   if (::stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return;
   if (uint64_t(st.st_size) > max_bytes)
     throw InputError(path + ": file is " + std::to_string(uint64_t(st.st_size)) + " bytes; " + what + " may be at most " +
-                     size_text(max_bytes));
+                     byte_size_text(max_bytes));
 }
 
 void check_text_size(size_t size, const std::string& path, size_t max_bytes, const std::string& what) {
   if (size > max_bytes)
-    throw InputError(path + ": " + std::to_string(size) + " bytes; " + what + " may be at most " + size_text(max_bytes));
+    throw InputError(path + ": " + std::to_string(size) + " bytes; " + what + " may be at most " + byte_size_text(max_bytes));
 }
 
 void check_json_text(const char* text, size_t size, const std::string& path, const JsonLimits& limits) {

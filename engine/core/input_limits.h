@@ -37,6 +37,11 @@ constexpr size_t kMaxModelImageBytes = size_t(128) << 20;
 constexpr size_t kMaxScriptFileBytes = size_t(16) << 20;
 constexpr size_t kMaxScriptLines = 1000000;
 constexpr size_t kMaxScriptLineBytes = 4096;
+// The last tick a script may name, absolute or as the sum of its +N lines: 1e9 ticks is over
+// six months of play at 60 Hz, and keeps every tick count far from overflow.
+constexpr uint64_t kMaxScriptTick = 1000000000;
+// GLSL sources of the shader folder: the largest is a few KiB.
+constexpr size_t kMaxShaderFileBytes = size_t(1) << 20;
 // Binary world snapshots.
 constexpr size_t kMaxSnapshotBytes = size_t(256) << 20;
 
@@ -66,6 +71,8 @@ constexpr JsonLimits kDataJsonLimits{kMaxDataFileBytes, 16, 4096, 256, 65536,
 // accessor, material...), so their number is what bounds its memory.
 constexpr JsonLimits kModelJsonLimits{kMaxModelFileBytes, 64, kMaxModelFileBytes, SIZE_MAX, 65536, "a glTF model"};
 
+// "256 KiB", "16 MiB" or "1000 bytes": a limit as the messages and READMEs state it.
+std::string byte_size_text(size_t bytes);
 // Throws InputError "path: file is N bytes; WHAT may be at most M bytes" when the file is larger
 // than `max_bytes`; a missing file passes (the reader reports it).
 void check_file_size(const std::string& path, size_t max_bytes, const std::string& what);

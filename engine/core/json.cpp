@@ -4,10 +4,10 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 
 #include "core/error.h"
+#include "core/input_file.h"
 #include "core/input_limits.h"
 
 namespace arc {
@@ -170,18 +170,12 @@ struct JsonPositionRecorder : nlohmann::json_sax<nlohmann::json> {
   }
 };
 
-std::string read_text_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open file (missing or unreadable)");
-  std::ostringstream s;
-  s << in.rdbuf();
-  if (in.bad()) throw InputError(path + ": read error");
-  return s.str();
+std::string read_text_file(const std::string& path, size_t max_bytes, const std::string& kind) {
+  return read_input_file(path, max_bytes, kind);
 }
 
 std::shared_ptr<const JsonDoc> JsonDoc::load_file(const std::string& path) {
-  check_file_size(path, kDataJsonLimits.max_bytes, kDataJsonLimits.kind);
-  return parse(read_text_file(path), path);
+  return parse(read_input_file(path, kDataJsonLimits.max_bytes, kDataJsonLimits.kind), path);
 }
 
 std::shared_ptr<const JsonDoc> JsonDoc::parse(const std::string& text, const std::string& path) {

@@ -27,6 +27,8 @@
 #include <glm/vec4.hpp>
 #include <nlohmann/json.hpp>
 
+#include "core/input_limits.h"
+
 namespace arc {
 
 struct TextPos { int line = 1; int col = 1; };
@@ -138,6 +140,8 @@ std::string json_pointer_escape(const std::string& key);
 // "a, b or c" for messages.
 std::string join_allowed(const std::vector<std::string>& names);
 
-std::string read_text_file(const std::string& path);  // throws InputError "path: cannot read file"
+// A text file through core/input_file.h: a regular file of at most `max_bytes`, else InputError.
+std::string read_text_file(const std::string& path, size_t max_bytes = kMaxDataFileBytes,
+                           const std::string& kind = "a data file");
 
 }  // namespace arc

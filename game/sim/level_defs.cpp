@@ -6,6 +6,7 @@
 
 #include "core/data_layers.h"
 #include "core/error.h"
+#include "core/input_file.h"
 #include "game/sim/def_parsing.h"
 #include "game/sim/defs.h"
 #include "particles/effect_def.h"
@@ -56,7 +57,7 @@ void load_class_of(LevelDef& L, const ShipSpawnDef& d, const JsonValue& cls, con
   if (d.ship_class.empty() || d.ship_class.find_first_of("/\\.") != std::string::npos)
     cls.fail("'class' must be a ship class name (a file stem in assets/ships/), got \"" + d.ship_class + "\"");
   std::string file = data_file(root_dir, "assets/ships/" + d.ship_class + ".json");  // a mod's class first
-  if (!std::filesystem::exists(file))
+  if (!input_path_exists(file))
     cls.fail("ship class '" + d.ship_class + "' not found: no file " + file);
   L.classes.emplace(d.ship_class, std::make_shared<const ShipClassDef>(load_ship_class(file, d.ship_class)));
 }
