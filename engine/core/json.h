@@ -54,8 +54,8 @@ class JsonDoc {
  private:
   std::string path_;
   nlohmann::json root_;
-  std::map<std::string, TextPos> value_pos_;
-  std::map<std::string, TextPos> key_pos_;
+  TextPos pos_at(size_t offset) const;
+  std::vector<size_t> line_starts_;  // byte offset of each line's start, for positions
   std::map<std::string, TextSpan> value_span_;
   std::map<std::string, TextSpan> key_span_;
   friend struct JsonPositionRecorder;

@@ -18,9 +18,10 @@ namespace arc::defs_internal {
 constexpr double kHuge = 1.0e6;
 constexpr double kSpace = 1.0e12;  // positions: world space is big but bounded (doubles stay exact to 0.1 mm)
 
-inline std::vector<glm::dvec3> points(JsonObject& o, const std::string& key, double limit) {
+inline std::vector<glm::dvec3> points(JsonObject& o, const std::string& key, double limit,
+                                      size_t max_count = kMaxShipPoints) {
   std::vector<glm::dvec3> out;
-  o.check_list_length(key, kMaxShipPoints);
+  o.check_list_length(key, max_count);
   auto v = o.get(key);
   if (!v) return out;
   for (const JsonValue& p : v->array()) out.push_back(p.vec3(-limit, limit));

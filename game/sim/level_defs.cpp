@@ -1,6 +1,7 @@
 // game/sim/level_defs.cpp — levels from levels/*.json: rules, ships (loading their classes),
 // props, effect spawns, camera and team colours; the mission block is mission_defs.cpp's.
 #include <filesystem>
+#include <set>
 
 #include <glm/geometric.hpp>
 
@@ -64,6 +65,7 @@ void load_class_of(LevelDef& L, const ShipSpawnDef& d, const JsonValue& cls, con
 
 void parse_ships(JsonObject& r, LevelDef& L, const std::string& root_dir) {
   bool have_player = false;
+  std::set<std::string> names;  // a set, so a generated fleet of thousands loads in linear-log time
   r.check_list_length("ships", kMaxLevelShips);
   for (JsonObject s : r.objects("ships")) {
     ShipSpawnDef d;
@@ -82,8 +84,7 @@ void parse_ships(JsonObject& r, LevelDef& L, const std::string& root_dir) {
     d.orientation_deg = orientation(s);
     d.velocity = s.vec3("velocity", glm::dvec3(0.0), -1.0e5, 1.0e5);
     s.finish();
-    for (const ShipSpawnDef& other : L.ships)
-      if (other.name == d.name) s.fail_key("name", "ship name '" + d.name + "' is used twice");
+    if (!names.insert(d.name).second) s.fail_key("name", "ship name '" + d.name + "' is used twice");
     load_class_of(L, d, cls, root_dir);
     L.ships.push_back(std::move(d));
   }
