@@ -184,6 +184,15 @@ TEST(InputLimits, TheRecorderOfTheWorstAllowedShapesStaysSmall) {
   }
 }
 
+TEST(InputLimits, RelativeTicksPastTheLastTickAreRefusedAtTheirLine) {
+  const arc::Settings known = arc::all_settings();
+  std::string text = "arcfire-replay 1\nlevel levels/duel.json\n";
+  for (int i = 0; i < 11; ++i) text += "+100000000 axis pitch 0.5\n";
+  const std::string e = error_of([&] { arc::replay::parse_script(text, "far.replay", known); });
+  EXPECT_EQ(e, "far.replay:13:1: relative tick +100000000 after tick 1000000000 reaches tick 1100000000; "
+               "allowed: ticks up to 1000000000") << e;
+}
+
 TEST(InputLimits, ScriptParsingCostIsLinearInTheInput) {
   const arc::Settings known = arc::all_settings();
   auto make = [](size_t n) {
