@@ -5,8 +5,6 @@
 #include <fcntl.h>
 #include <unistd.h>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <memory>
 #include <string>
 #include "assets/image_codec.h"
@@ -14,6 +12,7 @@
 #include "assets/image.h"
 #include "core/error.h"
 #include "core/file_writer.h"
+#include "core/input_file.h"
 #include "core/input_limits.h"
 
 namespace arc {
@@ -98,12 +97,8 @@ class QuietStderr {
 }  // namespace
 
 Image load_image(const std::string& path) {
-  if (!std::filesystem::is_regular_file(path)) throw InputError(path + ": cannot read file (missing or not a file)");
-  check_file_size(path, kMaxImageFileBytes, "an image");
   // Decoded from memory, exactly as the fuzz target feeds it (tests/fuzz/fuzz_sprite.cpp).
-  std::ifstream in(path, std::ios::binary);
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (!in && !in.eof()) throw InputError(path + ": cannot read file");
+  const std::string bytes = read_input_file(path, kMaxImageFileBytes, "an image");
   return decode_image_memory(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size(), path);
 }
 

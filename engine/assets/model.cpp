@@ -3,10 +3,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <set>
-#include <sys/stat.h>
 #include <string>
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -19,6 +16,7 @@
 #include "assets/image_decode.h"
 #include "assets/model.h"
 #include "core/error.h"
+#include "core/input_file.h"
 #include "core/input_limits.h"
 
 namespace arc {
@@ -26,14 +24,6 @@ namespace {
 
 // Deeper node chains than this are a malformed (or hostile) file, not a real model.
 constexpr int kMaxNodeDepth = 256;
-
-std::string read_bytes(const std::string& path) {
-  if (!std::filesystem::is_regular_file(path)) throw InputError(path + ": cannot read file (missing or not a file)");
-  check_file_size(path, kMaxModelFileBytes, "a glTF model");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot read file");
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
 
 uint32_t read_u32(const std::string& bytes, size_t at) {
   uint32_t v = 0;
@@ -102,21 +92,24 @@ bool decode_gltf_image(tinygltf::Image* image, const int index, std::string* err
   }
 }
 
-// External buffers and images: regular files only, each no larger than a model may be. The
-// default reader would follow a URI to a device or a huge file and read it whole.
-bool read_external_file(std::vector<unsigned char>* out, std::string* err, const std::string& file, void*) {
-  struct stat st {};
-  if (::stat(file.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) {
-    if (err) *err += "external file '" + file + "' is missing or not a regular file";
+// External buffers and images go through core/input_file.h like every input: a URI naming a
+// FIFO, a device, a loop or a huge file is refused with what it is. Names are taken as written
+// (no ~ or $VAR expansion), and "exists" means "names something", so the reader says what.
+bool external_file_exists(const std::string& file, void*) { return input_path_exists(file); }
+std::string external_file_path(const std::string& file, void*) { return file; }
+// tinygltf takes an image it cannot read for a warning; the first refusal is kept here so the
+// model is refused with it, buffer or image.
+bool read_external_file(std::vector<unsigned char>* out, std::string* err, const std::string& file, void* user) {
+  try {
+    const std::string bytes = read_input_file(file, kMaxModelFileBytes, "an external glTF buffer or image");
+    out->assign(bytes.begin(), bytes.end());
+    return true;
+  } catch (const InputError& e) {
+    std::string& refused = *static_cast<std::string*>(user);
+    if (refused.empty()) refused = std::string("external file ") + e.what();
+    if (err) *err += std::string("external file ") + e.what();
     return false;
   }
-  if (uint64_t(st.st_size) > kMaxModelFileBytes) {
-    if (err) *err += "external file '" + file + "' is larger than " + std::to_string(kMaxModelFileBytes >> 20) + " MiB";
-    return false;
-  }
-  std::ifstream in(file, std::ios::binary);
-  out->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  return true;
 }
 
 size_t component_size(int type) {
@@ -518,7 +511,9 @@ class GltfReader {
 
 }  // namespace
 
-ModelData load_model(const std::string& path) { return parse_model(read_bytes(path), path); }
+ModelData load_model(const std::string& path) {
+  return parse_model(read_input_file(path, kMaxModelFileBytes, "a glTF model"), path);
+}
 
 ModelData parse_model(const std::string& bytes, const std::string& path) {
   check_text_size(bytes.size(), path, kMaxModelFileBytes, "a glTF model");
@@ -536,7 +531,8 @@ ModelData parse_model(const std::string& bytes, const std::string& path) {
   tinygltf::TinyGLTF loader;
   ImageBudget budget{path, 0, {}};
   loader.SetImageLoader(&decode_gltf_image, &budget);
-  tinygltf::FsCallbacks fs{&tinygltf::FileExists, &tinygltf::ExpandFilePath, &read_external_file, &tinygltf::WriteWholeFile, nullptr};
+  std::string refused;
+  tinygltf::FsCallbacks fs{&external_file_exists, &external_file_path, &read_external_file, &tinygltf::WriteWholeFile, &refused};
   loader.SetFsCallbacks(fs);
   tinygltf::Model gltf;
   std::string err, warn;
@@ -545,6 +541,7 @@ ModelData parse_model(const std::string& bytes, const std::string& path) {
                                                        unsigned(bytes.size()), base_dir)
                          : loader.LoadASCIIFromString(&gltf, &err, &warn, bytes.data(), unsigned(bytes.size()), base_dir);
   if (!budget.codec_error.empty()) throw ImageCodecUnavailable(budget.codec_error);
+  if (!refused.empty()) throw InputError(path + ": " + refused);
   if (!ok) {
     while (!err.empty() && (err.back() == '\n' || err.back() == '\r')) err.pop_back();
     for (char& c : err)

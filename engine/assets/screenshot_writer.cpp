@@ -21,7 +21,8 @@ std::string ScreenshotWriter::next_path() const {
     char name[32];
     std::snprintf(name, sizeof name, "_%04d.png", i);
     const std::string path = (std::filesystem::path(folder_) / (prefix_ + name)).string();
-    bool taken = std::filesystem::exists(path);
+    std::error_code ec;
+    bool taken = std::filesystem::exists(path, ec) || ec;  // a name that cannot be checked is not taken
     for (const Job& job : jobs_) taken = taken || job.path == path;
     if (!taken) return path;
   }

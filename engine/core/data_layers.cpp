@@ -2,12 +2,13 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <system_error>
 
 #include "core/error.h"
 #include "core/fast_hash.h"
+#include "core/input_file.h"
+#include "core/input_limits.h"
 
 namespace arc {
 namespace fs = std::filesystem;
@@ -53,11 +54,10 @@ uint64_t content_hash(const fs::path& dir) {
   std::vector<char> buf(1 << 16);
   for (const std::string& rel : relative_files(dir)) {
     h.add_str(rel);
-    std::ifstream in(dir / rel, std::ios::binary);
-    if (!in) throw InputError((dir / rel).string() + ": cannot read the mod's file");
+    // Read in pieces: no mod file is larger than a model, the largest input the game reads.
+    InputFile in((dir / rel).string(), kMaxModelFileBytes, "a file of a mod");
     uint64_t size = 0;
-    while (in.read(buf.data(), std::streamsize(buf.size())) || in.gcount() > 0) {
-      const size_t n = size_t(in.gcount());
+    while (const size_t n = in.read_some(buf.data(), buf.size())) {
       for (size_t i = 0; i < n; ++i) h.add_u64(uint8_t(buf[i]));
       size += n;
     }
@@ -75,7 +75,11 @@ DataLayers& layers_in_use() {
 
 void DataLayers::add_mod(const std::string& dir) {
   const fs::path p(dir);
-  if (!is_folder(p)) throw InputError("--mod " + dir + ": not a folder (a mod is a folder shaped like the data root)");
+  if (!is_folder(p)) {
+    const std::string what = input_path_exists(dir) ? input_path_problem(dir) : "not found";
+    throw InputError("--mod " + dir + ": " + (what.empty() ? "a file" : what) +
+                     "; allowed: a folder (a mod is a folder shaped like the data root)");
+  }
   bool data = false;
   for (const char* sub : {"assets", "levels", "shaders"}) data = data || is_folder(p / sub);
   if (!data) throw InputError("--mod " + dir + ": holds none of assets/, levels/, shaders/ (a mod mirrors the data root)");
@@ -94,18 +98,18 @@ void DataLayers::add_mod(const std::string& dir) {
 std::string DataLayers::file(const std::string& rel) const {
   for (auto it = mods_.rbegin(); it != mods_.rend(); ++it) {
     const fs::path candidate = fs::path(it->dir) / rel;
-    if (is_file(candidate)) return candidate.string();
+    if (input_path_exists(candidate.string())) return candidate.string();  // its reader checks what it is
   }
   return (fs::path(base_) / rel).string();
 }
 
 std::vector<std::string> DataLayers::files(const std::string& rel_dir, const std::string& ext) const {
   std::map<std::string, std::string> by_name;  // later layers overwrite: the topmost wins
-  for (const std::string& dir : dirs(rel_dir)) {
-    std::error_code ec;
-    for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
-      if (it->path().extension() == ext && is_file(it->path())) by_name[it->path().filename().string()] = it->path().string();
-  }
+  // Every entry named like the files wanted is listed, so a FIFO or a loop named like one is
+  // refused by its reader rather than skipped without a word.
+  for (const std::string& dir : dirs(rel_dir))
+    for (const std::string& path : list_input_folder(dir, ext, "data files", false, kMaxModFiles))
+      by_name[fs::path(path).filename().string()] = path;
   std::vector<std::string> out;
   for (auto& [name, path] : by_name) out.push_back(path);
   return out;
@@ -113,9 +117,14 @@ std::vector<std::string> DataLayers::files(const std::string& rel_dir, const std
 
 std::vector<std::string> DataLayers::dirs(const std::string& rel_dir) const {
   std::vector<std::string> out;
-  if (is_folder(fs::path(base_) / rel_dir)) out.push_back((fs::path(base_) / rel_dir).string());
-  for (const ModLayer& m : mods_)
-    if (is_folder(fs::path(m.dir) / rel_dir)) out.push_back((fs::path(m.dir) / rel_dir).string());
+  // A layer may lack the folder; one that has something else there (a loop, a file) is refused.
+  auto add = [&](const fs::path& dir) {
+    if (!input_path_exists(dir.string())) return;
+    check_input_folder(dir.string(), "data files");
+    out.push_back(dir.string());
+  };
+  add(fs::path(base_) / rel_dir);
+  for (const ModLayer& m : mods_) add(fs::path(m.dir) / rel_dir);
   return out;
 }
 

@@ -3,12 +3,12 @@
 
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <mutex>
 #include <optional>
 #include <system_error>
 
 #include "core/error.h"
+#include "core/input_file.h"
 
 namespace arc {
 namespace {
@@ -26,20 +26,26 @@ fs::path normalised(const fs::path& p) {
 // `label` names the folder and its source in the message, e.g. "--data /x".
 DataRoot checked(const fs::path& dir, const std::string& source, const std::string& label) {
   std::error_code ec;
-  if (!fs::is_directory(dir, ec)) throw InputError(label + ": no such folder");
+  if (!fs::is_directory(dir, ec)) {
+    if (!input_path_exists(dir.string())) throw InputError(label + ": no such folder");
+    const std::string what = input_path_problem(dir.string());
+    throw InputError(label + ": " + (what.empty() ? "a file" : what) + "; allowed: a folder");
+  }
   std::string missing;
-  for (const char* sub : {"levels", "assets", "shaders"})
-    if (!fs::is_directory(dir / sub, ec)) missing += std::string(missing.empty() ? "" : ", ") + sub + "/";
+  for (const char* sub : {"levels", "assets", "shaders"}) {
+    if (fs::is_directory(dir / sub, ec)) continue;
+    const std::string what = input_path_exists((dir / sub).string()) ? input_path_problem((dir / sub).string()) : "";
+    missing += std::string(missing.empty() ? "" : ", ") + sub + "/" + (what.empty() ? "" : " (" + what + ")");
+  }
   if (!missing.empty())
     throw InputError(label + ": not a data folder (it needs levels/, assets/ and shaders/; missing " + missing + ")");
   return {normalised(dir).string(), source};
 }
 
 std::optional<std::string> first_line(const fs::path& file) {
-  std::ifstream in(file);
-  if (!in) return std::nullopt;
-  std::string line;
-  std::getline(in, line);
+  const std::optional<std::string> text = read_optional_input_file(file.string(), 64 << 10, "the data root marker");
+  if (!text) return std::nullopt;
+  std::string line = text->substr(0, text->find('\n'));
   while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
   return line;
 }

@@ -185,7 +185,7 @@ void check_output_dir(const std::string& dir, const std::string& option) {
   const std::string what = option.empty() ? dir : option + " " + dir;
   std::error_code ec;
   fs::create_directories(dir, ec);
-  if (ec || !fs::is_directory(dir))
+  if (ec || !fs::is_directory(dir, ec))
     throw WriteError(what + ": cannot create folder (" + (ec ? ec.message() : std::string("a file is in the way")) +
                          ")",
                      kExitBadInput);

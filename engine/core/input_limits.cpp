@@ -61,10 +61,15 @@ class JsonScanner {
     return f.pointer_bytes + 1 + (f.is_array ? digits(f.index) : f.key_bytes);
   }
 
-  void check_pointer(size_t bytes, size_t at) const {
+  void check_pointer(size_t bytes, size_t at) {
     if (bytes > lim_.max_pointer_bytes)
       fail(at, "the path to this value (keys and indices from the top, like /ships/3/position) is longer than " +
                    std::to_string(lim_.max_pointer_bytes) + " characters, the limit for " + lim_.kind);
+    // The position recorder keeps every value's path: their sum bounds its memory.
+    pointer_total_ += bytes;
+    if (pointer_total_ > lim_.max_pointer_total_bytes)
+      fail(at, "the paths to all values (keys and indices from the top) add up to more than " +
+                   std::to_string(lim_.max_pointer_total_bytes >> 20) + " MiB, the limit for " + lim_.kind);
   }
 
   void structural(char c) {
@@ -74,6 +79,7 @@ class JsonScanner {
                      lim_.kind + " may nest at most " + std::to_string(lim_.max_depth));
       const size_t bytes = child_pointer_bytes();
       check_pointer(bytes, i_);
+      count_value();
       if (c == '{' && ++objects_ > lim_.max_objects)
         fail(i_, "more than " + std::to_string(lim_.max_objects) + " objects; " + lim_.kind + " may hold at most " +
                      std::to_string(lim_.max_objects));
@@ -81,10 +87,17 @@ class JsonScanner {
     } else if ((c == '}' || c == ']') && !stack_.empty()) {
       stack_.pop_back();
     } else if (c == ',' && !stack_.empty()) {
+      count_value();
       Frame& f = stack_.back();
-      if (f.is_array) ++f.index;
+      if (f.is_array) check_pointer(f.pointer_bytes + 1 + digits(++f.index), i_);
       else f.expect_key = true;
     }
+  }
+
+  void count_value() {
+    if (++values_ > lim_.max_values)
+      fail(i_, "more than " + std::to_string(lim_.max_values) + " values; " + lim_.kind + " may hold at most " +
+                   std::to_string(lim_.max_values) + " (arrays, objects and their elements)");
   }
 
   void string() {
@@ -119,28 +132,30 @@ class JsonScanner {
   const JsonLimits& lim_;
   size_t i_ = 0;
   size_t objects_ = 0;
+  size_t values_ = 0;
+  size_t pointer_total_ = 0;
   std::vector<Frame> stack_;
 };
 
-std::string size_text(size_t bytes) {
+}  // namespace
+
+std::string byte_size_text(size_t bytes) {
   if (bytes >= (size_t(1) << 20) && bytes % (size_t(1) << 20) == 0) return std::to_string(bytes >> 20) + " MiB";
   if (bytes >= (size_t(1) << 10) && bytes % (size_t(1) << 10) == 0) return std::to_string(bytes >> 10) + " KiB";
   return std::to_string(bytes) + " bytes";
 }
-
-}  // namespace
 
 void check_file_size(const std::string& path, size_t max_bytes, const std::string& what) {
   struct stat st {};
   if (::stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return;
   if (uint64_t(st.st_size) > max_bytes)
     throw InputError(path + ": file is " + std::to_string(uint64_t(st.st_size)) + " bytes; " + what + " may be at most " +
-                     size_text(max_bytes));
+                     byte_size_text(max_bytes));
 }
 
 void check_text_size(size_t size, const std::string& path, size_t max_bytes, const std::string& what) {
   if (size > max_bytes)
-    throw InputError(path + ": " + std::to_string(size) + " bytes; " + what + " may be at most " + size_text(max_bytes));
+    throw InputError(path + ": " + std::to_string(size) + " bytes; " + what + " may be at most " + byte_size_text(max_bytes));
 }
 
 void check_json_text(const char* text, size_t size, const std::string& path, const JsonLimits& limits) {

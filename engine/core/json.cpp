@@ -4,10 +4,10 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 
 #include "core/error.h"
+#include "core/input_file.h"
 #include "core/input_limits.h"
 
 namespace arc {
@@ -28,18 +28,18 @@ std::string fmt_num(double v) {
 class LineIndex {
  public:
   explicit LineIndex(const std::string& text) {
-    starts_.push_back(0);
+    starts.push_back(0);
     for (size_t i = 0; i < text.size(); ++i)
-      if (text[i] == '\n') starts_.push_back(i + 1);
+      if (text[i] == '\n') starts.push_back(i + 1);
   }
-  TextPos at(size_t offset) const {
-    auto it = std::upper_bound(starts_.begin(), starts_.end(), offset);
-    size_t line = size_t(it - starts_.begin());
-    return {int(line), int(offset - starts_[line - 1] + 1)};
+  static TextPos at(const std::vector<size_t>& starts, size_t offset) {
+    auto it = std::upper_bound(starts.begin(), starts.end(), offset);
+    size_t line = size_t(it - starts.begin());
+    return {int(line), int(offset - starts[line - 1] + 1)};
   }
+  TextPos at(size_t offset) const { return at(starts, offset); }
 
- private:
-  std::vector<size_t> starts_;
+  std::vector<size_t> starts;
 };
 
 // An input iterator that publishes how far the parser has read.
@@ -115,9 +115,9 @@ struct JsonPositionRecorder : nlohmann::json_sax<nlohmann::json> {
   }
   bool value() {
     size_t s = token_start();
-    const std::string p = child_ptr();
-    doc->value_pos_[p] = lines->at(s);
-    doc->value_span_[p] = {s, scalar_end(s)};
+    // One entry per value, its position found from the span when asked: the recorder's memory
+    // is one map node and one pointer string a value (bounded by core/input_limits.h).
+    doc->value_span_.insert_or_assign(child_ptr(), TextSpan{s, scalar_end(s)});
     end_token();
     return true;
   }
@@ -131,7 +131,6 @@ struct JsonPositionRecorder : nlohmann::json_sax<nlohmann::json> {
   bool open(bool is_array) {
     size_t s = token_start();
     std::string p = child_ptr();
-    doc->value_pos_[p] = lines->at(s);
     doc->value_span_[p] = {s, s};
     end_token();
     stack.push_back({is_array, p, "", 0});
@@ -153,14 +152,13 @@ struct JsonPositionRecorder : nlohmann::json_sax<nlohmann::json> {
     const std::string p = stack.back().ptr + "/" + json_pointer_escape(k);
     // A pasted block edited in its copy must not be dropped without a word: nlohmann keeps
     // only one of two equal keys, so the second is an error naming both places.
-    if (const auto first = doc->key_pos_.find(p); first != doc->key_pos_.end()) {
-      const TextPos at = lines->at(s);
+    if (const auto first = doc->key_span_.find(p); first != doc->key_span_.end()) {
+      const TextPos at = lines->at(s), was = lines->at(first->second.begin);
       duplicate = std::to_string(at.line) + ":" + std::to_string(at.col) + ": key '" + k +
-                  "' appears twice in this object (first at " + std::to_string(first->second.line) + ":" +
-                  std::to_string(first->second.col) + "); allowed: each key once";
+                  "' appears twice in this object (first at " + std::to_string(was.line) + ":" +
+                  std::to_string(was.col) + "); allowed: each key once";
       return false;
     }
-    doc->key_pos_[p] = lines->at(s);
     end_token();
     doc->key_span_[p] = {s, last_end};
     return true;
@@ -170,18 +168,12 @@ struct JsonPositionRecorder : nlohmann::json_sax<nlohmann::json> {
   }
 };
 
-std::string read_text_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open file (missing or unreadable)");
-  std::ostringstream s;
-  s << in.rdbuf();
-  if (in.bad()) throw InputError(path + ": read error");
-  return s.str();
+std::string read_text_file(const std::string& path, size_t max_bytes, const std::string& kind) {
+  return read_input_file(path, max_bytes, kind);
 }
 
 std::shared_ptr<const JsonDoc> JsonDoc::load_file(const std::string& path) {
-  check_file_size(path, kDataJsonLimits.max_bytes, kDataJsonLimits.kind);
-  return parse(read_text_file(path), path);
+  return parse(read_input_file(path, kDataJsonLimits.max_bytes, kDataJsonLimits.kind), path);
 }
 
 std::shared_ptr<const JsonDoc> JsonDoc::parse(const std::string& text, const std::string& path) {
@@ -226,6 +218,7 @@ std::shared_ptr<const JsonDoc> JsonDoc::parse(const std::string& text, const std
   TrackingIterator last{text.data() + text.size(), nullptr};
   nlohmann::json::sax_parse(first, last, &rec, nlohmann::json::input_format_t::json, true, true);
   if (!rec.duplicate.empty()) throw InputError(path + ":" + rec.duplicate);
+  doc->line_starts_ = std::move(lines.starts);
   return doc;
 }
 
@@ -247,15 +240,20 @@ bool JsonDoc::key_span(const std::string& pointer, TextSpan& out) const {
   return true;
 }
 
+TextPos JsonDoc::pos_at(size_t offset) const {
+  if (line_starts_.empty()) return TextPos{};
+  return LineIndex::at(line_starts_, offset);
+}
+
 std::string JsonDoc::where(const std::string& pointer) const {
-  auto k = key_pos_.find(pointer);
-  if (k != key_pos_.end()) return pos_str(path_, k->second);
+  auto k = key_span_.find(pointer);
+  if (k != key_span_.end()) return pos_str(path_, pos_at(k->second.begin));
   return where_value(pointer);
 }
 
 std::string JsonDoc::where_value(const std::string& pointer) const {
-  auto v = value_pos_.find(pointer);
-  if (v != value_pos_.end()) return pos_str(path_, v->second);
+  auto v = value_span_.find(pointer);
+  if (v != value_span_.end()) return pos_str(path_, pos_at(v->second.begin));
   return pos_str(path_, TextPos{});
 }
 

@@ -27,6 +27,8 @@
 #include <glm/vec4.hpp>
 #include <nlohmann/json.hpp>
 
+#include "core/input_limits.h"
+
 namespace arc {
 
 struct TextPos { int line = 1; int col = 1; };
@@ -52,8 +54,8 @@ class JsonDoc {
  private:
   std::string path_;
   nlohmann::json root_;
-  std::map<std::string, TextPos> value_pos_;
-  std::map<std::string, TextPos> key_pos_;
+  TextPos pos_at(size_t offset) const;
+  std::vector<size_t> line_starts_;  // byte offset of each line's start, for positions
   std::map<std::string, TextSpan> value_span_;
   std::map<std::string, TextSpan> key_span_;
   friend struct JsonPositionRecorder;
@@ -143,6 +145,8 @@ std::string json_key_path(const nlohmann::json& root, const std::string& pointer
 // "a, b or c" for messages.
 std::string join_allowed(const std::vector<std::string>& names);
 
-std::string read_text_file(const std::string& path);  // throws InputError "path: cannot read file"
+// A text file through core/input_file.h: a regular file of at most `max_bytes`, else InputError.
+std::string read_text_file(const std::string& path, size_t max_bytes = kMaxDataFileBytes,
+                           const std::string& kind = "a data file");
 
 }  // namespace arc

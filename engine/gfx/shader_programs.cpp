@@ -2,24 +2,19 @@
 #include "gfx/shader_programs.h"
 
 #include <algorithm>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
 
 #include "core/data_layers.h"
+#include "core/input_file.h"
+#include "core/input_limits.h"
 #include "gfx/gl_features.h"
 
 namespace arc {
 namespace {
 
-std::string read_text(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  if (!f) throw std::runtime_error(path + ": cannot open shader");
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
+std::string read_text(const std::string& path) { return read_input_file(path, kMaxShaderFileBytes, "a shader"); }
 
 // The compiler's or linker's log of a shader or program that failed.
 std::string info_log(GLuint id, bool is_program) {

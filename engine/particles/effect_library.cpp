@@ -6,6 +6,7 @@
 
 #include "core/data_layers.h"
 #include "core/error.h"
+#include "core/input_file.h"
 #include "core/input_limits.h"
 #include "core/json.h"
 #include "particles/effect_schema.h"
@@ -319,9 +320,7 @@ std::shared_ptr<EffectDef> parse_effect(const std::shared_ptr<const JsonDoc>& do
 }  // namespace
 
 void EffectLibrary::load_directory(const std::string& dir) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (!fs::is_directory(dir, ec)) throw InputError(dir + ": effect folder not found");
+  check_input_folder(dir, "the effects");
   // With mods in use, their effects join the folder's and replace those of the same name.
   for (const std::string& f : data_files(dir, "", ".json")) load_file(f);
 }

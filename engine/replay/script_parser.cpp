@@ -428,9 +428,13 @@ uint64_t stamped_tick(LineParser& lp, const Token& first, uint64_t last_tick) {
   uint64_t tick = 0;
   if (first.text[0] == '+') {
     Token delta{first.text.substr(1), first.col + 1};
-    tick = last_tick + integer_in(lp, delta, "relative tick", 0, 100000000);
+    tick = last_tick + integer_in(lp, delta, "relative tick", 0, kMaxScriptTick);
+    // Summed over many lines, relative ticks could reach any count: the sum obeys the same limit.
+    if (tick > kMaxScriptTick)
+      lp.fail(first, "relative tick +" + delta.text + " after tick " + std::to_string(last_tick) + " reaches tick " +
+                         std::to_string(tick) + "; allowed: ticks up to " + std::to_string(kMaxScriptTick));
   } else {
-    tick = integer_in(lp, first, "tick", 0, 1000000000);
+    tick = integer_in(lp, first, "tick", 0, kMaxScriptTick);
   }
   if (tick < last_tick)
     lp.fail(first, "tick " + std::to_string(tick) + " is before the previous line's tick " +
@@ -506,8 +510,7 @@ Script parse_script(const std::string& text, const std::string& path, const Sett
 }
 
 Script load_script(const std::string& path, const Settings& known) {
-  check_file_size(path, kMaxScriptFileBytes, "a replay script");
-  return parse_script(read_text_file(path), path, known);
+  return parse_script(read_text_file(path, kMaxScriptFileBytes, "a replay script"), path, known);
 }
 
 }  // namespace arc::replay

@@ -14,6 +14,8 @@
 #include "core/data_root.h"
 #include "core/error.h"
 #include "core/file_writer.h"
+#include "core/input_file.h"
+#include "core/input_limits.h"
 #include "core/json.h"
 #include "game/app/effect_preview.h"
 #include "game/app/input_bindings.h"
@@ -59,9 +61,12 @@ std::string resolve_data_path(const std::string& path, const std::string& option
   // that replaces that file wins, as it does for every file the game finds itself.
   if (relative && !data_layers().mod_of(in_root).empty() && fs::equivalent(path, fs::path(root) / path, ec))
     return in_root;
-  if (fs::is_regular_file(path, ec)) return path;
-  if (relative && fs::is_regular_file(in_root, ec)) return in_root;
-  throw InputError(option + " " + path + ": no such file");
+  // What the name finds first is used, or refused with what it is (a folder, a FIFO, a loop...).
+  const std::string found = input_path_exists(path) ? path : relative && input_path_exists(in_root) ? in_root : "";
+  if (found.empty()) throw InputError(option + " " + path + ": no such file");
+  if (const std::string problem = input_path_problem(found); !problem.empty())
+    throw InputError(option + " " + found + ": " + problem + "; allowed: a regular file");
+  return found;
 }
 
 namespace {
@@ -94,10 +99,9 @@ void define_options(CLI::App& app, AppOptions& o, CommandLineText& t) {
   app.add_flag("--no-render", o.no_render, "headless: simulate only, create no GL context");
   app.add_option("--summary", o.summary_path, "headless: write the final world state as JSON to this file");
   app.add_option("--record", o.record_path, "record the live session to a replay script");
-  app.add_option("--replay", o.replay_path, "headless: replay a script and check its expectations")->check(CLI::ExistingFile);
+  app.add_option("--replay", o.replay_path, "headless: replay a script and check its expectations");
   app.add_option("--menu-script", o.menu_script,
-                 "headless: drive the menu with a script of UI inputs, a snapshot of each screen in --out")
-      ->check(CLI::ExistingFile);
+                 "headless: drive the menu with a script of UI inputs, a snapshot of each screen in --out");
   app.add_flag("--update-golden", o.update_golden, "replay: write snapshots as the new golden images");
   app.add_option("--serialization-test", o.serialization_test,
                  "save and reload the world every N ticks beside the original; fail at the first differing hash")
@@ -255,7 +259,9 @@ void resolve_options(const CLI::App& app, const CommandLineText& t, AppOptions& 
     return given ? resolve_data_path(path, option, root) : resolve_data_path(data_file(root, path), option, root);
   };
   o.level = resolve(o.level, "--level");
-  if (app.get_option("--bindings")->count() > 0 && !std::filesystem::exists(o.bindings_path)) {
+  if (!o.replay_path.empty()) check_input_path(o.replay_path, kMaxScriptFileBytes, "a replay script");
+  if (!o.menu_script.empty()) check_input_path(o.menu_script, kMaxScriptFileBytes, "a menu script");
+  if (app.get_option("--bindings")->count() > 0 && !input_path_exists(o.bindings_path)) {
     // A new bindings file starts as a copy of the defaults, written atomically.
     write_file_atomic(o.bindings_path, read_text_file(data_file(root, "assets/settings/bindings.json")));
     std::printf("arcfire: wrote default bindings to %s; edit it to remap keys\n", o.bindings_path.c_str());

@@ -17,10 +17,11 @@ std::vector<std::string> FileWatcher::poll() {
   for (const auto& [root, e] : roots_) {
     std::error_code ec;
     if (e.folder) {
-      for (const auto& f : fs::directory_iterator(root, ec)) {
-        if (!f.is_regular_file(ec)) continue;
-        now[f.path().string()] = f.last_write_time(ec);
-        groups[f.path().string()] = e.group;
+      // Stepped with an error code: a folder that turns unreadable or into a loop stops the scan.
+      for (fs::directory_iterator it(root, ec), end; !ec && it != end; it.increment(ec)) {
+        if (!it->is_regular_file(ec)) continue;
+        now[it->path().string()] = it->last_write_time(ec);
+        groups[it->path().string()] = e.group;
       }
     } else if (fs::exists(root, ec)) {
       now[root] = fs::last_write_time(root, ec);

@@ -139,7 +139,7 @@ std::string describe_page(const MenuPage& p) {
 }
 
 int run_menu_script(const AppOptions& o) {
-  const std::vector<UiInput> inputs = parse_ui_inputs(read_text_file(o.menu_script), o.menu_script);
+  const std::vector<UiInput> inputs = parse_ui_inputs(read_text_file(o.menu_script, kMaxScriptFileBytes, "a menu script"), o.menu_script);
   if (!o.out_dir.empty()) check_output_dir(o.out_dir, "--out");  // before any screen is driven
   MenuRun run{o, o.out_dir, make_menu(o), nullptr, nullptr};
   const std::string attract = data_file(o.game.root_dir, "levels/attract.json");

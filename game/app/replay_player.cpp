@@ -14,6 +14,7 @@
 
 #include "core/error.h"
 #include "core/file_writer.h"
+#include "core/input_file.h"
 #include "core/input_limits.h"
 #include "core/json.h"
 #include "game/app/all_settings.h"
@@ -165,7 +166,9 @@ ReplayPlayer::ReplayPlayer(const ReplayRunOptions& opt, replay::Script script)
   }
   out_dir_ = !opt.out_dir.empty() ? opt.out_dir : (fs::path("out") / "replay" / stem).string();
   hash_values_.assign(script_.hashes.size(), 0);
-  if (!opt.update_golden && fs::exists(log_path())) golden_log_ = replay::parse_hash_log(read_text_file(log_path()), log_path());
+  if (!opt.update_golden)
+    if (const auto log = read_optional_input_file(log_path(), kMaxScriptFileBytes, "a hash log"))
+      golden_log_ = replay::parse_hash_log(*log, log_path());
   check_run_files();
   if (!opt.audio_out.empty()) audio_ = std::make_unique<AudioCapture>(opt.sounds_path, settings_, opt.audio_out);
   // Only a frame to look at makes a GL context: replays without snapshots never create one.
@@ -337,8 +340,7 @@ void ReplayPlayer::check_snapshot(const replay::SnapshotCheck& s, uint64_t t) {
     stage(golden, png.data(), png.size());
     return;
   }
-  std::error_code ec;
-  if (!fs::exists(golden, ec)) {
+  if (!input_path_exists(golden)) {
     fail(t, s.src, "no golden image " + golden + "; run with --update-golden " +
                        (own_images ? "after checking " + written
                                    : "on " + script_.header.snapshots_like + ", whose frames this script must match"));
@@ -417,8 +419,7 @@ void ReplayPlayer::update_golden(const std::string& original_text) {
 ReplayOutcome play_replay(const ReplayRunOptions& opt) {
   using clock = std::chrono::steady_clock;
   const clock::time_point start = clock::now();
-  check_file_size(opt.script_path, kMaxScriptFileBytes, "a replay script");
-  const std::string text = read_text_file(opt.script_path);
+  const std::string text = read_input_file(opt.script_path, kMaxScriptFileBytes, "a replay script");
   ReplayPlayer p(opt, replay::parse_script(text, opt.script_path, all_settings()));
   const clock::time_point ready = clock::now();
   p.run();

@@ -8,6 +8,7 @@
 #include "core/data_layers.h"
 #include "core/data_root.h"
 #include "core/error.h"
+#include "core/input_file.h"
 #include "core/json.h"
 #include "game/app/app_options.h"
 
@@ -74,9 +75,10 @@ std::string resolve_script_level(const replay::Script& s, const std::string& roo
   namespace fs = std::filesystem;
   check_script_mods(s);
   const std::string& level = s.header.level;
-  if (fs::exists(level)) return level;
+  // A name that finds something is used; its reader says what is wrong with it, if anything.
+  if (input_path_exists(level)) return level;
   const fs::path under_root = data_file(root, level);  // a mod's level first
-  if (!fs::path(level).is_absolute() && fs::exists(under_root)) return under_root.string();
+  if (!fs::path(level).is_absolute() && input_path_exists(under_root.string())) return under_root.string();
   throw InputError(s.path + ":" + std::to_string(s.header.level_line) + ":1: level file '" + level +
                    "' not found (looked in the working folder and in " + root + ")");
 }

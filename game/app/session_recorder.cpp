@@ -15,6 +15,7 @@
 #include "core/data_layers.h"
 #include "core/error.h"
 #include "core/file_writer.h"
+#include "core/input_file.h"
 #include "game/app/script_feeder.h"
 #include "game/sim/world.h"
 
@@ -23,10 +24,12 @@ namespace {
 
 std::string read_small_file(const std::string& path) {
   std::string text;
-  if (std::FILE* f = std::fopen(path.c_str(), "rb")) {
+  try {  // the holder's pid is a courtesy: a lock file that cannot be read just goes unnamed
+    InputFile in(path, 4096, "a lock file");
     char buf[64];
-    text.assign(buf, std::fread(buf, 1, sizeof buf, f));
-    std::fclose(f);
+    text.assign(buf, in.read_some(buf, sizeof buf));
+  } catch (const InputError&) {
+    text.clear();
   }
   while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
   return text;

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
+#include "core/input_file.h"
 #include "core/file_writer.h"
 #include "core/json.h"
 #include "core/settings.h"
@@ -104,7 +105,7 @@ std::string replace_bad_file(const std::string& path, const std::string& default
 
 template <class T, class Parse, class Write>
 T load_or_default(const std::string& path, Parse parse, Write write, std::string& message) {
-  if (!fs::exists(path)) return T{};
+  if (!input_path_exists(path)) return T{};
   try {
     return parse(read_text_file(path));
   } catch (const InputError& e) {

@@ -4,6 +4,7 @@
 // level_defs.cpp, and the mission block reader (mission_defs.cpp) the level loader calls.
 #pragma once
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -21,9 +22,10 @@ constexpr double kHuge = 1.0e6;
 // around 1e9; doubles step 0.12 µm there, so motion and particles stay exact.
 constexpr double kSpace = 1073741824.0;
 
-inline std::vector<glm::dvec3> points(JsonObject& o, const std::string& key, double limit) {
+inline std::vector<glm::dvec3> points(JsonObject& o, const std::string& key, double limit,
+                                      size_t max_count = kMaxShipPoints) {
   std::vector<glm::dvec3> out;
-  o.check_list_length(key, kMaxShipPoints);
+  o.check_list_length(key, max_count);
   auto v = o.get(key);
   if (!v) return out;
   for (const JsonValue& p : v->array()) out.push_back(p.vec3(-limit, limit));
@@ -44,9 +46,9 @@ void parse_mission(JsonObject& r, LevelDef& L);
 // regular file. Checked in every mode, so a run without rendering refuses what a window would.
 void require_named_file(const JsonValue& v, const std::string& named, const std::string& root_dir, const char* what);
 
-// One entry of "ships" (or of a wave's "ships"), its class loaded into L; names are unique
-// among every ship already in L (level_defs.cpp).
-ShipSpawnDef parse_ship_entry(JsonObject& s, LevelDef& L, const std::string& root_dir);
+// One entry of "ships" (or of a wave's "ships"), its class loaded into L; `names` holds every
+// ship name already in L, and the entry's is refused if taken, else added (level_defs.cpp).
+ShipSpawnDef parse_ship_entry(JsonObject& s, LevelDef& L, const std::string& root_dir, std::set<std::string>& names);
 // The optional "waves" list, after "ships" (game/sim/wave_defs.cpp).
 void parse_waves(JsonObject& r, LevelDef& L, const std::string& root_dir);
 

@@ -1,11 +1,13 @@
 // game/sim/level_defs.cpp — levels from levels/*.json: rules, ships (loading their classes),
 // props, effect spawns, camera and team colours; the mission block is mission_defs.cpp's.
 #include <filesystem>
+#include <set>
 
 #include <glm/geometric.hpp>
 
 #include "core/data_layers.h"
 #include "core/error.h"
+#include "core/input_file.h"
 #include "game/sim/def_parsing.h"
 #include "game/sim/defs.h"
 #include "particles/effect_def.h"
@@ -56,7 +58,7 @@ void load_class_of(LevelDef& L, const ShipSpawnDef& d, const JsonValue& cls, con
   if (d.ship_class.empty() || d.ship_class.find_first_of("/\\.") != std::string::npos)
     cls.fail("'" + cls.name() + "' must be a ship class name (a file stem in assets/ships/), got \"" + d.ship_class + "\"");
   std::string file = data_file(root_dir, "assets/ships/" + d.ship_class + ".json");  // a mod's class first
-  if (!std::filesystem::exists(file))
+  if (!input_path_exists(file))
     cls.fail("ship class '" + d.ship_class + "' not found: no file " + file);
   L.classes.emplace(d.ship_class, std::make_shared<const ShipClassDef>(load_ship_class(file, d.ship_class, root_dir)));
 }
@@ -79,12 +81,13 @@ void check_wing(JsonObject& r, const LevelDef& L) {
 }
 
 void parse_ships(JsonObject& r, LevelDef& L, const std::string& root_dir) {
+  std::set<std::string> names;  // a set, so a generated fleet of thousands loads in linear-log time
+  bool have_player = false;
   r.check_list_length("ships", kMaxLevelShips);
   for (JsonObject s : r.objects("ships")) {
-    ShipSpawnDef d = parse_ship_entry(s, L, root_dir);
-    if (d.player)
-      for (const ShipSpawnDef& other : L.ships)
-        if (other.player) s.fail_key("player", "only one ship may be the player");
+    ShipSpawnDef d = parse_ship_entry(s, L, root_dir, names);
+    if (d.player && have_player) s.fail_key("player", "only one ship may be the player");
+    have_player = have_player || d.player;
     L.ships.push_back(std::move(d));
   }
   if (L.ships.empty()) r.fail_key(r.has("ships") ? "ships" : "name", "a level needs at least one ship in 'ships'");
@@ -179,7 +182,8 @@ void check_protected_ship(JsonObject& r, const LevelDef& L) {
 
 }  // namespace
 
-ShipSpawnDef defs_internal::parse_ship_entry(JsonObject& s, LevelDef& L, const std::string& root_dir) {
+ShipSpawnDef defs_internal::parse_ship_entry(JsonObject& s, LevelDef& L, const std::string& root_dir,
+                                            std::set<std::string>& names) {
   ShipSpawnDef d;
   d.name = s.require_string("name");
   d.has_label = s.has("label");
@@ -195,12 +199,7 @@ ShipSpawnDef defs_internal::parse_ship_entry(JsonObject& s, LevelDef& L, const s
   d.orientation_deg = orientation(s);
   d.velocity = s.vec3("velocity", glm::dvec3(0.0), -1.0e5, 1.0e5);
   s.finish();
-  auto taken = [&](const std::vector<ShipSpawnDef>& list) {
-    for (const ShipSpawnDef& other : list)
-      if (other.name == d.name) s.fail_key("name", "ship name '" + d.name + "' is used twice");
-  };
-  taken(L.ships);
-  for (const WaveDef& wave : L.waves) taken(wave.ships);
+  if (!names.insert(d.name).second) s.fail_key("name", "ship name '" + d.name + "' is used twice");
   load_class_of(L, d, cls, root_dir);
   return d;
 }
@@ -217,14 +216,9 @@ LevelDef parse_level_doc(std::shared_ptr<const JsonDoc> doc, const std::string& 
   L.objective = r.require_string("objective");
   parse_rules(r, L);
   parse_ships(r, L, root_dir);
-<<<<<<< HEAD
+  parse_waves(r, L, root_dir);
   parse_props(r, L, root_dir);
   parse_effects(r, L, fx, root_dir);
-=======
-  parse_waves(r, L, root_dir);
-  parse_props(r, L);
-  parse_effects(r, L, fx);
->>>>>>> wing
   parse_camera(r, L);
   parse_team_colors(r, L);
   parse_mission(r, L);

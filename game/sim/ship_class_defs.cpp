@@ -95,7 +95,7 @@ ShipClassDef parse_ship_class_doc(const std::shared_ptr<const JsonDoc>& doc, con
     JsonObject o = p->object();
     c.plasma = projectile_weapon(o, false);
   }
-  c.exhausts = points(r, "exhausts", 100.0);
+  c.exhausts = points(r, "exhausts", 100.0, kMaxShipExhausts);
   r.finish();
   if (!root_dir.empty()) require_named_file(model, c.model, root_dir, "model");  // what the file names, once it is whole
   return c;

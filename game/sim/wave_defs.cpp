@@ -1,5 +1,6 @@
 // game/sim/wave_defs.cpp — a level's "waves": reinforcements that enter the fight after a time
 // or when a team runs low, each with ships written like the level's "ships".
+#include <set>
 #include <string>
 
 #include "game/sim/def_parsing.h"
@@ -41,6 +42,8 @@ void parse_trigger(JsonObject& o, const LevelDef& L, WaveDef& d) {
 void parse_waves(JsonObject& r, LevelDef& L, const std::string& root_dir) {
   r.check_list_length("waves", kMaxWaves);
   size_t total = L.ships.size();
+  std::set<std::string> names;
+  for (const ShipSpawnDef& d : L.ships) names.insert(d.name);
   for (JsonObject o : r.objects("waves")) {
     WaveDef d;
     parse_trigger(o, L, d);
@@ -55,7 +58,7 @@ void parse_waves(JsonObject& r, LevelDef& L, const std::string& root_dir) {
       if (s.has("wing")) s.fail_key("wing", "wingmen start in 'ships', not in a wave");
       if (++total > kMaxLevelShips)
         s.fail("too many ships: a level and its waves hold at most " + std::to_string(kMaxLevelShips));
-      d.ships.push_back(parse_ship_entry(s, L, root_dir));
+      d.ships.push_back(parse_ship_entry(s, L, root_dir, names));
     }
     o.finish();
     L.waves.push_back(std::move(d));

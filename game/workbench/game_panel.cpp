@@ -125,7 +125,8 @@ bool GamePanel::draw_settings(Settings& settings) {
 
 void GamePanel::draw_effects() {
   for (const std::string& f : effect_files_) {
-    const bool current = doc_ && fs::equivalent(doc_->path(), f);
+    std::error_code ec;
+    const bool current = doc_ && fs::equivalent(doc_->path(), f, ec);
     if (ImGui::Selectable(fs::path(f).stem().c_str(), current) && !current) {
       std::string error;
       doc_ = EffectDocument::open(f, error);

@@ -140,8 +140,9 @@ void WorkbenchSession::report_screenshots(const std::vector<ScreenshotWriter::Do
 void WorkbenchSession::setup() {
   files_ = effect_files(options_.root_dir);
   if (!options_.effect_path.empty()) {
-    const fs::path wanted = fs::weakly_canonical(options_.effect_path);
-    auto same = [&](const std::string& f) { return fs::weakly_canonical(f) == wanted; };
+    std::error_code ec;
+    const fs::path wanted = fs::weakly_canonical(options_.effect_path, ec);
+    auto same = [&](const std::string& f) { return fs::weakly_canonical(f, ec) == wanted; };
     current_ = size_t(std::find_if(files_.begin(), files_.end(), same) - files_.begin());
     if (current_ == files_.size()) files_.push_back(options_.effect_path);  // outside the folder: listed last
   }

@@ -3,12 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <iterator>
 #include <stdexcept>
 #include <vector>
 
 #include "assets/image.h"
+#include "core/input_file.h"
+#include "core/input_limits.h"
 #include "core/rng.h"
 
 namespace arc::assetgen {
@@ -65,11 +65,7 @@ double hull_texel(const HullPattern& p, const std::vector<std::vector<double>>& 
   return std::clamp(v, 0.0, 1.0);
 }
 
-std::string read_bytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot read back the texture just written");
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
+std::string read_bytes(const std::string& path) { return read_input_file(path, kMaxImageFileBytes, "a texture"); }
 
 }  // namespace
 

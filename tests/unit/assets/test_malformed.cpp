@@ -78,7 +78,7 @@ TEST_F(Malformed, TheBaselineLoads) {
   EXPECT_EQ(m.primitives[0].indices.size(), 3u);
 }
 
-TEST_F(Malformed, MissingFile) { expect_error((dir_ / "nope.glb").string(), "cannot read file"); }
+TEST_F(Malformed, MissingFile) { expect_error((dir_ / "nope.glb").string(), "nope.glb: not found; allowed: a regular file"); }
 
 TEST_F(Malformed, BadJson) { expect_error(write("bad.gltf", "{ \"asset\": { \"version\": "), "invalid glTF"); }
 

@@ -10,6 +10,7 @@
 #include "core/data_root.h"
 #include "core/clock.h"
 #include "core/file_writer.h"
+#include "core/input_file.h"
 #include "core/input_limits.h"
 #include "core/json.h"
 #include "core/rng.h"
@@ -87,6 +88,16 @@ TEST(CoreExamples, CheckBeforeParsing) {
   check_json_text(text, path, kDataJsonLimits);                           // path:line:col: ...
   std::filesystem::current_path(cwd);
   EXPECT_THROW(check_json_text(std::string(20, '['), path, kDataJsonLimits), InputError);
+}
+
+TEST(CoreExamples, ReadAnInputFile) {
+  const std::filesystem::path cwd = std::filesystem::current_path();
+  std::filesystem::current_path(arc::data_root());
+  std::string text = read_input_file("levels/duel.json", kMaxDataFileBytes, "a level");
+  check_input_path("assets/textures/hull_dart.png", kMaxImageFileBytes, "an image");
+  std::filesystem::current_path(cwd);
+  EXPECT_NE(text.find("\"ships\""), std::string::npos);
+  EXPECT_THROW(read_input_file("/dev/zero", kMaxDataFileBytes, "a level"), InputError);
 }
 
 TEST(CoreExamples, ReadALevel) {

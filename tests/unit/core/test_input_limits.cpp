@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <new>
@@ -120,11 +121,12 @@ TEST(InputLimits, LargeFileIsRefusedBeforeItIsRead) {
   const std::string path = testing::TempDir() + "arcfire_big.json";
   {
     std::ofstream out(path);
-    out << "[" << repeat("0,", 150000) << "0]";
+    out << "[0]";
   }
+  std::filesystem::resize_file(path, arc::kMaxDataFileBytes + 3);  // sparse: nothing is written
   const Cost c = cost_of([&] {
     const std::string e = error_of([&] { arc::JsonDoc::load_file(path); });
-    EXPECT_NE(e.find(path + ": file is 300003 bytes; a data file (level, ship class, effect, settings, bindings) may be at most 256 KiB"),
+    EXPECT_NE(e.find(path + ": file is 16777219 bytes; a data file (level, ship class, effect, settings, bindings) may be at most 16 MiB"),
               std::string::npos) << e;
   });
   EXPECT_LT(c.bytes, size_t(64) << 10);
@@ -153,6 +155,42 @@ TEST(InputLimits, JsonParsingCostOfTheWorstAllowedFileIsBounded) {
   const Cost c = cost_of([&] { arc::JsonDoc::parse(text, "w.json"); });
   EXPECT_LT(c.bytes, size_t(100) << 20) << c.bytes;
   std::printf("worst allowed shape: %zu input bytes, %zu bytes allocated in %zu blocks\n", text.size(), c.bytes, c.blocks);
+}
+
+TEST(InputLimits, TooManyValuesAreRefused) {
+  const std::string e = error_of([] { arc::JsonDoc::parse("[" + repeat("0,", size_t(1) << 20) + "0]", "v.json"); });
+  EXPECT_NE(e.find("v.json:1:"), std::string::npos) << e;
+  EXPECT_NE(e.find("more than 1048576 values"), std::string::npos) << e;
+}
+
+// Values under the longest paths allowed: n of them, each path 240 characters or so.
+std::string long_paths(size_t n) {
+  const std::string key(110, 'k');
+  return "{\"" + key + "\":{\"" + key + "\":[" + repeat("0,", n) + "0]}}";
+}
+
+TEST(InputLimits, PathsOfAllValuesTogetherAreBounded) {
+  const std::string e = error_of([] { arc::JsonDoc::parse(long_paths(200000), "p.json"); });
+  EXPECT_NE(e.find("add up to more than 32 MiB"), std::string::npos) << e;
+}
+
+TEST(InputLimits, TheRecorderOfTheWorstAllowedShapesStaysSmall) {
+  // Just under each bound: the most values, and the longest paths for as many values as fit.
+  for (const std::string& text : {"[" + repeat("0,", (size_t(1) << 20) - 2) + "0]", long_paths(130000)}) {
+    // Everything allocated counts, freed or not: an upper bound on what the parse holds at once.
+    const Cost c = cost_of([&] { arc::JsonDoc::parse(text, "w.json"); });
+    EXPECT_LT(c.bytes, size_t(400) << 20) << c.bytes;
+    std::printf("worst allowed shape: %zu input bytes, %zu bytes allocated in %zu blocks\n", text.size(), c.bytes, c.blocks);
+  }
+}
+
+TEST(InputLimits, RelativeTicksPastTheLastTickAreRefusedAtTheirLine) {
+  const arc::Settings known = arc::all_settings();
+  std::string text = "arcfire-replay 1\nlevel levels/duel.json\n";
+  for (int i = 0; i < 11; ++i) text += "+100000000 axis pitch 0.5\n";
+  const std::string e = error_of([&] { arc::replay::parse_script(text, "far.replay", known); });
+  EXPECT_EQ(e, "far.replay:13:1: relative tick +100000000 after tick 1000000000 reaches tick 1100000000; "
+               "allowed: ticks up to 1000000000") << e;
 }
 
 TEST(InputLimits, ScriptParsingCostIsLinearInTheInput) {
