@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "game/sim/camera_rig.h"
+#include "game/sim/commands.h"
 #include "game/sim/effects.h"
 #include "game/sim/geometry.h"
 #include "game/sim/shields.h"
@@ -48,6 +49,7 @@ void add_ships(World& w) {
     s.hull = s.cls->hull;
     s.shield = s.cls->shield;
     s.energy = s.cls->energy;
+    s.seeker.flares = s.cls->countermeasures.count;
     if (!s.cls->missile.present && s.cls->plasma.present) s.secondary = SecondaryWeapon::Plasma;
     if (d.player) w.player = s.id;
     w.ships.push_back(std::move(s));
@@ -101,6 +103,8 @@ void init_world(World& w, LevelDef level, std::shared_ptr<const EffectLibrary> e
   pc.tick_seconds = w.dt;
   w.particles.emplace(pc, w.effects.get());
   add_ships(w);
+  // The player starts with the nearest hostile targeted, so the HUD shows it from the first frame.
+  if (w.player) w.ship(w.player).target = nearest_hostile(w, w.player);
   add_props(w);
   w.camera_mode = w.level.camera.mode == "cockpit" ? CameraMode::Cockpit
                   : w.level.camera.mode == "fixed" ? CameraMode::Fixed

@@ -8,10 +8,13 @@
 #include "game/sim/damage.h"
 #include "game/sim/effects.h"
 #include "game/sim/geometry.h"
+#include "game/sim/seekers.h"
 #include "game/sim/world.h"
 
 namespace arc {
 namespace {
+
+constexpr double kDecoyBurstRadius = 4.0;  // metres: a decoyed missile this near its flare bursts
 
 void end_projectile(World& w, Projectile& p) {
   if (p.kind == SecondaryWeapon::Missile) {
@@ -38,8 +41,8 @@ void fire_secondary(World& w, Ship& s) {
   p.serial = w.next_projectile_serial++;
   p.kind = s.secondary;
   p.owner = s.id;
-  p.target = plasma ? ShipId{} : s.target;
-  if (p.target && !w.hostile(s, w.ship(p.target))) p.target = {};
+  // Without a complete lock a missile flies straight where the nose points.
+  p.target = !plasma && missile_locked(w, s) ? s.target : ShipId{};
   p.particle_owner = allocate_owner(w);
   p.position = p.prev_position = s.position + s.orientation * hp;
   p.velocity = s.velocity + forward_of(s.orientation) * wd.speed;
@@ -54,13 +57,32 @@ void fire_secondary(World& w, Ship& s) {
   w.projectiles.push_back(std::move(p));
 }
 
+// Where a homing missile steers: its decoy flare, else its target; none once the target has
+// left its seeker cone (it then flies straight on: a hard turn can shake it off).
+const glm::dvec3* seeker_aim(const World& w, Projectile& p) {
+  if (p.kind != SecondaryWeapon::Missile) return nullptr;
+  if (p.decoy != 0) {
+    const Flare* f = find_flare(w, p.decoy);
+    return f ? &f->position : nullptr;
+  }
+  if (!p.target || !w.ship(p.target).alive) return nullptr;
+  const glm::dvec3& at = w.ship(p.target).position;
+  const glm::dvec3 dir = safe_norm(p.velocity, glm::dvec3(0, 0, -1));
+  const double off = std::acos(std::clamp(glm::dot(dir, safe_norm(at - p.position, dir)), -1.0, 1.0));
+  if (off > w.ship(p.owner).cls->missile.seeker_cone * kDeg) {
+    p.target = {};
+    return nullptr;
+  }
+  return &at;
+}
+
 void move_projectiles(World& w) {
   for (Projectile& p : w.projectiles) {
     p.prev_position = p.position;
-    if (p.kind == SecondaryWeapon::Missile && p.target && w.ship(p.target).alive) {
+    if (const glm::dvec3* aim = seeker_aim(w, p)) {
       const double speed = safe_len(p.velocity);
       glm::dvec3 dir = safe_norm(p.velocity, glm::dvec3(0, 0, -1));
-      glm::dvec3 want = safe_norm(w.ship(p.target).position - p.position, dir);
+      glm::dvec3 want = safe_norm(*aim - p.position, dir);
       double angle = std::acos(std::clamp(glm::dot(dir, want), -1.0, 1.0));
       double step = p.turn_rate * w.dt;
       if (angle > 1e-9) {
@@ -79,6 +101,16 @@ void hit_projectiles(World& w) {
   size_t keep = 0;
   for (size_t i = 0; i < w.projectiles.size(); ++i) {
     Projectile& p = w.projectiles[i];
+    // A decoyed missile bursts on its flare.
+    if (const Flare* f = p.decoy ? find_flare(w, p.decoy) : nullptr) {
+      if (segment_sphere(p.prev_position, p.position, f->position, kDecoyBurstRadius) >= 0) {
+        SpawnParams sp;
+        sp.position = f->position;
+        spawn_fx(w, w.fx.hull_sparks, sp);
+        end_projectile(w, p);
+        continue;
+      }
+    }
     ShipId hit_ship;
     double best_t = 2.0;
     bool on_shield = false;

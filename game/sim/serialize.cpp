@@ -31,8 +31,9 @@ static void write_leaf(snapshot::Writer& out, const std::optional<ParticleWorld>
 namespace {
 
 constexpr uint64_t kMagic = snapshot::magic("ARCSNAP1");
-// 3: typed ids (ships, teams, model slots, particle owners) as their u32 values; 4: ship combat stats
-constexpr uint32_t kVersion = 4;
+// 3: typed ids (ships, teams, model slots, particle owners) as their u32 values; 4: ship combat stats;
+// 5: missile locks, flares and decoyed missiles
+constexpr uint32_t kVersion = 5;
 
 using snapshot::Reader;
 using snapshot::Writer;
@@ -140,6 +141,9 @@ struct WorldReading {
   }
   void after_read(Reader& in, const Projectile& p) {
     if (!p.owner) in.fail("projectile " + std::to_string(p.serial) + " has no owner");
+  }
+  void after_read(Reader& in, const Flare& f) {
+    if (!f.owner) in.fail("flare " + std::to_string(f.serial) + " has no owner");
   }
 };
 

@@ -114,6 +114,23 @@ void visit_fields(C& c, V&& v) {
   v("missiles_hit", c.missiles_hit, fields::saved, state_hash<5>);
 }
 
+// A ship's missile lock and flares (game/sim/seekers.h). The lock builds while the ship's
+// target stays within its missile's lock cone and range; lock_ticks counts those ticks.
+struct SeekerState {
+  ShipId lock_target;               // the ship the lock is building on (null: none)
+  int64_t lock_ticks = 0;           // ticks it has been held
+  int flares = 0;                   // flares left
+  int64_t flare_ready_tick = 0;     // no flare before this tick (the cooldown)
+};
+
+template <fields::MaybeConst<SeekerState> S, class V>
+void visit_fields(S& s, V&& v) {
+  v("lock_target", s.lock_target, ship_ref, state_hash<0>);
+  v("lock_ticks", s.lock_ticks, fields::saved, state_hash<1>);
+  v("flares", s.flares, fields::saved, state_hash<2>);
+  v("flare_ready_tick", s.flare_ready_tick, fields::saved, state_hash<3>);
+}
+
 // Shots that hit as a share of shots fired; 0 before the first shot.
 inline double accuracy(int64_t hits, int64_t shots) { return shots > 0 ? double(hits) / double(shots) : 0.0; }
 
@@ -161,6 +178,7 @@ struct Ship {
   double shown_exhaust_intensity = -1;
   AiState ai_state;
   CombatStats stats;
+  SeekerState seeker;
 };
 
 // Name, class, team, player, AI kind and model come from the level and never change: unhashed.
@@ -206,6 +224,7 @@ void visit_fields(S& s, V&& v) {
   v("shown_exhaust_intensity", s.shown_exhaust_intensity, fields::saved, presentation_hash<5>);
   v("ai_state", s.ai_state, fields::saved, state_hash<21>);
   v("stats", s.stats, fields::saved, state_hash<23>);
+  v("seeker", s.seeker, fields::saved, state_hash<24>);
   v("model", s.model, fields::not_saved, fields::unhashed);  // the class's model
 }
 
@@ -219,6 +238,7 @@ struct Projectile {
   double damage = 0, turn_rate = 0, hit_radius = 0;
   int64_t expire_tick = 0;
   EffectHandle trail;
+  uint32_t decoy = 0;       // serial of the flare it chases instead of its target (0: none)
 };
 
 // Damage, turn rate and hit radius come from the weapon's definition at the shot: unhashed.
@@ -237,6 +257,30 @@ void visit_fields(P& p, V&& v) {
   v("hit_radius", p.hit_radius, fields::saved, fields::unhashed);
   v("expire_tick", p.expire_tick, fields::saved, state_hash<6>);
   v("trail", p.trail, fields::saved, presentation_hash<1>);
+  v("decoy", p.decoy, fields::saved, state_hash<8>);
+}
+
+// A flare dropped against missiles: it drifts behind its ship, burns for its lifetime and
+// draws missiles that took it for their target (Projectile::decoy).
+struct Flare {
+  uint32_t serial = 0;      // from World::next_projectile_serial
+  ShipId owner;             // the ship that dropped it
+  OwnerId particle_owner;   // its glow is attached to this owner
+  glm::dvec3 position{0.0}, velocity{0.0}, prev_position{0.0};
+  int64_t expire_tick = 0;
+  EffectHandle fx;
+};
+
+template <fields::MaybeConst<Flare> F, class V>
+void visit_fields(F& f, V&& v) {
+  v("serial", f.serial, fields::saved, state_hash<0>);
+  v("owner", f.owner, ship_ref, state_hash<1>);
+  v("particle_owner", f.particle_owner, owner_ref, state_hash<2>);
+  v("position", f.position, fields::saved, state_hash<3>);
+  v("velocity", f.velocity, fields::saved, state_hash<4>);
+  v("prev_position", f.prev_position, fields::saved, presentation_hash<0>);
+  v("expire_tick", f.expire_tick, fields::saved, state_hash<5>);
+  v("fx", f.fx, fields::saved, presentation_hash<1>);
 }
 
 struct ExplosionEvent {
@@ -289,6 +333,7 @@ class World {
   std::vector<std::string> model_paths;  // every model the level needs (load only these), for ModelSlot
   std::vector<Ship> ships;
   std::vector<Projectile> projectiles;
+  std::vector<Flare> flares;
   std::vector<Prop> props;
   std::vector<ExplosionEvent> explosions;  // recent ones, for hull flashes
   std::shared_ptr<const EffectLibrary> effects;
@@ -342,6 +387,7 @@ void visit_fields(W& w, V&& v) {
   v("prev_camera", w.prev_camera, fields::saved, presentation_hash<5>);
   v("ships", w.ships, fields::checked, state_hash<8>, presentation_hash<0>);
   v("projectiles", w.projectiles, fields::saved, state_hash<9>, presentation_hash<1>);
+  v("flares", w.flares, fields::saved, state_hash<11>, presentation_hash<7>);
   v("props", w.props, fields::checked, fields::unhashed);
   v("explosions", w.explosions, fields::saved, presentation_hash<2>);
   v("particles", w.particles, fields::saved, presentation_hash<6>);  // its own snapshot; hash_summary
