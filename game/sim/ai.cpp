@@ -208,7 +208,7 @@ void drive_ai(World& w, Ship& s) {
   if (line_clear && beam_ready && off < cone + 0.02 && dist < s.cls->beam.range * 0.95) c.buttons |= kFirePrimary;
   const Rng rng{w.seed, kAiStream + 0x100 + static_cast<uint64_t>(s.id.index()), static_cast<uint64_t>(w.tick)};
   if (line_clear && s.cls->missile.present && !plasma && missile_locked(w, s) && dist > 80 &&
-      rng.uniform(0) < 0.05 * tune.aggression)
+      rng.uniform(0) < 0.02 * tune.aggression)
     c.buttons |= kFireSecondary;
   if (line_clear && plasma && energy_frac > 0.25 && off < cone + 0.03 &&
       dist < s.cls->plasma.speed * s.cls->plasma.lifetime * 0.8)

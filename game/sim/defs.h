@@ -37,8 +37,8 @@ struct ProjectileWeaponDef {
   double lifetime = 6.0;        // seconds
   double turn_rate = 90.0;      // degrees per second (missiles home, plasma does not)
   double hit_radius = 1.0;
-  // Missiles only: a missile homes only on a target held within lock_cone of the nose and
-  // within lock_range for lock_time; one fired without a lock flies straight. In flight its
+  // Missiles only: a missile leaves only once its target was held within lock_cone of the nose
+  // and within lock_range for lock_time, and homes on it. In flight its
   // seeker keeps the target only within seeker_cone of its heading (a target that turns out of
   // it is lost), and flares inside that cone can pull it away.
   double lock_time = 1.75;      // seconds

@@ -2,10 +2,12 @@
 // defends itself against a missile homing on it (game/sim/seekers.cpp).
 //
 // A ship's lock builds while its target stays within its missile's lock cone and range; a
-// missile fired with the lock complete homes on the target, one fired without flies straight.
+// missile leaves only once the lock is complete (a trigger held early fires at that moment)
+// and homes on the target.
 // A flare pulls each missile homing on its ship that has it in the seeker cone, with the
 // class's decoy chance drawn once per missile and flare from the keyed RNG; a pulled missile
-// chases the flare and bursts on it, or flies straight on once the flare burns out.
+// chases the flare and bursts on it (passing through ships on the way), or flies straight on
+// once the flare burns out.
 #pragma once
 #include "game/sim/world.h"
 

@@ -97,11 +97,14 @@ void visit_fields(A& a, V&& v) {
 // lines. Beam accuracy counts ticks: a tick the beam fires is a shot, one where any of its
 // channels stays on a hostile is a hit. Missile shots are every secondary projectile (missiles
 // and plasma bolts); a hit is one that strikes a hostile ship. Damage counts what shields and
-// hulls took, never more than was left of them.
+// hulls took, never more than was left of them; the plasma's share of the secondary shots and
+// the damage dealt by each secondary weapon are kept apart too (the beam's is the rest).
 struct CombatStats {
   double damage_dealt = 0, damage_taken = 0;
   int64_t beam_ticks = 0, beam_hit_ticks = 0;
   int64_t missiles_fired = 0, missiles_hit = 0;
+  int64_t plasma_fired = 0, plasma_hit = 0;
+  double missile_damage = 0, plasma_damage = 0;
 };
 
 template <fields::MaybeConst<CombatStats> C, class V>
@@ -112,6 +115,10 @@ void visit_fields(C& c, V&& v) {
   v("beam_hit_ticks", c.beam_hit_ticks, fields::saved, state_hash<3>);
   v("missiles_fired", c.missiles_fired, fields::saved, state_hash<4>);
   v("missiles_hit", c.missiles_hit, fields::saved, state_hash<5>);
+  v("plasma_fired", c.plasma_fired, fields::saved, state_hash<6>);
+  v("plasma_hit", c.plasma_hit, fields::saved, state_hash<7>);
+  v("missile_damage", c.missile_damage, fields::saved, state_hash<8>);
+  v("plasma_damage", c.plasma_damage, fields::saved, state_hash<9>);
 }
 
 // A ship's missile lock and flares (game/sim/seekers.h). The lock builds while the ship's

@@ -64,8 +64,10 @@ TEST(SoundEvents, MissilesLaunchOnceAndFlyAsLoops) {
   SoundEventTracker tracker;
   tracker.collect(g.world());
   int launches = 0, flight = 0;
-  for (int t = 0; t < 30; ++t) {
-    g.step(buttons(t == 0 ? kFireSecondary : 0));
+  // The trigger held through the lock time: the missile leaves once the lock completes.
+  const int lock = int(std::llround(g.world().ships[0].cls->missile.lock_time / g.world().dt));
+  for (int t = 0; t < lock + 30; ++t) {
+    g.step(buttons(t <= lock ? kFireSecondary : 0));
     auto events = tracker.collect(g.world());
     launches += count(events, SoundKind::MissileLaunch);
     for (const SoundEvent& e : events)
