@@ -12,6 +12,7 @@
 #include "game/render/hud_draw.h"
 #include "game/sim/beams.h"
 #include "game/sim/geometry.h"
+#include "game/sim/seekers.h"
 #include "game/sim/world.h"
 
 namespace arc {
@@ -19,6 +20,7 @@ namespace {
 
 constexpr double kTwoPi = 6.283185307179586;
 constexpr double kBeamRingRadius = 20.0;
+constexpr int kLockSegments = 32;
 
 void centred_text(HudLayer& h, double cx, double y, double scale, const glm::vec4& c, const std::string& s) {
   text(h, cx - 0.5 * kGlyphAdvance * scale * double(s.size()), y, scale, c, s);
@@ -29,6 +31,16 @@ void circle(HudLayer& h, glm::dvec2 c, double r, const glm::vec4& col, float wid
   for (int i = 0; i < segments; i += every) {
     const double a0 = kTwoPi * i / segments, a1 = kTwoPi * (i + 1) / segments;
     line(h, c.x + r * std::cos(a0), c.y + r * std::sin(a0), c.x + r * std::cos(a1), c.y + r * std::sin(a1), col, width);
+  }
+}
+
+// The lock's progress: the first `frac` of a ring, clockwise from the top.
+void lock_arc(HudLayer& h, glm::dvec2 c, double r, double frac) {
+  const int n = static_cast<int>(std::floor(std::clamp(frac, 0.0, 1.0) * kLockSegments + 1e-9));
+  for (int i = 0; i < n; ++i) {
+    const double a0 = kTwoPi * i / kLockSegments - 0.25 * kTwoPi, a1 = kTwoPi * (i + 1) / kLockSegments - 0.25 * kTwoPi;
+    line(h, c.x + r * std::cos(a0), c.y + r * std::sin(a0), c.x + r * std::cos(a1), c.y + r * std::sin(a1), kHudRed,
+         3.0f);
   }
 }
 
@@ -47,12 +59,21 @@ void crosshair(glm::dvec2 c, bool beam_ring_lit, HudLayer& h) {
 }
 
 // The missile cue around the target at `px` (brackets' half-size r): a circle, whole when a
-// missile launched now reaches the target, broken otherwise, and its label.
-void missile_cue(HudLayer& h, glm::dvec2 px, double r, bool ready) {
+// missile launched now reaches the target, broken otherwise, labelled "MSL"; over it the lock
+// ring, filling clockwise from the top as the lock builds; once locked, a bold double ring
+// labelled "LOCK".
+void missile_cue(HudLayer& h, glm::dvec2 px, double r, bool ready, double lock) {
   const double radius = r + 10.0;
+  if (lock >= 1.0) {
+    circle(h, px, radius, kHudRed, 3.0f, kLockSegments);
+    circle(h, px, radius + 5.0, kHudRed, 1.5f, kLockSegments);
+    text(h, px.x + radius + 8.0, px.y - 6.0, 1.0, kHudRed, "LOCK");
+    return;
+  }
   const glm::vec4 col = ready ? kHudYellow : faded(kHudYellow, 0.55);
-  circle(h, px, radius, col, ready ? 2.5f : 1.5f, 32, ready ? 1 : 2);
-  text(h, px.x + radius + 5.0, px.y - 6.0, 1.0, col, "MSL");
+  circle(h, px, radius, col, ready ? 1.5f : 1.0f, kLockSegments, ready ? 1 : 2);
+  lock_arc(h, px, radius + 4.0, lock);
+  text(h, px.x + radius + 8.0, px.y - 6.0, 1.0, col, "MSL");
 }
 
 // Where plasma bolts fired now meet the target (drawn at `drawn`): false when behind the eye.
@@ -177,6 +198,7 @@ AimCues aim_cues(const World& w, const Ship& me, const Projector& pr, double alp
   } else if (me.secondary == SecondaryWeapon::Missile && me.cls->missile.present) {
     c.missile_cue = true;
     c.missile_ready = missile_ready(me, t);
+    c.lock = lock_progress(w, me);
   }
   return cues;
 }
@@ -197,7 +219,7 @@ void layout_aim_cues(const World& w, const Ship& me, const Projector& pr, double
   layout_range_cue(h, c.centre, c.half_size, c.in_range, col);
   bracket_readout(h, w.ship(me.target), c.centre, c.half_size, c.distance, col);
   if (c.plasma_lead) plasma_lead(h, c.lead);
-  if (c.missile_cue) missile_cue(h, c.centre, c.half_size, c.missile_ready);
+  if (c.missile_cue) missile_cue(h, c.centre, c.half_size, c.missile_ready, c.lock);
 }
 
 }  // namespace arc

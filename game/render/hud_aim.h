@@ -9,7 +9,9 @@
 //                bars, at any range,
 //   missile cue  with missiles selected: a circle around the target labelled "MSL", whole while
 //                the target is within the missile's reach and launch cone (missile_ready()),
-//                broken otherwise; missiles home on the target, so they need no lead point,
+//                broken otherwise; missiles home on the target, so they need no lead point;
+//                over it the lock ring, red, filling clockwise from the top over the lock time
+//                (game/sim/seekers.h), and once locked a bold double ring labelled "LOCK",
 //   plasma lead  with plasma selected: a diamond labelled "PLS" where the bolts meet the target,
 //   off-screen   an arrow toward a target out of view, where the line from the screen centre
 //                toward it leaves the area between the HUD's panels, its distance beside it.
@@ -46,6 +48,7 @@ struct TargetCues {
   bool in_range = false;       // within the beam's range: "IN RANGE", bolder brackets
   bool missile_cue = false;    // the "MSL" circle (missiles selected, target hostile)
   bool missile_ready = false;  //   whole: missile_ready()
+  double lock = 0;             //   the lock ring, 0..1; "LOCK" at 1 (game/sim/seekers.h)
   bool plasma_lead = false;    // the "PLS" diamond at `lead` (plasma selected, target hostile)
   glm::dvec2 lead{0.0};
   glm::dvec2 arrow_dir{0.0};   // off screen: the arrow's unit direction from the screen centre

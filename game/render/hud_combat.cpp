@@ -116,7 +116,8 @@ void missile_warning(const World& w, const Ship& me, const Projector& pr, double
   double nearest = -1;
   const glm::dvec2 c(pr.cx, pr.cy);
   for (const Projectile& p : w.projectiles) {
-    if (p.target != me.id || p.kind != SecondaryWeapon::Missile) continue;
+    // A missile chasing a flare no longer threatens.
+    if (p.target != me.id || p.kind != SecondaryWeapon::Missile || p.decoy != 0) continue;
     const double d = glm::length(p.position - me.position);
     nearest = nearest < 0 ? d : std::min(nearest, d);
     glm::dvec2 dir;

@@ -8,7 +8,7 @@
 //                   whose beam is on `me` now: a red wedge on a ring around the screen centre
 //                   and a glow on the screen edge toward it, fading with the hit's age;
 //   missile warning "MISSILE 420 m" blinking above the crosshair and a marker on the ring
-//                   toward each missile homing on `me`;
+//                   toward each missile homing on `me` (not one a flare has pulled away);
 //   range cue       above the target's brackets, "IN RANGE" while the beam reaches it;
 //   kill feed       the last kills (killer and victim, from the dead ships' death tick and last
 //                   attacker) and the World's messages (wing replies in blue, reinforcements),

@@ -210,11 +210,12 @@ void hud_own(const Ship& me, int height, HudLayer& h) {
   hud_throttle_and_speed(me, x + bar_w + 14 * k, y, y + 2 * row + bar_h, height, h);
 }
 
-// The selected weapons and the kills at the bottom right.
+// The selected weapons, the flares left and the kills at the bottom right.
 void hud_weapon(const Ship& me, int width, int height, HudLayer& h) {
   const double k = height_scale(height), s = text_scale(1.2, height), row = weapon_row(height);
   const std::string weapon = std::string("beam + ") + (me.secondary == SecondaryWeapon::Plasma ? "PLASMA" : "MISSILES");
-  const std::string kills = "kills " + std::to_string(me.kills);
+  const std::string kills = (me.cls->countermeasures.count > 0 ? "flares " + std::to_string(me.seeker.flares) + "  " : "") +
+                            "kills " + std::to_string(me.kills);
   const double wide = double(std::max(weapon.size(), kills.size())) * kGlyphAdvance * s;
   const double x = std::min(width - 260 * k, width - kSideMargin * k - wide), y = height - 36 * k;
   text(h, x, y - row, s, kHudWhite, weapon);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "game/sim/seekers.h"
 #include "game/sim/world.h"
 
 namespace arc {
@@ -10,6 +11,9 @@ namespace {
 
 constexpr int64_t kHitInterval = 6;  // ticks between two hit sounds on one ship
 constexpr uint64_t kProjectileOwner = uint64_t(1) << 32;
+constexpr uint64_t kLockOwner = uint64_t(3) << 32;  // the player's lock tone: one loop
+// Seconds between lock ticks as the lock starts and just before it completes.
+constexpr double kLockTickSlowest = 0.4, kLockTickFastest = 0.1;
 
 SoundEvent event(SoundKind kind, const glm::dvec3& p, const glm::dvec3& v, uint64_t owner, double intensity = 1) {
   SoundEvent e;
@@ -35,12 +39,16 @@ const char* sound_kind_name(SoundKind kind) {
     case SoundKind::Explosion: return "explosion";
     case SoundKind::Afterburner: return "afterburner";
     case SoundKind::EngineHum: return "engine_hum";
+    case SoundKind::LockTick: return "lock_tick";
+    case SoundKind::LockTone: return "lock_tone";
+    case SoundKind::Flare: return "flare";
   }
   return "";
 }
 
 bool is_loop(SoundKind kind) {
-  return kind == SoundKind::Beam || kind == SoundKind::MissileFlight || kind == SoundKind::EngineHum;
+  return kind == SoundKind::Beam || kind == SoundKind::MissileFlight || kind == SoundKind::EngineHum ||
+         kind == SoundKind::LockTone;
 }
 
 // Where a damaged ship is being hit: on the beam of a ship firing at it, else at its centre.
@@ -99,16 +107,51 @@ void SoundEventTracker::projectile_events(const World& w, std::vector<SoundEvent
   projectiles_ = std::move(now);
 }
 
+// The player's lock: a tick each interval while it builds, the interval shrinking as it fills,
+// and a steady tone once it is complete. Heard at the listener's ship.
+void SoundEventTracker::lock_events(const World& w, std::vector<SoundEvent>& out) {
+  if (!w.player || !w.ship(w.player).alive) return;
+  const Ship& me = w.ship(w.player);
+  const double progress = lock_progress(w, me);
+  if (progress >= 1.0) {
+    out.push_back(event(SoundKind::LockTone, me.position, me.velocity, kLockOwner));
+    return;
+  }
+  if (progress <= 0.0) {
+    next_lock_tick_ = 0;
+    return;
+  }
+  if (!primed_ || w.tick < next_lock_tick_) return;
+  out.push_back(event(SoundKind::LockTick, me.position, me.velocity, kLockOwner, 0.6 + 0.4 * progress));
+  const double gap = kLockTickSlowest + (kLockTickFastest - kLockTickSlowest) * progress;
+  next_lock_tick_ = w.tick + std::max<int64_t>(1, std::llround(gap / w.dt));
+}
+
+void SoundEventTracker::flare_events(const World& w, std::vector<SoundEvent>& out) {
+  std::vector<uint32_t> now;
+  for (const Flare& f : w.flares) {
+    now.push_back(f.serial);
+    if (primed_ && !std::binary_search(flares_.begin(), flares_.end(), f.serial))
+      out.push_back(event(SoundKind::Flare, f.position, f.velocity, kProjectileOwner + f.serial));
+  }
+  std::sort(now.begin(), now.end());
+  flares_ = std::move(now);
+}
+
 std::vector<SoundEvent> SoundEventTracker::collect(const World& w) {
   std::vector<SoundEvent> out;
   if (w.tick < tick_ || ships_.size() != w.ships.size()) {
     ships_.assign(w.ships.size(), ShipMemory{});
     projectiles_.clear();
+    flares_.clear();
+    next_lock_tick_ = 0;
     primed_ = false;
   }
   if (w.paused || (primed_ && w.tick == tick_)) return out;
   for (size_t i = 0; i < w.ships.size(); ++i) ship_events(w, i, out);
   projectile_events(w, out);
+  flare_events(w, out);
+  lock_events(w, out);
   if (primed_) {
     for (const ExplosionEvent& e : w.explosions) {
       if (e.tick <= tick_ || e.tick > w.tick) continue;

@@ -2,8 +2,8 @@
 //
 // The simulation never calls audio, and sound adds nothing to its state or hash. Instead,
 // SoundEventTracker compares each tick's World with what it remembered from the tick before
-// (ships' shields, hulls, deaths, afterburners, beams; new and live projectiles; the world's
-// explosion list) and lists the sound events: one-shots (a launch, a hit, an explosion) and
+// (ships' shields, hulls, deaths, afterburners, beams; new and live projectiles and flares; the
+// player's missile lock; the world's explosion list) and lists the sound events: one-shots (a launch, a hit, an explosion) and
 // loops the app must keep asking for (beams, missile flight, engine hum). The app turns them
 // into the audio engine's cues, the way a RenderView goes to the renderer. The list is a pure
 // function of the World's sequence, so a replay gives the same events every run.
@@ -32,6 +32,9 @@ enum class SoundKind : uint8_t {
   Explosion,       // size: the blast radius
   Afterburner,     // lit
   EngineHum,       // loop, per live ship; intensity follows the throttle
+  LockTick,        // the player's missile lock building: ticks that come faster as it fills
+  LockTone,        // loop while the player's lock is complete
+  Flare,           // a flare dropped
 };
 
 // The name of the kind's sound in assets/sounds/sounds.json (and in replay messages).
@@ -64,7 +67,12 @@ class SoundEventTracker {
   glm::dvec3 hit_point(const World& w, size_t target) const;
 
   std::vector<ShipMemory> ships_;
+  void lock_events(const World& w, std::vector<SoundEvent>& out);
+  void flare_events(const World& w, std::vector<SoundEvent>& out);
+
   std::vector<uint32_t> projectiles_;  // serials alive at the last call, sorted
+  std::vector<uint32_t> flares_;       // flare serials alive at the last call, sorted
+  int64_t next_lock_tick_ = 0;         // no lock tick before this tick
   int64_t tick_ = -1;
   bool primed_ = false;
 };

@@ -7,6 +7,7 @@
 
 #include "core/rng.h"
 #include "game/sim/geometry.h"
+#include "game/sim/seekers.h"
 #include "game/sim/wing.h"
 #include "game/sim/world.h"
 
@@ -215,8 +216,8 @@ void drive_ai(World& w, Ship& s) {
   const bool line_clear = !ally_in_line_of_fire(w, s, fwd, dist);
   if (line_clear && beam_ready && off < cone + 0.02 && dist < s.cls->beam.range * 0.95) c.buttons |= kFirePrimary;
   const Rng rng{w.seed, kAiStream + 0x100 + static_cast<uint64_t>(s.id.index()), static_cast<uint64_t>(w.tick)};
-  if (line_clear && s.cls->missile.present && !plasma && off < 0.35 && dist < 1500 && dist > 80 &&
-      rng.uniform(0) < 0.05 * tune.aggression)
+  if (line_clear && s.cls->missile.present && !plasma && missile_locked(w, s) && dist > 80 &&
+      rng.uniform(0) < 0.02 * tune.aggression)
     c.buttons |= kFireSecondary;
   if (line_clear && plasma && energy_frac > 0.25 && off < cone + 0.03 &&
       dist < s.cls->plasma.speed * s.cls->plasma.lifetime * 0.8)

@@ -1,7 +1,8 @@
 // game/sim/commands.cpp — a tick's discrete commands: pause and resume, the camera keys, the
-// player's target (next, nearest hostile, next hostile), secondary weapon and wing orders.
+// player's target (next, nearest hostile, next hostile), secondary weapon, flares and wing orders.
 #include "game/sim/commands.h"
 
+#include "game/sim/seekers.h"
 #include "game/sim/wing.h"
 #include "game/sim/world.h"
 
@@ -20,6 +21,8 @@ ShipId next_target(const World& w, ShipId self, ShipId current, bool hostile_onl
   return {};
 }
 
+}  // namespace
+
 // A wingman is never what a pilot reaching for the nearest target wants: hostiles only.
 ShipId nearest_hostile(const World& w, ShipId self) {
   ShipId best;
@@ -32,8 +35,6 @@ ShipId nearest_hostile(const World& w, ShipId self) {
   }
   return best;
 }
-
-}  // namespace
 
 void apply_commands(World& w, const std::vector<Command>& commands) {
   for (Command c : commands) {
@@ -51,6 +52,7 @@ void apply_commands(World& w, const std::vector<Command>& commands) {
     switch (c) {
       case Command::TargetNext: p.target = next_target(w, p.id, p.target, false); break;
       case Command::TargetNearest: p.target = nearest_hostile(w, p.id); break;
+      case Command::Countermeasure: drop_flare(w, p); break;
       case Command::TargetNextHostile: p.target = next_target(w, p.id, p.target, true); break;
       case Command::SwitchWeapon:
         if (p.cls->missile.present && p.cls->plasma.present)

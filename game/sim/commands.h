@@ -2,11 +2,16 @@
 #pragma once
 #include <vector>
 
+#include "game/sim/ids.h"
 #include "game/sim/input.h"
 
 namespace arc {
 
 class World;
+
+// The live hostile nearest to `self` (null if none): the target key's choice, and the player's
+// target at launch.
+ShipId nearest_hostile(const World& w, ShipId self);
 
 // Pause and resume; while running, the camera toggle and the player's target and weapon choice.
 void apply_commands(World& w, const std::vector<Command>& commands);

@@ -38,6 +38,24 @@ struct ProjectileWeaponDef {
   double lifetime = 6.0;        // seconds
   double turn_rate = 90.0;      // degrees per second (missiles home, plasma does not)
   double hit_radius = 1.0;
+  // Missiles only: a missile leaves only once its target was held within lock_cone of the nose
+  // and within lock_range for lock_time, and homes on it. In flight its
+  // seeker keeps the target only within seeker_cone of its heading (a target that turns out of
+  // it is lost), and flares inside that cone can pull it away.
+  double lock_time = 1.75;      // seconds
+  double lock_cone = 13.0;      // degrees off the nose
+  double lock_range = 1200.0;   // metres
+  double seeker_cone = 50.0;    // degrees off the missile's heading
+};
+
+// Flares: dropped on the countermeasure command, `count` per sortie, one per `cooldown`; each
+// lives `lifetime` and pulls every missile homing on its ship that has it in its seeker cone
+// with probability `decoy_chance` (drawn once per missile and flare from the keyed RNG).
+struct CountermeasureDef {
+  int count = 0;
+  double cooldown = 1.0;      // seconds between flares
+  double lifetime = 3.0;      // seconds
+  double decoy_chance = 0.7;  // 0..1
 };
 
 struct ShipClassDef {
@@ -64,6 +82,7 @@ struct ShipClassDef {
   BeamDef beam;
   ProjectileWeaponDef missile;
   ProjectileWeaponDef plasma;
+  CountermeasureDef countermeasures;
   std::vector<glm::dvec3> exhausts;  // engine exhaust points, ship-local
 };
 

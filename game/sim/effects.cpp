@@ -44,6 +44,7 @@ GameEffects resolve_game_effects(const EffectLibrary& library, const LevelDef& l
   fx.engine_exhaust = library.id("engine_exhaust");
   fx.missile_trail = library.id("missile_trail");
   fx.plasma_bolt = library.id("plasma_bolt");
+  fx.flare = library.id("flare");
   for (const EffectSpawnDef& e : level.effects) fx.level.push_back(library.id(e.effect));
   return fx;
 }

@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "game/sim/camera_rig.h"
+#include "game/sim/commands.h"
 #include "game/sim/effects.h"
 #include "game/sim/geometry.h"
 #include "game/sim/shields.h"
@@ -47,6 +48,7 @@ void add_ship(World& w, const ShipSpawnDef& d, bool waiting) {
   s.hull = s.cls->hull;
   s.shield = s.cls->shield;
   s.energy = s.cls->energy;
+  s.seeker.flares = s.cls->countermeasures.count;
   s.alive = !waiting;  // a wave's ships wait out of play until it arrives (waves.cpp)
   if (!s.cls->missile.present && s.cls->plasma.present) s.secondary = SecondaryWeapon::Plasma;
   if (d.player) w.player = s.id;
@@ -107,6 +109,8 @@ void init_world(World& w, LevelDef level, std::shared_ptr<const EffectLibrary> e
   pc.tick_seconds = w.dt;
   w.particles.emplace(pc, w.effects.get());
   add_ships(w);
+  // The player starts with the nearest hostile targeted, so the HUD shows it from the first frame.
+  if (w.player) w.ship(w.player).target = nearest_hostile(w, w.player);
   add_props(w);
   w.camera_mode = w.level.camera.mode == "cockpit" ? CameraMode::Cockpit
                   : w.level.camera.mode == "fixed" ? CameraMode::Fixed

@@ -8,10 +8,13 @@
 #include "game/sim/damage.h"
 #include "game/sim/effects.h"
 #include "game/sim/geometry.h"
+#include "game/sim/seekers.h"
 #include "game/sim/world.h"
 
 namespace arc {
 namespace {
+
+constexpr double kDecoyBurstRadius = 4.0;  // metres: a decoyed missile this near its flare bursts
 
 void end_projectile(World& w, Projectile& p) {
   if (p.kind == SecondaryWeapon::Missile) {
@@ -30,16 +33,18 @@ void fire_secondary(World& w, Ship& s) {
   const bool plasma = s.secondary == SecondaryWeapon::Plasma;
   const ProjectileWeaponDef& wd = plasma ? s.cls->plasma : s.cls->missile;
   if (!wd.present || s.secondary_cooldown > 0 || s.energy < wd.energy) return;
+  // A missile leaves only with a complete lock: a trigger held early fires the moment it locks.
+  if (!plasma && !missile_locked(w, s)) return;
   s.energy -= wd.energy;
   s.secondary_cooldown = wd.cooldown;
   s.stats.missiles_fired++;
+  if (plasma) s.stats.plasma_fired++;
   const glm::dvec3 hp = wd.hardpoints[s.hardpoint_cycle++ % wd.hardpoints.size()];
   Projectile p;
   p.serial = w.next_projectile_serial++;
   p.kind = s.secondary;
   p.owner = s.id;
   p.target = plasma ? ShipId{} : s.target;
-  if (p.target && !w.hostile(s, w.ship(p.target))) p.target = {};
   p.particle_owner = allocate_owner(w);
   p.position = p.prev_position = s.position + s.orientation * hp;
   p.velocity = s.velocity + forward_of(s.orientation) * wd.speed;
@@ -54,13 +59,32 @@ void fire_secondary(World& w, Ship& s) {
   w.projectiles.push_back(std::move(p));
 }
 
+// Where a homing missile steers: its decoy flare, else its target; none once the target has
+// left its seeker cone (it then flies straight on: a hard turn can shake it off).
+const glm::dvec3* seeker_aim(const World& w, Projectile& p) {
+  if (p.kind != SecondaryWeapon::Missile) return nullptr;
+  if (p.decoy != 0) {
+    const Flare* f = find_flare(w, p.decoy);
+    return f ? &f->position : nullptr;
+  }
+  if (!p.target || !w.ship(p.target).alive) return nullptr;
+  const glm::dvec3& at = w.ship(p.target).position;
+  const glm::dvec3 dir = safe_norm(p.velocity, glm::dvec3(0, 0, -1));
+  const double off = std::acos(std::clamp(glm::dot(dir, safe_norm(at - p.position, dir)), -1.0, 1.0));
+  if (off > w.ship(p.owner).cls->missile.seeker_cone * kDeg) {
+    p.target = {};
+    return nullptr;
+  }
+  return &at;
+}
+
 void move_projectiles(World& w) {
   for (Projectile& p : w.projectiles) {
     p.prev_position = p.position;
-    if (p.kind == SecondaryWeapon::Missile && p.target && w.ship(p.target).alive) {
+    if (const glm::dvec3* aim = seeker_aim(w, p)) {
       const double speed = safe_len(p.velocity);
       glm::dvec3 dir = safe_norm(p.velocity, glm::dvec3(0, 0, -1));
-      glm::dvec3 want = safe_norm(w.ship(p.target).position - p.position, dir);
+      glm::dvec3 want = safe_norm(*aim - p.position, dir);
       double angle = std::acos(std::clamp(glm::dot(dir, want), -1.0, 1.0));
       double step = p.turn_rate * w.dt;
       if (angle > 1e-9) {
@@ -79,11 +103,20 @@ void hit_projectiles(World& w) {
   size_t keep = 0;
   for (size_t i = 0; i < w.projectiles.size(); ++i) {
     Projectile& p = w.projectiles[i];
+    // A decoyed missile's fuse waits for its flare: it bursts there and passes through ships.
+    const Flare* decoy = p.decoy ? find_flare(w, p.decoy) : nullptr;
+    if (decoy && segment_sphere(p.prev_position, p.position, decoy->position, kDecoyBurstRadius) >= 0) {
+      SpawnParams sp;
+      sp.position = decoy->position;
+      spawn_fx(w, w.fx.hull_sparks, sp);
+      end_projectile(w, p);
+      continue;
+    }
     ShipId hit_ship;
     double best_t = 2.0;
     bool on_shield = false;
     for (const Ship& s : w.ships) {
-      if (!s.alive || s.id == p.owner) continue;
+      if (!s.alive || s.id == p.owner || decoy) continue;
       const bool shield_up = s.shield > 0;
       double r = (shield_up ? s.cls->shield_radius : s.cls->collision_radius) + p.hit_radius;
       double t = segment_sphere(p.prev_position, p.position, s.position, r);
@@ -97,8 +130,13 @@ void hit_projectiles(World& w) {
       sp.velocity = t.velocity;
       spawn_fx(w, on_shield ? w.fx.shield_hit : w.fx.hull_sparks, sp);
       if (w.hostile(w.ship(p.owner), t)) {
-        w.ship(p.owner).stats.missiles_hit++;
+        CombatStats& st = w.ship(p.owner).stats;
+        const double dealt_before = st.damage_dealt;
+        st.missiles_hit++;
         apply_damage(w, t, p.damage, point, p.owner);
+        const double dealt = st.damage_dealt - dealt_before;
+        if (p.kind == SecondaryWeapon::Plasma) st.plasma_hit++, st.plasma_damage += dealt;
+        else st.missile_damage += dealt;
       }
       end_projectile(w, p);
       continue;

@@ -32,8 +32,8 @@ namespace {
 
 constexpr uint64_t kMagic = snapshot::magic("ARCSNAP1");
 // 3: typed ids (ships, teams, model slots, particle owners) as their u32 values; 4: ship combat stats;
-// 5: the wing, the waves and the messages
-constexpr uint32_t kVersion = 5;
+// 5: the wing, the waves and the messages; 6: missile locks, flares and decoyed missiles
+constexpr uint32_t kVersion = 6;
 
 using snapshot::Reader;
 using snapshot::Writer;
@@ -141,6 +141,9 @@ struct WorldReading {
   }
   void after_read(Reader& in, const Projectile& p) {
     if (!p.owner) in.fail("projectile " + std::to_string(p.serial) + " has no owner");
+  }
+  void after_read(Reader& in, const Flare& f) {
+    if (!f.owner) in.fail("flare " + std::to_string(f.serial) + " has no owner");
   }
 };
 

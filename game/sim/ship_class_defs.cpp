@@ -45,6 +45,12 @@ ProjectileWeaponDef projectile_weapon(JsonObject& o, bool homing) {
   w.lifetime = o.number("lifetime", homing ? 8.0 : 3.0, 0.05, 600.0);
   w.turn_rate = homing ? o.number("turn_rate", 120.0, 0.0, 3600.0) : 0.0;
   w.hit_radius = o.number("hit_radius", 1.0, 0.0, 1000.0);
+  if (homing) {
+    w.lock_time = o.number("lock_time", 1.75, 0.0, 60.0);
+    w.lock_cone = o.number("lock_cone", 13.0, 0.5, 90.0);
+    w.lock_range = o.number("lock_range", 1200.0, 1.0, 1.0e5);
+    w.seeker_cone = o.number("seeker_cone", 50.0, 1.0, 180.0);
+  }
   o.finish();
   return w;
 }
@@ -94,6 +100,14 @@ ShipClassDef parse_ship_class_doc(const std::shared_ptr<const JsonDoc>& doc, con
   if (auto p = r.get("plasma")) {
     JsonObject o = p->object();
     c.plasma = projectile_weapon(o, false);
+  }
+  if (auto cm = r.get("countermeasures")) {
+    JsonObject o = cm->object();
+    c.countermeasures.count = static_cast<int>(o.integer("count", 8, 0, 100));
+    c.countermeasures.cooldown = o.number("cooldown", 1.0, 1.0 / 60.0, 60.0);
+    c.countermeasures.lifetime = o.number("lifetime", 3.0, 0.1, 30.0);
+    c.countermeasures.decoy_chance = o.number("decoy_chance", 0.7, 0.0, 1.0);
+    o.finish();
   }
   c.exhausts = points(r, "exhausts", 100.0, kMaxShipExhausts);
   r.finish();

@@ -12,6 +12,7 @@
 #include "game/sim/flight.h"
 #include "game/sim/outcome.h"
 #include "game/sim/projectiles.h"
+#include "game/sim/seekers.h"
 #include "game/sim/shields.h"
 #include "game/sim/waves.h"
 #include "game/sim/wing.h"
@@ -32,17 +33,19 @@ void step_world(World& w, const InputFrame& input, const std::vector<Command>& c
   for (Ship& s : w.ships) {
     if (!s.alive) continue;
     if (s.id == w.player && s.ai == AiKind::None) s.controls = input;
-    else if (s.ai == AiKind::Fighter) drive_ai(w, s);
+    else if (s.ai == AiKind::Fighter) drive_ai(w, s), defend_against_missiles(w, s);
     else if (s.ai == AiKind::Gunner) drive_gunner(w, s);
     else s.controls = InputFrame{};
     fly_ship(w, s);
   }
   collide_ships(w);
+  update_locks(w);
   for (Ship& s : w.ships) {
     if (!s.alive) continue;
     update_beam_trigger(w, s);
     fire_secondary(w, s);
   }
+  update_flares(w);
   move_projectiles(w);
   publish_owner_transforms(w);
   if (!w.level.effects.empty()) {

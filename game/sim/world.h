@@ -103,11 +103,14 @@ void visit_fields(A& a, V&& v) {
 // lines. Beam accuracy counts ticks: a tick the beam fires is a shot, one where any of its
 // channels stays on a hostile is a hit. Missile shots are every secondary projectile (missiles
 // and plasma bolts); a hit is one that strikes a hostile ship. Damage counts what shields and
-// hulls took, never more than was left of them.
+// hulls took, never more than was left of them; the plasma's share of the secondary shots and
+// the damage dealt by each secondary weapon are kept apart too (the beam's is the rest).
 struct CombatStats {
   double damage_dealt = 0, damage_taken = 0;
   int64_t beam_ticks = 0, beam_hit_ticks = 0;
   int64_t missiles_fired = 0, missiles_hit = 0;
+  int64_t plasma_fired = 0, plasma_hit = 0;
+  double missile_damage = 0, plasma_damage = 0;
 };
 
 template <fields::MaybeConst<CombatStats> C, class V>
@@ -118,6 +121,27 @@ void visit_fields(C& c, V&& v) {
   v("beam_hit_ticks", c.beam_hit_ticks, fields::saved, state_hash<3>);
   v("missiles_fired", c.missiles_fired, fields::saved, state_hash<4>);
   v("missiles_hit", c.missiles_hit, fields::saved, state_hash<5>);
+  v("plasma_fired", c.plasma_fired, fields::saved, state_hash<6>);
+  v("plasma_hit", c.plasma_hit, fields::saved, state_hash<7>);
+  v("missile_damage", c.missile_damage, fields::saved, state_hash<8>);
+  v("plasma_damage", c.plasma_damage, fields::saved, state_hash<9>);
+}
+
+// A ship's missile lock and flares (game/sim/seekers.h). The lock builds while the ship's
+// target stays within its missile's lock cone and range; lock_ticks counts those ticks.
+struct SeekerState {
+  ShipId lock_target;               // the ship the lock is building on (null: none)
+  int64_t lock_ticks = 0;           // ticks it has been held
+  int flares = 0;                   // flares left
+  int64_t flare_ready_tick = 0;     // no flare before this tick (the cooldown)
+};
+
+template <fields::MaybeConst<SeekerState> S, class V>
+void visit_fields(S& s, V&& v) {
+  v("lock_target", s.lock_target, ship_ref, state_hash<0>);
+  v("lock_ticks", s.lock_ticks, fields::saved, state_hash<1>);
+  v("flares", s.flares, fields::saved, state_hash<2>);
+  v("flare_ready_tick", s.flare_ready_tick, fields::saved, state_hash<3>);
 }
 
 // Shots that hit as a share of shots fired; 0 before the first shot.
@@ -167,6 +191,7 @@ struct Ship {
   double shown_exhaust_intensity = -1;
   AiState ai_state;
   CombatStats stats;
+  SeekerState seeker;
 };
 
 // A wave's ship before its wave arrives: not alive, never killed (game/sim/waves.h).
@@ -217,6 +242,7 @@ void visit_fields(S& s, V&& v) {
   v("shown_exhaust_intensity", s.shown_exhaust_intensity, fields::saved, presentation_hash<5>);
   v("ai_state", s.ai_state, fields::saved, state_hash<21>);
   v("stats", s.stats, fields::saved, state_hash<23>);
+  v("seeker", s.seeker, fields::saved, state_hash<24>);
   v("model", s.model, fields::not_saved, fields::unhashed);  // the class's model
 }
 
@@ -230,6 +256,7 @@ struct Projectile {
   double damage = 0, turn_rate = 0, hit_radius = 0;
   int64_t expire_tick = 0;
   EffectHandle trail;
+  uint32_t decoy = 0;       // serial of the flare it chases instead of its target (0: none)
 };
 
 // Damage, turn rate and hit radius come from the weapon's definition at the shot: unhashed.
@@ -248,6 +275,30 @@ void visit_fields(P& p, V&& v) {
   v("hit_radius", p.hit_radius, fields::saved, fields::unhashed);
   v("expire_tick", p.expire_tick, fields::saved, state_hash<6>);
   v("trail", p.trail, fields::saved, presentation_hash<1>);
+  v("decoy", p.decoy, fields::saved, state_hash<8>);
+}
+
+// A flare dropped against missiles: it drifts behind its ship, burns for its lifetime and
+// draws missiles that took it for their target (Projectile::decoy).
+struct Flare {
+  uint32_t serial = 0;      // from World::next_projectile_serial
+  ShipId owner;             // the ship that dropped it
+  OwnerId particle_owner;   // its glow is attached to this owner
+  glm::dvec3 position{0.0}, velocity{0.0}, prev_position{0.0};
+  int64_t expire_tick = 0;
+  EffectHandle fx;
+};
+
+template <fields::MaybeConst<Flare> F, class V>
+void visit_fields(F& f, V&& v) {
+  v("serial", f.serial, fields::saved, state_hash<0>);
+  v("owner", f.owner, ship_ref, state_hash<1>);
+  v("particle_owner", f.particle_owner, owner_ref, state_hash<2>);
+  v("position", f.position, fields::saved, state_hash<3>);
+  v("velocity", f.velocity, fields::saved, state_hash<4>);
+  v("prev_position", f.prev_position, fields::saved, presentation_hash<0>);
+  v("expire_tick", f.expire_tick, fields::saved, state_hash<5>);
+  v("fx", f.fx, fields::saved, presentation_hash<1>);
 }
 
 struct ExplosionEvent {
@@ -341,6 +392,7 @@ class World {
   std::vector<std::string> model_paths;  // every model the level needs (load only these), for ModelSlot
   std::vector<Ship> ships;
   std::vector<Projectile> projectiles;
+  std::vector<Flare> flares;
   std::vector<Prop> props;
   std::vector<ExplosionEvent> explosions;  // recent ones, for hull flashes
   std::shared_ptr<const EffectLibrary> effects;
@@ -397,6 +449,7 @@ void visit_fields(W& w, V&& v) {
   v("prev_camera", w.prev_camera, fields::saved, presentation_hash<5>);
   v("ships", w.ships, fields::checked, state_hash<8>, presentation_hash<0>);
   v("projectiles", w.projectiles, fields::saved, state_hash<9>, presentation_hash<1>);
+  v("flares", w.flares, fields::saved, state_hash<11>, presentation_hash<7>);
   v("props", w.props, fields::checked, fields::unhashed);
   v("explosions", w.explosions, fields::saved, presentation_hash<2>);
   v("particles", w.particles, fields::saved, presentation_hash<6>);  // its own snapshot; hash_summary

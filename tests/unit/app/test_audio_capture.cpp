@@ -20,7 +20,10 @@ const std::string kSounds = arc::data_root() + "/assets/sounds/sounds.json";
 Game shooter_and_drone() {
   const std::string ships = R"({ "name": "Shooter", "class": "viper", "team": "blue", "player": true },
     { "name": "Drone", "class": "viper", "team": "red", "ai": "none", "position": [0, 0, -200] })";
-  return Game::load_level(test::write_level("audio_beam.json", test::level_text(ships)), test::options());
+  Game g = Game::load_level(test::write_level("audio_beam.json", test::level_text(ships)), test::options());
+  // No target, so no missile lock: its tick and tone would sound through the quiet second.
+  g.world_mut().ships[0].target = {};
+  return g;
 }
 
 // RMS of both channels in each 100 ms window.

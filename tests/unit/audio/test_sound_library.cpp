@@ -26,7 +26,7 @@ std::string error_of(const std::string& text) {
 TEST(SoundLibrary, TheGameFileHasEverySound) {
   SoundLibraryDef lib = load_sound_library(kSounds);
   for (const char* name : {"beam", "beam_hit_shield", "beam_hit_hull", "shield_recharge", "missile_launch",
-                           "missile_flight", "plasma_shot", "explosion", "afterburner", "engine_hum", "ui_click",
+                           "missile_flight", "plasma_shot", "explosion", "afterburner", "engine_hum", "lock_tick", "lock_tone", "flare", "ui_click",
                            "victory", "defeat"})
     EXPECT_NE(lib.find(name), nullptr) << name;
 }

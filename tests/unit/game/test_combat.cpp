@@ -186,11 +186,12 @@ TEST(Shield, RegeneratesOnlyAfterTheDelay) {
   EXPECT_GT(w.ships[1].shield, after_hit);
 }
 
+// Locked on a target a little off the nose (game/sim/seekers.h), a missile turns onto it.
 TEST(Missiles, HomeOnTheTargetAndHit) {
-  Game g = facing_pair("missile.json", -300, "none", "", 150);
+  Game g = facing_pair("missile.json", -300, "none", "", 40);
   World& w = g.world_mut();
-  g.step(InputFrame{}, {Command::TargetNextHostile});
   ASSERT_EQ(w.ships[0].target, w.ships[1].id);
+  for (int i = 0; i < 120; ++i) g.step(InputFrame{});
   InputFrame f;
   f.buttons = kFireSecondary;
   g.step(f);

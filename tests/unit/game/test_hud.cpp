@@ -240,6 +240,41 @@ TEST(HudAim, EachSecondaryWeaponHasItsOwnLabelledCue) {
   EXPECT_FALSE(has_exact_text(plasma, "MSL"));
 }
 
+int red_lines(const HudLayer& h) {
+  return int(std::count_if(h.lines.begin(), h.lines.end(), [](const HudLine& l) { return l.color == kHudRed; }));
+}
+
+// The lock ring fills around the target over the lock time, then "LOCK" is written beside it.
+TEST(HudAim, LockRingFillsOverTheLockTimeThenSaysLock) {
+  Game g = range_game();
+  const World& w = g.world();
+  const int64_t needed = int64_t(std::llround(w.ships[0].cls->missile.lock_time / w.dt));
+  const HudLayer start = hud_of(w);
+  EXPECT_FALSE(has_exact_text(start, "LOCK"));
+  while (int64_t(g.tick()) < needed / 2) g.step(InputFrame{});
+  const HudLayer half = hud_of(w);
+  EXPECT_FALSE(has_exact_text(half, "LOCK"));
+  EXPECT_TRUE(has_exact_text(half, "MSL"));
+  while (int64_t(g.tick()) < needed + 2) g.step(InputFrame{});
+  const HudLayer locked = hud_of(w);
+  EXPECT_TRUE(has_exact_text(locked, "LOCK"));
+  EXPECT_FALSE(has_exact_text(locked, "MSL"));
+  // Half the ring's 32 strokes at half time; the locked cue's two rings replace the arc.
+  EXPECT_NEAR(red_lines(half) - red_lines(start), 16, 2);
+  EXPECT_GE(red_lines(locked) - red_lines(start), 60);
+}
+
+// The target is bracketed from the first frame, and the flares left are counted.
+TEST(Hud, TargetAtLaunchAndFlareCount) {
+  Game g = Game::load_level(test::repo("tests/replays/levels/range.json"), test::options());
+  const HudLayer h = hud_of(g.world());
+  EXPECT_TRUE(has_exact_text(h, "300 m"));
+  EXPECT_TRUE(has_exact_text(h, "MSL"));
+  EXPECT_TRUE(has_text(h, "flares 8"));
+  g.step(InputFrame{}, {Command::Countermeasure});
+  EXPECT_TRUE(has_text(hud_of(g.world()), "flares 7"));
+}
+
 TEST(HudAim, MissileReadyWithinReachAndCone) {
   Game g = range_game();
   World& w = g.world_mut();

@@ -64,8 +64,10 @@ TEST(SoundEvents, MissilesLaunchOnceAndFlyAsLoops) {
   SoundEventTracker tracker;
   tracker.collect(g.world());
   int launches = 0, flight = 0;
-  for (int t = 0; t < 30; ++t) {
-    g.step(buttons(t == 0 ? kFireSecondary : 0));
+  // The trigger held through the lock time: the missile leaves once the lock completes.
+  const int lock = int(std::llround(g.world().ships[0].cls->missile.lock_time / g.world().dt));
+  for (int t = 0; t < lock + 30; ++t) {
+    g.step(buttons(t <= lock ? kFireSecondary : 0));
     auto events = tracker.collect(g.world());
     launches += count(events, SoundKind::MissileLaunch);
     for (const SoundEvent& e : events)
@@ -77,6 +79,48 @@ TEST(SoundEvents, MissilesLaunchOnceAndFlyAsLoops) {
   }
   EXPECT_GE(launches, 1);
   EXPECT_GE(flight, 20);
+}
+
+// Holding the target in the lock cone: ticks that come faster, then a steady tone once locked.
+TEST(SoundEvents, LockTicksSpeedUpThenATone) {
+  Game g = shooter_and_drone("sound_lock.json");
+  const World& w = g.world();
+  SoundEventTracker tracker;
+  tracker.collect(w);
+  const int64_t needed = int64_t(std::llround(w.ships[0].cls->missile.lock_time / w.dt));
+  std::vector<int64_t> ticks;
+  int tones_before = 0, tones_after = 0, ticks_after = 0;
+  for (int64_t t = 0; t < needed + 30; ++t) {
+    g.step(InputFrame{});
+    auto events = tracker.collect(w);
+    for (const SoundEvent& e : events) {
+      if (e.kind == SoundKind::LockTick) (w.tick <= needed ? ticks.push_back(w.tick) : void(++ticks_after));
+      if (e.kind == SoundKind::LockTone) ++(w.tick < needed ? tones_before : tones_after);
+    }
+  }
+  ASSERT_GE(ticks.size(), 5u);
+  EXPECT_LT(ticks.back() - ticks[ticks.size() - 2], ticks[1] - ticks[0]) << "the ticks come faster";
+  EXPECT_EQ(tones_before, 0);
+  EXPECT_EQ(ticks_after, 0);
+  EXPECT_GE(tones_after, 29);
+  EXPECT_TRUE(is_loop(SoundKind::LockTone));
+  EXPECT_STREQ(sound_kind_name(SoundKind::LockTick), "lock_tick");
+}
+
+TEST(SoundEvents, AFlareSoundsOnceWhereItIsDropped) {
+  Game g = shooter_and_drone("sound_flare.json");
+  SoundEventTracker tracker;
+  tracker.collect(g.world());
+  int flares = 0;
+  for (int t = 0; t < 20; ++t) {
+    g.step(InputFrame{}, {t == 0 ? Command::Countermeasure : Command::None});
+    for (const SoundEvent& e : tracker.collect(g.world()))
+      if (e.kind == SoundKind::Flare) {
+        ++flares;
+        EXPECT_LT(glm::length(e.position - g.world().ships[0].position), 30.0);
+      }
+  }
+  EXPECT_EQ(flares, 1);
 }
 
 TEST(SoundEvents, AnExplosionIsScaledByTheBlast) {

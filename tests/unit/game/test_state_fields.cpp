@@ -75,7 +75,7 @@ TEST(StateFields, HashWordsOfEachPassAreNumberedWithoutGapsOrClashes) {
     EXPECT_EQ(check_hash_words(hash_slots(camera, pass)), "");
     EXPECT_EQ(check_hash_words(hash_slots(world, pass)), "");
   }
-  EXPECT_EQ(hash_slots(ship, kStateHashPass).size(), 24u);  // word 22: its particle owner, 23: its combat stats
+  EXPECT_EQ(hash_slots(ship, kStateHashPass).size(), 25u);  // word 22: its particle owner, 23: its combat stats, 24: its lock and flares
   EXPECT_EQ(hash_slots(ship, kPresentationHashPass).size(), 11u);
 }
 

@@ -1,5 +1,5 @@
 // Combat measured, not felt: the beam held dead on a stationary ship deals its nominal damage
-// over its whole stated range, a non-firing Viper at 300 m dies in 6–12 s, and a shield under
+// over its whole stated range, a non-firing Viper at 300 m dies in 10–20 s, and a shield under
 // sustained missile fire does not recover between hits. The figures are printed as test
 // properties (and on stdout) so a tuning change shows its effect:
 //
@@ -43,8 +43,8 @@ double beam_damage_fraction(double distance) {
   return (before - health(w.ships[1])) / (w.ships[0].cls->beam.damage_per_second * ticks * w.dt);
 }
 
-// Seconds until the drone dies with the beam held on it (and missiles, locked on it, when
-// `missiles`); −1 if it survives a minute.
+// Seconds until the drone dies with the beam held on it (and missiles when `missiles`: they
+// fly straight at it until the lock completes, then home); −1 if it survives a minute.
 double time_to_kill(double distance, bool missiles) {
   Game g = shooter_and_drone(distance);
   const World& w = g.world();
@@ -108,14 +108,14 @@ TEST(WeaponPayoff, EveryClassesChannelReachesItsRangeAlongTheAimLine) {
   }
 }
 
-TEST(WeaponPayoff, NonFiringViperAt300mDiesInSixToTwelveSeconds) {
+TEST(WeaponPayoff, NonFiringViperAt300mDiesInTenToTwentySeconds) {
   for (bool missiles : {false, true}) {
     const double ttk = time_to_kill(300.0, missiles);
     const std::string what = missiles ? "beam and missiles" : "beam";
     std::printf("time to kill at 300 m, %s: %.2f s\n", what.c_str(), ttk);
     RecordProperty(missiles ? "ttk_300_beam_missiles_s" : "ttk_300_beam_s", std::to_string(ttk));
-    EXPECT_GE(ttk, 6.0) << what;
-    EXPECT_LE(ttk, 12.0) << what;
+    EXPECT_GE(ttk, 10.0) << what;
+    EXPECT_LE(ttk, 20.0) << what;
   }
 }
 

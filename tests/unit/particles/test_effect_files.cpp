@@ -62,7 +62,7 @@ TEST(EffectFiles, ShippedEffectsLoad) {
   EffectLibrary lib;
   lib.load_directory("assets/effects");
   for (const char* n : {"lightning_beam", "shield_sphere", "shield_hit", "hull_sparks", "ship_explosion", "engine_exhaust",
-                        "missile_trail", "plasma_bolt"})
+                        "missile_trail", "plasma_bolt", "flare"})
     EXPECT_TRUE(lib.has(n)) << n;
   const EffectDef& boom = lib.get("ship_explosion");
   bool burns_to_smoke = false;
