@@ -106,7 +106,7 @@ void keep_own_effects_out_of_view(const World& w, ShipId ship, bool cockpit, con
   // near the eye, wherever they drift.
   std::vector<glm::dvec3> wrecks;
   for (const Ship& s : w.ships)
-    if (!s.alive && double(w.tick - s.death_tick) * w.dt < 4.0) wrecks.push_back(s.position - camera.position);
+    if (!s.alive && s.death_tick >= 0 && double(w.tick - s.death_tick) * w.dt < 4.0) wrecks.push_back(s.position - camera.position);
   auto in_explosion = [&](const glm::dvec3& at) {
     for (const glm::dvec3& c : wrecks)
       if (glm::dot(at - c, at - c) < 150.0 * 150.0) return true;

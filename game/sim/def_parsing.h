@@ -36,5 +36,9 @@ inline glm::dvec3 orientation(JsonObject& o) { return o.vec3("orientation", glm:
 
 // The optional "mission" block of a level (game/sim/mission_defs.cpp).
 void parse_mission(JsonObject& r, LevelDef& L);
+// The optional "training" block (game/sim/training_defs.cpp), read after the ships it names,
+// and the checks across it and the rest of the level.
+void parse_training(JsonObject& r, LevelDef& L);
+void check_training(JsonObject& r, const LevelDef& L);
 
 }  // namespace arc::defs_internal

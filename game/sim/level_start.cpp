@@ -10,6 +10,7 @@
 #include "game/sim/effects.h"
 #include "game/sim/geometry.h"
 #include "game/sim/shields.h"
+#include "game/sim/training.h"
 #include "game/sim/world.h"
 
 namespace arc {
@@ -50,6 +51,7 @@ void add_ships(World& w) {
     s.energy = s.cls->energy;
     if (!s.cls->missile.present && s.cls->plasma.present) s.secondary = SecondaryWeapon::Plasma;
     if (d.player) w.player = s.id;
+    if (d.inactive) s.alive = false;  // dormant until a training step spawns it
     w.ships.push_back(std::move(s));
   }
 }
@@ -67,24 +69,36 @@ void add_props(World& w) {
   }
 }
 
-void attach_ship_effects(World& w) {
-  for (Ship& s : w.ships) {
-    // Spawned at full intensity: the burst's particle count is scaled by the intensity of the
-    // first particle step, after which update_shields_and_energy() dims it to what it shows.
-    if (s.cls->shield > 0) spawn_shield(w, s, 4);
-    for (const glm::dvec3& e : s.cls->exhausts) {
-      SpawnParams ep;
-      ep.owner = s.particle_owner;
-      ep.position = e;
-      ep.orientation = glm::angleAxis(kPi, glm::dvec3(0, 1, 0));  // exhaust cone points backwards (+Z)
-      ep.scale = s.cls->collision_radius / 8.0;
-      ep.priority = 0;
-      s.exhaust_fx.push_back(spawn_fx(w, w.fx.engine_exhaust, ep));
-    }
+void attach_effects(World& w, Ship& s) {
+  // Spawned at full intensity: the burst's particle count is scaled by the intensity of the
+  // first particle step, after which update_shields_and_energy() dims it to what it shows.
+  if (s.cls->shield > 0) spawn_shield(w, s, 4);
+  for (const glm::dvec3& e : s.cls->exhausts) {
+    SpawnParams ep;
+    ep.owner = s.particle_owner;
+    ep.position = e;
+    ep.orientation = glm::angleAxis(kPi, glm::dvec3(0, 1, 0));  // exhaust cone points backwards (+Z)
+    ep.scale = s.cls->collision_radius / 8.0;
+    ep.priority = 0;
+    s.exhaust_fx.push_back(spawn_fx(w, w.fx.engine_exhaust, ep));
   }
 }
 
+void attach_ship_effects(World& w) {
+  for (Ship& s : w.ships)
+    if (!dormant(s)) attach_effects(w, s);
+}
+
 }  // namespace
+
+void arrive_ship(World& w, Ship& s) {
+  if (!dormant(s)) return;
+  s.alive = true;
+  s.prev_position = s.position;
+  s.prev_orientation = s.orientation;
+  set_owner(w, s.particle_owner, s.position, s.orientation, s.velocity);
+  attach_effects(w, s);
+}
 
 void init_world(World& w, LevelDef level, std::shared_ptr<const EffectLibrary> effects, const GameOptions& o) {
   w.options = o;
@@ -112,6 +126,7 @@ void init_world(World& w, LevelDef level, std::shared_ptr<const EffectLibrary> e
   try {
     w.fx = resolve_game_effects(*w.effects, w.level);
     attach_ship_effects(w);
+    start_training(w);
   } catch (const InputError& e) {
     throw InputError(w.level.path + ": " + e.what());
   }
