@@ -1,4 +1,5 @@
 // The live game in a window: run_window() and WindowSession's frame (set-up, devices, ticks, drawing).
+#include "game/app/key_remap.h"
 #include "game/app/window_loop.h"
 
 #include <cmath>
@@ -41,6 +42,7 @@ void WindowSession::report_screenshots(const std::vector<ScreenshotWriter::Done>
 void WindowSession::setup() {
   load_user_files_and_bindings();
   input_.emplace(bindings_);
+  hud_.key_names = key_names(bindings_);
   hud_.rules = load_hud_rules(data_file(game_options_.root_dir, "assets/settings/hud.json"));
   level_ = options_.level;
   if (!options_.level_given) {

@@ -1,5 +1,6 @@
 // WindowSession's games: the user's files and settings, starting, launching, restarting and
 // reloading a level, the recording's end, and what the menu and the pause screen ask for.
+#include "game/app/key_remap.h"
 #include "game/app/window_session.h"
 
 #include <algorithm>
@@ -174,6 +175,7 @@ void WindowSession::carry_out(const std::vector<MenuRequest>& requests) {
           bindings_ = menu_->bindings();
           apply_user_settings(menu_->settings(), bindings_);
           input_.emplace(bindings_);
+          hud_.key_names = key_names(bindings_);
           set_flight_scale();
           break;
         case K::Resume:  // Esc is both the pause key and the screen's Back: one resume
