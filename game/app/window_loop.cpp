@@ -69,7 +69,9 @@ void WindowSession::setup() {
   renderer_ = make_renderer();
   menu_->set_machine(renderer_->gl_renderer());  // the Graphics page rates the presets for it
   panel_ = std::make_unique<GamePanel>(game_options_.root_dir);
-  models_ = load_scene_resources(*renderer_, game_->world(), game_options_.root_dir);
+  load_sprites(*renderer_, game_options_.root_dir);
+  models_ = scene_models_.of(*renderer_, game_->world(), game_options_.root_dir);
+  if (menu_->has_main()) warm_launches();
   clock_.emplace(int(std::lround(1.0 / game_->tick_seconds())));
   hud_.show_fps = options_.show_fps;
   mouse_captured_ = !menu_->open();
@@ -101,6 +103,7 @@ void WindowSession::update(double frame_seconds) {
   const bool menu_open = menu_->open();
   handle_actions(menu_->over_game());
   if (menu_open) update_menu();
+  prepare_launch();
   handle_sound_keys(menu_open);
   const bool f1 = presses_between(previous_devices_, devices_, key_code("F1")) > 0;
   if (f1 && f1_toggles_panel(options_.dev, menu_->settings().developer_panel, panel_->open())) panel_->toggle();

@@ -48,9 +48,13 @@ Game& Game::operator=(Game&&) noexcept = default;
 Game::~Game() = default;
 
 Game Game::load_level(const std::string& level_path, const GameOptions& options) {
+  return load_level(level_path, options, nullptr);
+}
+
+Game Game::load_level(const std::string& level_path, const GameOptions& options, std::shared_ptr<ParticleStore> store) {
   Game g;
   std::shared_ptr<const EffectLibrary> fx = load_effect_library(options.root_dir);
-  init_world(*g.world_, load_level_def(level_path, options.root_dir, fx.get()), fx, options);
+  init_world(*g.world_, load_level_def(level_path, options.root_dir, fx.get()), fx, options, std::move(store));
   return g;
 }
 

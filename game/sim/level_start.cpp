@@ -12,6 +12,7 @@
 #include "game/sim/shields.h"
 #include "game/sim/training.h"
 #include "game/sim/world.h"
+#include "particles/particle_store.h"
 
 namespace arc {
 namespace {
@@ -100,7 +101,8 @@ void arrive_ship(World& w, Ship& s) {
   attach_effects(w, s);
 }
 
-void init_world(World& w, LevelDef level, std::shared_ptr<const EffectLibrary> effects, const GameOptions& o) {
+void init_world(World& w, LevelDef level, std::shared_ptr<const EffectLibrary> effects, const GameOptions& o,
+                std::shared_ptr<ParticleStore> store) {
   w.options = o;
   w.level = std::move(level);
   w.seed = o.seed_override ? o.seed : w.level.seed;
@@ -113,7 +115,8 @@ void init_world(World& w, LevelDef level, std::shared_ptr<const EffectLibrary> e
   pc.lightning_interval = o.lightning_interval;
   pc.cull_distance = o.cull_distance;
   pc.tick_seconds = w.dt;
-  w.particles.emplace(pc, w.effects.get());
+  if (store && store->in_use() > 0) store = nullptr;  // another world's particles are in it
+  w.particles.emplace(pc, w.effects.get(), std::move(store));
   add_ships(w);
   add_props(w);
   w.camera_mode = w.level.camera.mode == "cockpit" ? CameraMode::Cockpit
