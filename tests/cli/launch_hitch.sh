@@ -3,8 +3,7 @@
 # --frame-times; a mission launched as a player would (Enter on Play, on the first mission, on
 # Launch), flown for two seconds, then the game ended with SIGTERM. Prints the frame that
 # launched the mission and the first frame of the mission, in ms, and fails when either took
-# longer than BOUND_MS (default 150, generous for llvmpipe; a launch that made a new renderer,
-# compiling every shader, took over a second). Exits 77 (ctest: skipped) without xvfb-run or xdotool.
+# longer than BOUND_MS (default 150). Exits 77 (ctest: skipped) without xvfb-run or xdotool.
 set -u
 arcfire="$1"; out="$2"; bound="${3:-150}"
 source "$(dirname "$0")/../replays/live_window.sh"
