@@ -1,6 +1,8 @@
 // Headless frames: an EGL context, a Renderer with the level's resources, and read-back to an Image.
 #include "game/app/frame_renderer.h"
 
+#include "core/data_layers.h"
+#include "game/app/key_remap.h"
 #include "game/app/scene_resources.h"
 #include "game/render/render_view_builder.h"
 #include "game/sim/game.h"
@@ -16,6 +18,7 @@ struct FrameRenderer::Impl {
   std::unique_ptr<Renderer> renderer;
   std::vector<ModelId> models;  // the renderer's id of each of the level's model slots
   RenderView view;
+  HudState hud;  // headless frames: the default bindings' keys in training prompts
   Settings settings;
   std::vector<std::string> model_paths;  // the level the models were loaded for
 };
@@ -34,6 +37,7 @@ FrameRenderer::FrameRenderer(const FrameRendererDesc& desc, const Settings& sett
   }
   impl_->renderer->apply_settings(settings);
   impl_->settings = settings;
+  impl_->hud.key_names = key_names(load_bindings(data_file(desc.root_dir, "assets/settings/bindings.json")));
   impl_->models = load_scene_resources(*impl_->renderer, game.world(), desc.root_dir);
   impl_->model_paths = game.world().model_paths;
 }
@@ -63,7 +67,7 @@ Image FrameRenderer::render(const Game& game, double alpha, const HudState& hud,
 FrameRenderer::~FrameRenderer() = default;
 
 Image FrameRenderer::render(const Game& game, double alpha) {
-  build_render_view(game.world(), impl_->models, alpha, CameraSettings{}, HudState{}, impl_->desc.width, impl_->desc.height,
+  build_render_view(game.world(), impl_->models, alpha, CameraSettings{}, impl_->hud, impl_->desc.width, impl_->desc.height,
                     impl_->view);
   impl_->renderer->render(impl_->view, impl_->desc.width, impl_->desc.height);
   return impl_->renderer->read_pixels();

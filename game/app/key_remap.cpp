@@ -93,6 +93,13 @@ int bound_key(const Bindings& b, const std::string& action) {
   return code_in(action, *s);
 }
 
+std::map<std::string, std::string> key_names(const Bindings& b) {
+  std::map<std::string, std::string> out;
+  for (const RemapAction& a : remap_actions())
+    if (!is_pad_action(a.id)) out[a.id] = key_label(bound_key(b, a.id));
+  return out;
+}
+
 std::string key_label(int code) {
   if (code < 0) return "NONE";
   if (is_pad_code(code)) {

@@ -44,6 +44,10 @@ std::map<std::string, std::string> key_overrides(const Bindings& now, const Bind
 // Applies such overrides (unknown ids and key names were rejected when the file was read).
 void apply_key_overrides(const std::map<std::string, std::string>& keys, Bindings& b);
 
+// Every keyboard action's key name (key_label), by action id: what the HUD's training prompts
+// show for their {action} placeholders.
+std::map<std::string, std::string> key_names(const Bindings& b);
+
 // A key's name for the screen and settings.json ("NONE" for −1, PAD_A for a gamepad button).
 std::string key_label(int code);
 // The code of such a name, −1 for none or an unknown name.

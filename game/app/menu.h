@@ -123,6 +123,8 @@ class Menu {
   const Progress& progress() const { return files_.progress; }
   const Bindings& bindings() const { return bindings_; }
   Difficulty difficulty() const { return difficulty_; }
+  // The level whose briefing is on screen ("" on any other screen): what Launch would start.
+  std::string briefing_level() const { return screen_ == MenuScreen::Briefing ? chosen_ : ""; }
 
  private:
   enum class Item;

@@ -1,4 +1,5 @@
 // The live game in a window: run_window() and WindowSession's frame (set-up, devices, ticks, drawing).
+#include "game/app/key_remap.h"
 #include "game/app/window_loop.h"
 
 #include <cmath>
@@ -42,6 +43,7 @@ void WindowSession::report_screenshots(const std::vector<ScreenshotWriter::Done>
 void WindowSession::setup() {
   load_user_files_and_bindings();
   input_.emplace(bindings_);
+  hud_.key_names = key_names(bindings_);
   hud_.rules = load_hud_rules(data_file(game_options_.root_dir, "assets/settings/hud.json"));
   level_ = options_.level;
   if (!options_.level_given) {
@@ -71,7 +73,9 @@ void WindowSession::setup() {
   renderer_ = make_renderer();
   menu_->set_machine(renderer_->gl_renderer());  // the Graphics page rates the presets for it
   panel_ = std::make_unique<GamePanel>(game_options_.root_dir);
-  models_ = load_scene_resources(*renderer_, game_->world(), game_options_.root_dir);
+  load_sprites(*renderer_, game_options_.root_dir);
+  models_ = scene_models_.of(*renderer_, game_->world(), game_options_.root_dir);
+  if (menu_->has_main()) warm_launches();
   clock_.emplace(int(std::lround(1.0 / game_->tick_seconds())));
   hud_.show_fps = options_.show_fps;
   mouse_captured_ = !menu_->open();
@@ -104,6 +108,7 @@ void WindowSession::update(double frame_seconds) {
   handle_actions(menu_->over_game());
   if (menu_->open() || game_->paused()) input_->close_comms();  // the menu has the keys
   if (menu_open) update_menu();
+  prepare_launch();
   handle_sound_keys(menu_open);
   const bool f1 = presses_between(previous_devices_, devices_, key_code("F1")) > 0;
   if (f1 && f1_toggles_panel(options_.dev, menu_->settings().developer_panel, panel_->open())) panel_->toggle();

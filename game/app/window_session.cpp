@@ -1,8 +1,10 @@
 // WindowSession's games: the user's files and settings, starting, launching, restarting and
 // reloading a level, the recording's end, and what the menu and the pause screen ask for.
+#include "game/app/key_remap.h"
 #include "game/app/window_session.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -63,11 +65,20 @@ void WindowSession::start_game(std::unique_ptr<Game> fresh) {
   set_flight_scale();
 }
 
-// Model slots are positions in the level's model list: another list reloads them all.
+// Model slots are positions in the level's model list; the renderer keeps every model it has
+// loaded (and its compiled shaders), so only a model it lacks is loaded here.
 void WindowSession::load_models_for(const Game& fresh) {
-  if (fresh.world().model_paths == game_->world().model_paths) return;
-  renderer_ = make_renderer();
-  models_ = load_scene_resources(*renderer_, fresh.world(), game_options_.root_dir);
+  models_ = scene_models_.of(*renderer_, fresh.world(), game_options_.root_dir);
+}
+
+// At the menu, what a launch would otherwise load in its first frame: every listed level's
+// models, and a particle store written through.
+void WindowSession::warm_launches() {
+  std::vector<std::string> levels;
+  for (const MissionInfo& m : load_mission_catalog(game_options_.root_dir + "/levels", game_options_.root_dir))
+    levels.push_back(m.path);
+  scene_models_.warm(*renderer_, levels, game_options_.root_dir);
+  spare_store_ = std::make_shared<ParticleStore>(game_options_.particle_budget);
 }
 
 void WindowSession::set_flight_scale() {
@@ -92,14 +103,52 @@ void WindowSession::end_recording(const char* why) {
 
 std::string WindowSession::attract_level() const { return data_file(game_options_.root_dir, "levels/attract.json"); }
 
+// On a mission's briefing, the game Launch would start is loaded on a worker thread (a Game is
+// plain data, no GL), at the difficulty shown: the launch frame only takes it.
+void WindowSession::prepare_launch() {
+  std::erase_if(retired_, [](std::future<std::unique_ptr<Game>>& f) {
+    return f.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
+  });
+  const std::string level = menu_ && menu_->has_main() ? menu_->briefing_level() : "";
+  if (level.empty()) return;
+  GameOptions o = game_options_;
+  o.difficulty = menu_->difficulty();
+  o.difficulty_override = true;
+  if (prepared_ && prepared_->level == level && prepared_->options == o) return;
+  if (prepared_) retired_.push_back(std::move(prepared_->game));  // not waited for here
+  prepared_ = PreparedLaunch{level, o, std::async(std::launch::async, [level, o] {
+                               return std::make_unique<Game>(Game::load_level(level, o));
+                             })};
+}
+
+// The prepared game when it is the one asked for (same level and options); else nothing, and a
+// level that failed to load there is loaded again to report its error.
+std::unique_ptr<Game> WindowSession::take_prepared(const std::string& level) {
+  std::optional<PreparedLaunch> p = std::move(prepared_);
+  prepared_.reset();
+  if (!p || p->level != level || !(p->options == game_options_)) {
+    if (p) retired_.push_back(std::move(p->game));
+    return nullptr;
+  }
+  try {
+    return p->game.get();
+  } catch (const InputError&) {
+    return nullptr;
+  }
+}
+
 void WindowSession::launch(const std::string& level, Difficulty difficulty) {
   end_recording("launch of another level");
   game_options_.difficulty = difficulty;
   game_options_.difficulty_override = true;
-  auto fresh = std::make_unique<Game>(Game::load_level(level, game_options_));
+  std::unique_ptr<Game> fresh = take_prepared(level);
+  if (!fresh) fresh = std::make_unique<Game>(Game::load_level(level, game_options_, std::move(spare_store_)));
   load_models_for(*fresh);
   level_ = level;
+  std::shared_ptr<ParticleStore> last = game_->world().particles->store();
   start_game(std::move(fresh));
+  // The last game is gone: its store, every block given back, waits for the next launch.
+  if (last.use_count() == 1 && last->in_use() == 0) spare_store_ = std::move(last);
   clock_.emplace(int(std::lround(1.0 / game_->tick_seconds())));
   mission_running_ = level != attract_level();
   results_at_ = -1;
@@ -174,6 +223,7 @@ void WindowSession::carry_out(const std::vector<MenuRequest>& requests) {
           bindings_ = menu_->bindings();
           apply_user_settings(menu_->settings(), bindings_);
           input_.emplace(bindings_);
+          hud_.key_names = key_names(bindings_);
           set_flight_scale();
           break;
         case K::Resume:  // Esc is both the pause key and the screen's Back: one resume

@@ -8,6 +8,7 @@
 // progress are kept in user_config_dir() either way. window_loop.cpp has the frame (devices,
 // ticks, drawing); window_session.cpp the games it starts and what the menus ask for.
 #pragma once
+#include <future>
 #include <memory>
 #include <optional>
 #include <string>
@@ -21,6 +22,7 @@
 #include "game/app/hot_reload.h"
 #include "game/app/input_bindings.h"
 #include "game/app/menu.h"
+#include "game/app/scene_resources.h"
 #include "game/app/screen_notices.h"
 #include "game/app/session_recorder.h"
 #include "game/app/user_settings.h"
@@ -29,6 +31,7 @@
 #include "game/sim/world.h"
 #include "game/workbench/game_panel.h"
 #include "gfx/renderer.h"
+#include "particles/particle_store.h"
 #include "platform/platform.h"
 
 namespace arc {
@@ -65,6 +68,9 @@ class WindowSession {
   Settings user_render_settings() const;
   void start_game(std::unique_ptr<Game> fresh);
   void load_models_for(const Game& fresh);
+  void warm_launches();
+  void prepare_launch();
+  std::unique_ptr<Game> take_prepared(const std::string& level);
   void set_flight_scale();
   void launch(const std::string& level, Difficulty difficulty);
   void restart();
@@ -94,6 +100,19 @@ class WindowSession {
   DevPanelGate panel_gate_;            // the panel pauses the fight while it is open
   std::unique_ptr<GamePanel> panel_;  // F1: every setting live, and the effects (game/workbench/game_panel.h)
   std::vector<ModelId> models_;  // the renderer's id of each of the level's model slots
+  SceneModels scene_models_;     // every model the renderer holds, by path
+  // A particle store written through ahead of the next launch (the last game's, once free), so
+  // a launch does not allocate and clear one in its first frame.
+  std::shared_ptr<ParticleStore> spare_store_;
+  // The game the briefing on screen would launch, loading on a worker (prepare_launch()), and
+  // those no longer wanted, kept until their worker is done so that dropping one never waits.
+  struct PreparedLaunch {
+    std::string level;
+    GameOptions options;
+    std::future<std::unique_ptr<Game>> game;
+  };
+  std::optional<PreparedLaunch> prepared_;
+  std::vector<std::future<std::unique_ptr<Game>>> retired_;
   std::unique_ptr<Game> game_;
   std::unique_ptr<SessionRecorder> recorder_;
   std::unique_ptr<AudioSession> audio_;  // sounds.json is checked before the window opens

@@ -11,6 +11,7 @@
 #include "game/render/hud_comms.h"
 #include "game/render/hud_draw.h"
 #include "game/render/hud_radar.h"
+#include "game/render/hud_training.h"
 #include "game/render/screen_projection.h"
 #include "game/sim/world.h"
 
@@ -316,7 +317,15 @@ void layout_hud(const World& w, const CameraView& cam, const HudState& state, do
     const Projector pr = Projector::of(cam, width, height);
     const ShipId focus = w.focus_ship();
     const bool flying = focus && w.ship(focus).alive && w.camera_mode != CameraMode::Fixed;
-    marks.panel("objective", [&] { feed_y = hud_objective(w.level.objective, flying, width, height, h); });
+    if (training_prompt_shown(w)) {
+      // The training step's prompt takes the objective's place, in the room the target panel leaves.
+      const double x1 = flying ? width - target_panel_width(height) - kSideMargin * height_scale(height) : width - kLeftMargin;
+      marks.panel("training", [&] {
+        feed_y = std::max(feed_y, hud_training_prompt(w, state.key_names, kLeftMargin, x1, 12, width, h) + 6);
+      });
+    } else {
+      marks.panel("objective", [&] { feed_y = hud_objective(w.level.objective, flying, width, height, h); });
+    }
     labels(w, pr, width, height, h);
     marks.panel("kill feed",
                 [&] { layout_kill_feed(w, flying ? &w.ship(focus) : nullptr, state.rules, kLeftMargin, feed_y, h); });

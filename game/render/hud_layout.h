@@ -20,6 +20,7 @@
 // HudState is what the app knows and the World does not: whether the HUD and the FPS counter
 // are on, the measured frame rate, the reticle, the comms menu, and the notice and error texts.
 #pragma once
+#include <map>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,9 @@ struct HudState {
   std::string notice;        // one line above the radar (e.g. "Recording stopped ...")
   std::string error_banner;  // a failed hot reload, wrapped within the screen below the objective
   HudRules rules;           // tunable numbers (assets/settings/hud.json), also the own-effect view rules
+  // Remappable action id → its key's name ("target_nearest" → "R"), for training prompts
+  // (hud_training.h); the app fills it from the live bindings.
+  std::map<std::string, std::string> key_names;
 };
 
 // A decided fight's verdict: "VICTORY" or "DEFEAT" for the player, else "TEAM NAME WINS".

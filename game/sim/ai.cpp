@@ -229,6 +229,22 @@ void drive_ai(World& w, Ship& s) {
   s.controls = c;
 }
 
+// Straight ahead until AiState::mode_until (set when it arrives), then slow circles, at a third of
+// its speed; it fires its missile once at a target a training step gave it, then forgets the
+// target (with the missile on its way, the cooldown is running).
+void drive_drone(const World& w, Ship& s) {
+  InputFrame c;
+  c.throttle = quantise_axis(0.35);
+  if (w.tick >= s.ai_state.mode_until) c.yaw = quantise_axis(0.12);
+  c.roll = quantise_axis(-0.3 * s.angular_velocity.z);
+  if (s.target && (!w.ship(s.target).alive || s.secondary_cooldown > 0)) s.target = {};
+  if (s.target) {
+    steer_toward(s, safe_norm(w.ship(s.target).position - s.position, forward_of(s.orientation)), 1.0, c);
+    c.buttons |= kFireSecondary;
+  }
+  s.controls = c;
+}
+
 void drive_gunner(const World& w, Ship& s) {
   InputFrame c;
   // Three seconds on, one off: the beam's energy drain outpaces regeneration only slightly.

@@ -1,4 +1,4 @@
-// game/sim/ai.h — the AI pilots (game/sim/ai.cpp): fighters and gunners set a ship's controls.
+// game/sim/ai.h — the AI pilots (game/sim/ai.cpp): fighters, gunners and drones set a ship's controls.
 #pragma once
 #include "game/sim/world.h"
 
@@ -12,5 +12,7 @@ const AiDifficultyDef& ai_difficulty(const World& w);
 void drive_ai(World& w, Ship& s);
 // A gunner: holds still and fires every weapon straight ahead in bursts.
 void drive_gunner(const World& w, Ship& s);
+// A training drone: flies slow circles; fires its missile once at a target a training step gives it.
+void drive_drone(const World& w, Ship& s);
 
 }  // namespace arc

@@ -51,5 +51,9 @@ void require_named_file(const JsonValue& v, const std::string& named, const std:
 ShipSpawnDef parse_ship_entry(JsonObject& s, LevelDef& L, const std::string& root_dir, std::set<std::string>& names);
 // The optional "waves" list, after "ships" (game/sim/wave_defs.cpp).
 void parse_waves(JsonObject& r, LevelDef& L, const std::string& root_dir);
+// The optional "training" block (game/sim/training_defs.cpp), read after the ships it names,
+// and the checks across it and the rest of the level.
+void parse_training(JsonObject& r, LevelDef& L);
+void check_training(JsonObject& r, const LevelDef& L);
 
 }  // namespace arc::defs_internal

@@ -19,6 +19,8 @@
 #include <vector>
 #include <glm/vec3.hpp>
 
+#include "game/sim/input.h"
+
 namespace arc {
 
 struct BeamDef {
@@ -87,8 +89,9 @@ struct ShipClassDef {
 };
 
 // Gunner: holds still and fires every weapon straight ahead in bursts (the effect gallery).
-enum class AiKind : uint8_t { None = 0, Fighter = 1, Gunner = 2 };
-constexpr AiKind last_enumerator(AiKind) { return AiKind::Gunner; }
+// Drone: a training target that flies slow circles and fires only when a training step tells it.
+enum class AiKind : uint8_t { None = 0, Fighter = 1, Gunner = 2, Drone = 3 };
+constexpr AiKind last_enumerator(AiKind) { return AiKind::Drone; }
 
 struct ShipSpawnDef {
   std::string name;
@@ -102,6 +105,8 @@ struct ShipSpawnDef {
   glm::dvec3 position{0.0};
   glm::dvec3 orientation_deg{0.0};  // yaw, pitch, roll
   glm::dvec3 velocity{0.0};
+  // Absent until a training step spawns it ("inactive": true): a ship that has not arrived.
+  bool inactive = false;
 };
 
 // A reinforcement wave ("waves"): its ships enter the fight at once when the trigger holds,
@@ -139,7 +144,7 @@ struct EffectSpawnDef {
   glm::dvec3 label_at{0.0};
 };
 
-enum class WinKind : uint8_t { DestroyAllHostiles = 0, SurviveTicks = 1, LastTeamStanding = 2 };
+enum class WinKind : uint8_t { DestroyAllHostiles = 0, SurviveTicks = 1, LastTeamStanding = 2, TrainingComplete = 3 };
 enum class LoseKind : uint8_t { PlayerDestroyed = 0, Protect = 1, None = 2 };
 
 struct CameraHintDef {
@@ -174,6 +179,31 @@ struct MissionDef {
   MissionCategory category = MissionCategory::Mission;
 };
 
+// The optional "training" block (game/sim/training_defs.cpp): steps that each wait for the player
+// to do one thing. The prompt's {action} placeholders name remappable key actions; the HUD
+// fills them from the live bindings.
+enum class TrainingCondition : uint8_t {
+  TurnedDegrees,       // the nose has turned `value` degrees in all since the step began
+  SpeedAbove,          // the player's speed exceeds `value` m/s
+  AfterburnerSeconds,  // the afterburner has burned `value` seconds since the step began
+  TargetSelected,      // the player targets `ship` (any ship when empty)
+  ShipDestroyed,       // `ship` has been destroyed
+  MissileHit,          // one of the player's missiles (or plasma bolts) struck a hostile
+  CommandIssued,       // the player issued one of `commands`
+  WaitSeconds,         // `value` seconds have passed since the step began
+};
+struct TrainingStepDef {
+  std::string prompt;
+  TrainingCondition until = TrainingCondition::WaitSeconds;
+  double value = 0;
+  std::string ship;
+  std::vector<Command> commands;
+  std::vector<std::string> spawn;  // inactive ships that arrive when the step begins
+  std::string fire_at_player;      // a drone that fires its missile at the player when the step begins
+};
+struct TrainingDef {
+  std::vector<TrainingStepDef> steps;
+};
 struct LevelDef {
   std::string path;
   std::string name;
@@ -201,6 +231,7 @@ struct LevelDef {
   std::map<std::string, glm::dvec3> team_colors;
   AiDifficultyTable ai;  // the AI pilots at each difficulty
   MissionDef mission;    // "mission": present only in levels the menu lists
+  TrainingDef training;  // "training": steps for the player, empty in other levels
 };
 
 class EffectLibrary;

@@ -48,9 +48,13 @@ Game& Game::operator=(Game&&) noexcept = default;
 Game::~Game() = default;
 
 Game Game::load_level(const std::string& level_path, const GameOptions& options) {
+  return load_level(level_path, options, nullptr);
+}
+
+Game Game::load_level(const std::string& level_path, const GameOptions& options, std::shared_ptr<ParticleStore> store) {
   Game g;
   std::shared_ptr<const EffectLibrary> fx = load_effect_library(options.root_dir);
-  init_world(*g.world_, load_level_def(level_path, options.root_dir, fx.get()), fx, options);
+  init_world(*g.world_, load_level_def(level_path, options.root_dir, fx.get()), fx, options, std::move(store));
   return g;
 }
 
@@ -88,6 +92,10 @@ static void hash_leaf(FastHasher& h, const EffectHandle& e) {
 // Per-cluster summaries: particle state is a closed-form function of them (full_hash() hashes
 // every particle as well).
 static void hash_leaf(FastHasher& h, const std::optional<ParticleWorld>& p) { p->hash_summary(h); }
+// Nothing at all outside training levels, so their hashes are those of a world without it.
+static void hash_leaf(FastHasher& h, const std::optional<TrainingProgress>& t) {
+  if (t) fields::hash_pass<kStateHashPass>(h, *t);
+}
 
 static void dump_leaf(std::ostream& o, const InputFrame& f) {
   o << "(p" << int(f.pitch) << " y" << int(f.yaw) << " r" << int(f.roll) << " t" << int(f.throttle) << " x"
@@ -100,6 +108,10 @@ static void dump_leaf(std::ostream& o, const EffectHandle& e) {
   o << " ]";
 }
 static void dump_leaf(std::ostream& o, const ShipClassDef* c) { o << c->name; }
+static void dump_leaf(std::ostream& o, const std::optional<TrainingProgress>& t) {
+  if (!t) o << "(none)";
+  else o << "(step " << t->step << " since " << t->step_tick << " progress " << t->progress << " hits " << t->missile_hits_before << ')';
+}
 static void dump_leaf(std::ostream& o, const std::optional<ParticleWorld>& p) {
   const ParticleStats st = p->stats();
   o << "(live " << st.live_particles << " clusters " << st.live_clusters << " refused " << st.refused_particles << ')';
@@ -179,6 +191,7 @@ std::string Game::summary_json() const {
     ships.push_back(std::move(e));
   }
   j["ships"] = std::move(ships);
+  if (w.training) j["training"] = {{"step", w.training->step}, {"steps", w.level.training.steps.size()}};
   ParticleStats st = w.particles->stats();
   j["particles"] = st.live_particles;
   j["clusters"] = st.live_clusters;

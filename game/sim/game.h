@@ -19,6 +19,7 @@
 namespace arc {
 
 class World;  // game/sim/world.h: ships, projectiles, particle world, level state
+class ParticleStore;  // particles/particle_store.h: the memory a particle world's pools take
 
 enum class Difficulty : uint8_t { Easy = 0, Normal = 1, Hard = 2 };
 constexpr Difficulty last_enumerator(Difficulty) { return Difficulty::Hard; }
@@ -37,11 +38,15 @@ struct GameOptions {
   int substeps = 1;
   double cull_distance = 20000.0;  // particle clusters farther from the camera are not animated or drawn
   std::string root_dir = ".";  // where assets/ lives (files named in levels are relative to it)
+  bool operator==(const GameOptions&) const = default;
 };
 
 class Game {
  public:
   static Game load_level(const std::string& level_path, const GameOptions& options);
+  // The same with its particles in `store` when it is large enough and unused (the window keeps
+  // one warm, so a launch does not write a new store through); nothing simulated depends on it.
+  static Game load_level(const std::string& level_path, const GameOptions& options, std::shared_ptr<ParticleStore> store);
   Game(const Game&);             // deep copy: the serialization test runs a copy beside the original
   Game& operator=(const Game&);
   Game(Game&&) noexcept;

@@ -31,9 +31,10 @@ void parse_team_colors(JsonObject& r, LevelDef& L) {
 void parse_rules(JsonObject& r, LevelDef& L) {
   JsonObject win = r.require_object("win");
   std::string wk = win.choice("type", "destroy_all_hostiles",
-                              {"destroy_all_hostiles", "survive_ticks", "last_team_standing"});
+                              {"destroy_all_hostiles", "survive_ticks", "last_team_standing", "training_complete"});
   L.win = wk == "destroy_all_hostiles" ? WinKind::DestroyAllHostiles
           : wk == "survive_ticks"      ? WinKind::SurviveTicks
+          : wk == "training_complete"  ? WinKind::TrainingComplete
                                        : WinKind::LastTeamStanding;
   if (L.win == WinKind::SurviveTicks) L.win_ticks = win.require("ticks").integer(1, 100000000);
   win.finish();
@@ -193,11 +194,12 @@ ShipSpawnDef defs_internal::parse_ship_entry(JsonObject& s, LevelDef& L, const s
   d.team = s.require_string("team");
   d.player = s.boolean("player", false);
   d.wing = s.boolean("wing", false);
-  std::string ai = s.choice("ai", d.player ? "none" : "fighter", {"none", "fighter", "gunner"});
-  d.ai = ai == "none" ? AiKind::None : ai == "fighter" ? AiKind::Fighter : AiKind::Gunner;
+  std::string ai = s.choice("ai", d.player ? "none" : "fighter", {"none", "fighter", "gunner", "drone"});
+  d.ai = ai == "none" ? AiKind::None : ai == "fighter" ? AiKind::Fighter : ai == "gunner" ? AiKind::Gunner : AiKind::Drone;
   d.position = s.vec3("position", glm::dvec3(0.0), -kSpace, kSpace);
   d.orientation_deg = orientation(s);
   d.velocity = s.vec3("velocity", glm::dvec3(0.0), -1.0e5, 1.0e5);
+  d.inactive = s.boolean("inactive", false);
   s.finish();
   if (!names.insert(d.name).second) s.fail_key("name", "ship name '" + d.name + "' is used twice");
   load_class_of(L, d, cls, root_dir);
@@ -222,6 +224,8 @@ LevelDef parse_level_doc(std::shared_ptr<const JsonDoc> doc, const std::string& 
   parse_camera(r, L);
   parse_team_colors(r, L);
   parse_mission(r, L);
+  parse_training(r, L);
+  check_training(r, L);
   check_protected_ship(r, L);
   r.finish();
   L.ai = load_ai_difficulties(root_dir);

@@ -11,7 +11,9 @@
 #include "game/sim/effects.h"
 #include "game/sim/geometry.h"
 #include "game/sim/shields.h"
+#include "game/sim/training.h"
 #include "game/sim/world.h"
+#include "particles/particle_store.h"
 
 namespace arc {
 namespace {
@@ -49,7 +51,9 @@ void add_ship(World& w, const ShipSpawnDef& d, bool waiting) {
   s.shield = s.cls->shield;
   s.energy = s.cls->energy;
   s.seeker.flares = s.cls->countermeasures.count;
-  s.alive = !waiting;  // a wave's ships wait out of play until it arrives (waves.cpp)
+  // A wave's ships wait out of play until it arrives (waves.cpp); an "inactive" ship until a
+  // training step calls it (training.cpp).
+  s.alive = !waiting && !d.inactive;
   if (!s.cls->missile.present && s.cls->plasma.present) s.secondary = SecondaryWeapon::Plasma;
   if (d.player) w.player = s.id;
   if (d.wing) w.wing.push_back({s.id, WingOrder::EngageAtWill, ShipId{}, int32_t(w.wing.size() + 1)});
@@ -94,7 +98,17 @@ void attach_ship_effects(World& w, Ship& s) {
   }
 }
 
-void init_world(World& w, LevelDef level, std::shared_ptr<const EffectLibrary> effects, const GameOptions& o) {
+void arrive_ship(World& w, Ship& s) {
+  if (!dormant(s)) return;
+  s.alive = true;
+  s.prev_position = s.position;
+  s.prev_orientation = s.orientation;
+  set_owner(w, s.particle_owner, s.position, s.orientation, s.velocity);
+  attach_ship_effects(w, s);
+}
+
+void init_world(World& w, LevelDef level, std::shared_ptr<const EffectLibrary> effects, const GameOptions& o,
+                std::shared_ptr<ParticleStore> store) {
   w.options = o;
   w.level = std::move(level);
   w.seed = o.seed_override ? o.seed : w.level.seed;
@@ -107,7 +121,8 @@ void init_world(World& w, LevelDef level, std::shared_ptr<const EffectLibrary> e
   pc.lightning_interval = o.lightning_interval;
   pc.cull_distance = o.cull_distance;
   pc.tick_seconds = w.dt;
-  w.particles.emplace(pc, w.effects.get());
+  if (store && store->in_use() > 0) store = nullptr;  // another world's particles are in it
+  w.particles.emplace(pc, w.effects.get(), std::move(store));
   add_ships(w);
   // The player starts with the nearest hostile targeted, so the HUD shows it from the first frame.
   if (w.player) w.ship(w.player).target = nearest_hostile(w, w.player);
@@ -123,6 +138,7 @@ void init_world(World& w, LevelDef level, std::shared_ptr<const EffectLibrary> e
     w.fx = resolve_game_effects(*w.effects, w.level);
     for (Ship& s : w.ships)
       if (s.alive) attach_ship_effects(w, s);
+    start_training(w);
   } catch (const InputError& e) {
     throw InputError(w.level.path + ": " + e.what());
   }

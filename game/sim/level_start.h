@@ -8,12 +8,19 @@
 namespace arc {
 
 class EffectLibrary;
+class ParticleStore;
 class World;
 struct Ship;
 
 // Ships, props, the particle world, the camera rig and the ships' shields and exhausts, from a
 // validated LevelDef. A level naming an effect the library lacks throws InputError.
-void init_world(World& w, LevelDef level, std::shared_ptr<const EffectLibrary> effects, const GameOptions& options);
+// `store`, when given, large enough and unused, holds the particles (Game::load_level).
+void init_world(World& w, LevelDef level, std::shared_ptr<const EffectLibrary> effects, const GameOptions& options,
+                std::shared_ptr<ParticleStore> store = nullptr);
+
+// A dormant ship ("inactive" in the level) arrives where the level placed it, with its shield
+// and exhausts; a ship that is alive or was destroyed is left alone.
+void arrive_ship(World& w, Ship& s);
 // A ship's shield sphere and engine exhausts, at the start or when its wave arrives.
 void attach_ship_effects(World& w, Ship& s);
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "game/sim/training.h"
 #include "game/sim/world.h"
 
 namespace arc {
@@ -45,6 +46,9 @@ void update_outcome(World& w) {
       else if (!friends) decide(w, player ? Outcome::Defeat : Outcome::TeamWon, first_live_team(w, side));
       break;
     }
+    case WinKind::TrainingComplete:
+      if (training_complete(w)) decide(w, Outcome::Victory, side);
+      break;
     case WinKind::SurviveTicks:
       if (w.tick >= L.win_ticks) decide(w, player ? Outcome::Victory : Outcome::TeamWon, side);
       break;

@@ -27,6 +27,10 @@ static void write_leaf(snapshot::Writer& out, ClusterHandle h) {
 static void write_leaf(snapshot::Writer& out, const EffectHandle& e) { fields::write_value(out, e.clusters); }
 static void write_leaf(snapshot::Writer& out, const ShipClassDef* c) { out.str(c->name); }
 static void write_leaf(snapshot::Writer& out, const std::optional<ParticleWorld>& p) { out.bytes(p->save()); }
+// Written only in training levels (the reader knows from the level), so other snapshots keep their bytes.
+static void write_leaf(snapshot::Writer& out, const std::optional<TrainingProgress>& t) {
+  if (t) fields::write_value(out, *t);
+}
 
 namespace {
 
@@ -104,6 +108,15 @@ struct WorldReading {
   }
   void read_leaf(Reader& in, const char* name, EffectHandle& e) { fields::FieldReader(in, *this).read(name, e.clusters); }
   void read_leaf(Reader& in, const char*, std::optional<ParticleWorld>& p) { p->load(in.bytes()); }
+  void read_leaf(Reader& in, const char* name, std::optional<TrainingProgress>& t) {
+    t.reset();
+    const size_t steps = w.level.training.steps.size();
+    if (steps == 0) return;
+    t.emplace();
+    fields::FieldReader(in, *this).read(name, *t);
+    if (t->step < 0 || size_t(t->step) > steps)
+      in.fail(std::string(name) + " step " + std::to_string(t->step) + " is outside 0.." + std::to_string(steps));
+  }
 
   // A typed id: its u32 value (validate checks what it refers to).
   template <class Tag>

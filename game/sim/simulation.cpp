@@ -14,6 +14,7 @@
 #include "game/sim/projectiles.h"
 #include "game/sim/seekers.h"
 #include "game/sim/shields.h"
+#include "game/sim/training.h"
 #include "game/sim/waves.h"
 #include "game/sim/wing.h"
 #include "game/sim/world.h"
@@ -35,6 +36,7 @@ void step_world(World& w, const InputFrame& input, const std::vector<Command>& c
     if (s.id == w.player && s.ai == AiKind::None) s.controls = input;
     else if (s.ai == AiKind::Fighter) drive_ai(w, s), defend_against_missiles(w, s);
     else if (s.ai == AiKind::Gunner) drive_gunner(w, s);
+    else if (s.ai == AiKind::Drone) drive_drone(w, s);
     else s.controls = InputFrame{};
     fly_ship(w, s);
   }
@@ -62,6 +64,7 @@ void step_world(World& w, const InputFrame& input, const std::vector<Command>& c
   hit_projectiles(w);
   resolve_deaths(w);
   update_shields_and_energy(w);
+  update_training(w, commands);
   update_outcome(w);
   update_camera(w);
 }

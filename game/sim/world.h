@@ -333,6 +333,27 @@ void visit_fields(P& p, V&& v) {
   v("radius", p.radius, fields::saved, fields::unhashed);
 }
 
+// Where a training level's player stands (game/sim/training.h): the step under way (the steps'
+// count once all are done), the tick it began, what its condition has gathered so far (degrees
+// turned, seconds of afterburner) and the player's missile hits when it began.
+struct TrainingProgress {
+  int32_t step = 0;
+  int64_t step_tick = 0;
+  double progress = 0;
+  int64_t missile_hits_before = 0;
+};
+
+template <fields::MaybeConst<TrainingProgress> T, class V>
+void visit_fields(T& t, V&& v) {
+  v("step", t.step, fields::saved, state_hash<0>);
+  v("step_tick", t.step_tick, fields::saved, state_hash<1>);
+  v("progress", t.progress, fields::saved, state_hash<2>);
+  v("missile_hits_before", t.missile_hits_before, fields::saved, state_hash<3>);
+}
+
+// A ship that has not arrived yet: not alive and never destroyed (a training step spawns it).
+inline bool dormant(const Ship& s) { return !s.alive && s.death_tick < 0; }
+
 struct CameraRig {
   glm::dvec3 position{0.0};
   glm::dquat orientation{1, 0, 0, 0};
@@ -411,6 +432,9 @@ class World {
   int64_t outcome_tick = -1;
   CameraMode camera_mode = CameraMode::Chase;
   CameraRig camera, prev_camera;
+  // Present only in levels with a "training" block: in other levels the hash and the snapshot
+  // take nothing from it.
+  std::optional<TrainingProgress> training;
   GameOptions options;
   uint64_t steps = 0;  // step() calls, paused ones included
   std::vector<Wingman> wing;            // the player's wingmen, in level order (empty: no wing)
@@ -447,6 +471,7 @@ void visit_fields(W& w, V&& v) {
   v("camera_mode", w.camera_mode, fields::saved, presentation_hash<3>);
   v("camera", w.camera, fields::saved, presentation_hash<4>);
   v("prev_camera", w.prev_camera, fields::saved, presentation_hash<5>);
+  v("training", w.training, fields::saved, state_hash<11>);  // only in training levels
   v("ships", w.ships, fields::checked, state_hash<8>, presentation_hash<0>);
   v("projectiles", w.projectiles, fields::saved, state_hash<9>, presentation_hash<1>);
   v("flares", w.flares, fields::saved, state_hash<11>, presentation_hash<7>);

@@ -52,7 +52,7 @@ TEST(BannerExample, Menu) {
 
   ASSERT_EQ(go.size(), 1u);
   EXPECT_EQ(go[0].kind, MenuRequest::Kind::Launch);
-  EXPECT_EQ(go[0].level, "levels/duel.json");
+  EXPECT_EQ(go[0].level, "levels/training.json");
   ASSERT_EQ(resume.size(), 1u);
   EXPECT_EQ(resume[0].kind, MenuRequest::Kind::Resume);
   EXPECT_EQ(menu.screen(), MenuScreen::Results);

@@ -58,11 +58,12 @@ TEST(Menu, CatalogListsMissionsInOrderAndTheGalleryUnderEffects) {
   const auto all = load_mission_catalog(kRoot + "/levels", kRoot);
   std::vector<std::string> titles;
   for (const MissionInfo& m : all) titles.push_back(m.title);
-  EXPECT_EQ(titles, (std::vector<std::string>{"Duel", "Skirmish", "Arena", "Effect gallery", "Attract demo"}));
-  EXPECT_EQ(all[3].category, MissionCategory::Effects);
+  EXPECT_EQ(titles, (std::vector<std::string>{"Training", "Duel", "Skirmish", "Arena", "Effect gallery", "Attract demo"}));
+  EXPECT_EQ(all[4].category, MissionCategory::Effects);
   ASSERT_NE(next_mission(all, all[0].path), nullptr);
-  EXPECT_EQ(next_mission(all, all[0].path)->title, "Skirmish");
-  EXPECT_EQ(next_mission(all, all[2].path), nullptr);
+  EXPECT_EQ(next_mission(all, all[0].path)->title, "Duel");
+  EXPECT_EQ(next_mission(all, all[1].path)->title, "Skirmish");
+  EXPECT_EQ(next_mission(all, all[3].path), nullptr);
 }
 
 TEST(Menu, ADuplicateOrderIsAnErrorAtItsPosition) {
@@ -75,7 +76,7 @@ TEST(Menu, ADuplicateOrderIsAnErrorAtItsPosition) {
     load_mission_catalog(dir.string(), kRoot);
     ADD_FAILURE() << "no error";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("b.json:12:14: 'order' 1 is already taken by"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("b.json:12:14: 'order' 2 is already taken by"), std::string::npos) << e.what();
   }
   fs::remove_all(dir);
 }
@@ -87,11 +88,12 @@ TEST(Menu, ScriptedSessionReachesTheResultsAndGoesOn) {
             "title: ARCFIRE\nsubtitle: space combat with lightning\n> Play\n  Effects\n  Settings\n  Quit\n");
   run(m, "accept");
   ASSERT_EQ(m.screen(), MenuScreen::Missions);
-  EXPECT_TRUE(has_line(m.page(), "> 1. Duel"));
-  EXPECT_TRUE(has_line(m.page(), "  3. Arena"));
+  EXPECT_TRUE(has_line(m.page(), "> 1. Training"));
+  EXPECT_TRUE(has_line(m.page(), "  2. Duel"));
+  EXPECT_TRUE(has_line(m.page(), "  4. Arena"));
   EXPECT_TRUE(has_line(m.page(), "best: no result yet"));
   EXPECT_TRUE(has_line(m.page(), "  Difficulty: < normal >"));
-  run(m, "down accept");  // Skirmish's briefing
+  run(m, "down down accept");  // Skirmish's briefing
   ASSERT_EQ(m.screen(), MenuScreen::Briefing);
   EXPECT_EQ(m.page().title, "Skirmish");
   EXPECT_NE(m.page().paragraph.find("Alpha 2"), std::string::npos);
@@ -135,8 +137,8 @@ TEST(Menu, ScriptedSessionReachesTheResultsAndGoesOn) {
   run(m, "up accept");
   EXPECT_EQ(m.screen(), MenuScreen::Main);
   run(m, "accept");
-  EXPECT_TRUE(has_line(m.page(), "2. Skirmish"));
-  EXPECT_FALSE(has_line(m.page(), "2. Skirmish              best: no result yet"));
+  EXPECT_TRUE(has_line(m.page(), "3. Skirmish"));
+  EXPECT_FALSE(has_line(m.page(), "3. Skirmish              best: no result yet"));
 }
 
 TEST(Menu, EffectsListTheGalleryAndLaunchIt) {

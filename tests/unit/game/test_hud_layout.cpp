@@ -8,6 +8,7 @@
 
 #include "game/render/hud_layout.h"
 #include "game/render/render_view_builder.h"
+#include "game/sim/level_start.h"
 #include "game/sim/world.h"
 #include "test_helpers.h"
 
@@ -44,20 +45,17 @@ std::string box_text(const HudPanelBox& p) {
          std::to_string(int(p.box.x1)) + "," + std::to_string(int(p.box.y1)) + "]";
 }
 
-TEST(HudLayout, PanelsNeitherOverlapNorLeaveTheScreenAtEverySize) {
-  Game g = busy_game();
-  const World& w = g.world();
-  ASSERT_TRUE(w.ships[0].target);
+// Every panel of `want` is drawn, and no panel overlaps another or leaves the screen, at each size.
+void check_panels(const World& w, const HudState& state, const std::vector<const char*>& want) {
   for (auto [width, height] : {std::pair{640, 360}, {1280, 720}, {1920, 1080}, {3840, 2160}}) {
     RenderView v;
-    build_render_view(w, {}, 1.0, CameraSettings{}, busy_state(), width, height, v);
+    build_render_view(w, {}, 1.0, CameraSettings{}, state, width, height, v);
     std::vector<HudPanelBox> panels;
-    layout_hud(w, v.camera, busy_state(), 1.0, width, height, v.hud, &panels);
+    layout_hud(w, v.camera, state, 1.0, width, height, v.hud, &panels);
     std::vector<std::string> names;
     for (const HudPanelBox& p : panels) names.push_back(p.name);
-    for (const char* want : {"objective", "kill feed", "own bars", "weapon", "target panel", "radar", "notice",
-                             "error banner"})
-      EXPECT_NE(std::find(names.begin(), names.end(), want), names.end()) << want << " at " << width << "x" << height;
+    for (const char* name : want)
+      EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << name << " at " << width << "x" << height;
     for (const HudPanelBox& p : panels)
       if (p.name == "radar") EXPECT_GE(p.box.y1 - p.box.y0, 0.15 * height) << "radar at " << width << "x" << height;
     for (size_t i = 0; i < panels.size(); ++i) {
@@ -72,6 +70,33 @@ TEST(HudLayout, PanelsNeitherOverlapNorLeaveTheScreenAtEverySize) {
       }
     }
   }
+}
+
+TEST(HudLayout, PanelsNeitherOverlapNorLeaveTheScreenAtEverySize) {
+  Game g = busy_game();
+  ASSERT_TRUE(g.world().ships[0].target);
+  check_panels(g.world(), busy_state(),
+               {"objective", "kill feed", "own bars", "weapon", "target panel", "radar", "notice", "error banner"});
+}
+
+// The training level at its longest prompt, with a target, a kill in the feed, a notice and an
+// error: the prompt takes the objective's place and overlaps nothing.
+TEST(HudLayout, TheTrainingPromptOverlapsNothingAtEverySize) {
+  Game g = Game::load_level(test::repo("levels/training.json"), test::options());
+  World& w = g.world_mut();
+  size_t longest = 0;
+  for (size_t i = 0; i < w.level.training.steps.size(); ++i)
+    if (w.level.training.steps[i].prompt.size() > w.level.training.steps[longest].prompt.size()) longest = i;
+  for (Ship& s : w.ships) arrive_ship(w, s);
+  w.training->step = int32_t(longest);
+  g.step(InputFrame{}, {Command::TargetNearest});
+  w.ships[2].hull = -1;
+  w.ships[2].last_attacker = w.player;
+  g.step(InputFrame{});
+  ASSERT_TRUE(w.ship(w.player).target);
+  HudState state = busy_state();
+  state.key_names = {{"order_attack", "LEFT_SHIFT"}, {"order_cover", "RIGHT_CONTROL"}};
+  check_panels(w, state, {"training", "kill feed", "own bars", "weapon", "target panel", "radar", "notice", "error banner"});
 }
 
 }  // namespace

@@ -30,7 +30,9 @@ TEST(StateFields, EveryMemberIsNamedByItsVisitor) {
   ExplosionEvent explosion;
   Prop prop;
   CameraRig camera;
+  TrainingProgress training;
   World world;
+  EXPECT_EQ(visited_field_count(training), aggregate_field_count<TrainingProgress>());
   EXPECT_EQ(visited_field_count(ai), aggregate_field_count<AiState>());
   EXPECT_EQ(visited_field_count(stats), aggregate_field_count<CombatStats>());
   EXPECT_EQ(visited_field_count(ship), aggregate_field_count<Ship>());
@@ -64,6 +66,7 @@ TEST(StateFields, HashWordsOfEachPassAreNumberedWithoutGapsOrClashes) {
   Projectile projectile;
   ExplosionEvent explosion;
   CameraRig camera;
+  TrainingProgress training;
   World world;
   for (int pass : {kStateHashPass, kPresentationHashPass}) {
     SCOPED_TRACE("pass " + std::to_string(pass));
@@ -73,6 +76,7 @@ TEST(StateFields, HashWordsOfEachPassAreNumberedWithoutGapsOrClashes) {
     EXPECT_EQ(check_hash_words(hash_slots(projectile, pass)), "");
     EXPECT_EQ(check_hash_words(hash_slots(explosion, pass)), "");
     EXPECT_EQ(check_hash_words(hash_slots(camera, pass)), "");
+    EXPECT_EQ(check_hash_words(hash_slots(training, pass)), "");
     EXPECT_EQ(check_hash_words(hash_slots(world, pass)), "");
   }
   EXPECT_EQ(hash_slots(ship, kStateHashPass).size(), 25u);  // word 22: its particle owner, 23: its combat stats, 24: its lock and flares

@@ -1,0 +1,40 @@
+#!/bin/bash
+# launch_hitch.sh ARCFIRE OUT [BOUND_MS]: the main menu in a window under xvfb-run with
+# --frame-times; a mission launched as a player would (Enter on Play, on the first mission, on
+# Launch), flown for two seconds, then the game ended with SIGTERM. Prints the frame that
+# launched the mission and the first frame of the mission, in ms, and fails when either took
+# longer than BOUND_MS (default 150). Exits 77 (ctest: skipped) without xvfb-run or xdotool.
+set -u
+arcfire="$1"; out="$2"; bound="${3:-150}"
+source "$(dirname "$0")/../replays/live_window.sh"
+require_tools cli_launch_hitch
+mkdir -p "$(dirname "$out")"
+rm -f "$out.csv" "$out.log"
+export XDG_CONFIG_HOME="$out.config"; rm -rf "$XDG_CONFIG_HOME"
+xvfb-run -a -s "-screen 0 1280x720x24" bash -c '
+  arcfire="$1"; out="$2"
+  "$arcfire" --size 1280x720 --frame-times "$out.csv" >"$out.log" 2>&1 &
+  pid=$!
+  win=$(timeout 60 xdotool search --sync --onlyvisible --name "Arcfire" | head -n 1)
+  if [ -z "$win" ]; then echo "cli_launch_hitch: no Arcfire window appeared"; kill $pid; cat "$out.log"; exit 1; fi
+  xdotool windowactivate --sync "$win" 2>/dev/null || xdotool windowfocus --sync "$win"
+  sleep 3
+  xdotool key --window "$win" Return; sleep 1
+  xdotool key --window "$win" Return; sleep 2  # the briefing, read for two seconds
+  xdotool key --window "$win" Return; sleep 2
+  kill -TERM $pid; wait $pid
+  exit 0
+' _ "$arcfire" "$out" || { cat "$out.log" 2>/dev/null; exit 1; }
+[ -s "$out.csv" ] || { echo "cli_launch_hitch: no frame-time log"; cat "$out.log"; exit 1; }
+# The launch is the first frame whose tick falls back (the mission starts at tick 0); the
+# frame after it is the mission's first.
+awk -F, -v bound="$bound" 'NR > 1 {
+    if (seen == 1) { first = $2; seen = 2 }
+    if (!seen && NR > 2 && $3 + 0 < prev) { launch = $2; seen = 1 }
+    prev = $3 + 0
+  }
+  END {
+    if (seen < 2) { print "cli_launch_hitch: no launch found in the frame-time log"; exit 1 }
+    printf "cli_launch_hitch: launch frame %.1f ms, first mission frame %.1f ms (bound %d ms)\n", launch, first, bound
+    exit (launch > bound || first > bound) ? 1 : 0
+  }' "$out.csv"
