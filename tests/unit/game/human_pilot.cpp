@@ -91,7 +91,7 @@ Sight HumanPilot::look(const World& w) const {
   s.distance = t.distance;
   s.bracket = t.half_size;
   s.in_range = t.in_range;
-  s.missile_ready = t.missile_cue && t.missile_ready;
+  s.missile_ready = t.missile_cue && t.missile_ready && t.lock >= 1.0;  // clicks on "LOCK"
   s.plasma = t.plasma_lead;
   s.centre = t.centre;
   s.aim = t.plasma_lead ? t.lead : t.centre;
@@ -194,7 +194,7 @@ void HumanPilot::choose_keys(const World& w, const Sight& seen) {
 }
 
 // The beam while the crosshair is on the target in range (or the beam ring lit); a missile
-// click while its cue is whole; plasma while the lead sits on the crosshair.
+// click once the cue reads LOCK; plasma while the lead sits on the crosshair.
 void HumanPilot::fire(const World& w, const Sight& seen) {
   if (!skill_.fires || !seen.target || !seen.on_screen || seen.hidden) return;
   const double off = glm::length(seen.centre - seen.crosshair);
