@@ -346,6 +346,7 @@ void ReplayPlayer::check_snapshot(const replay::SnapshotCheck& s, uint64_t t) {
                                    : "on " + script_.header.snapshots_like + ", whose frames this script must match"));
     return;
   }
+  std::error_code ec;
   if (fs::is_directory(golden, ec)) {
     fail(t, s.src, "golden image " + golden + " is a folder, not a PNG file; remove it and run --update-golden");
     return;
