@@ -96,9 +96,10 @@ void ParticlePool::set_count(size_t n) {
   for_each_array(*this, [n](auto& v) { v.size_ = n; });
 }
 
-void ParticlePool::move_to(size_t capacity) {
+void ParticlePool::move_to(size_t capacity, bool heap_allowed) {
   ParticleBlock block;
   if (store_ && capacity <= UINT32_MAX) block = store_->take(uint32_t(capacity));
+  if (!block.capacity && !heap_allowed) return;
   std::byte* heap = block.capacity ? nullptr : heap_block(capacity);
   const auto from = column_pointers(*this);
   std::array<std::byte*, kParticleColumns> to;
@@ -116,6 +117,10 @@ void ParticlePool::move_to(size_t capacity) {
 
 void ParticlePool::reserve(size_t n) {
   if (n > capacity_) move_to(n);
+}
+
+void ParticlePool::reserve_in_store(size_t n) {
+  if (n > capacity_) move_to(n, false);
 }
 
 void ParticlePool::resize(size_t n) {

@@ -81,6 +81,9 @@ struct ParticlePool {
   size_t capacity() const { return capacity_; }
   bool in_store() const { return block_.capacity != 0; }
   void reserve(size_t n);
+  // Room for `n` particles only where the store has it: a world holding more clusters than its
+  // store would otherwise take heap for particles its budget never admits.
+  void reserve_in_store(size_t n);
   void resize(size_t n);  // new particles are zeroed
   void clear();
   // Removes particles whose death tick has come, keeping order; returns how many died. Reads
@@ -97,7 +100,9 @@ struct ParticlePool {
  private:
   void set_count(size_t n);
   void set_columns(const std::array<std::byte*, kParticleColumns>& data);
-  void move_to(size_t capacity);  // new storage of at least `capacity`, the particles copied over
+  // New storage of at least `capacity`, the particles copied over; with `heap` false, only a
+  // block of the store (else nothing changes).
+  void move_to(size_t capacity, bool heap = true);
   void free_storage();
   void take_from(ParticlePool& o);
 

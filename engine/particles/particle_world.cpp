@@ -107,7 +107,7 @@ struct ParticleWorld::Impl : ParticleWorldState {
     c.last_emit_position = e.position;
     const double expected = d.emitter.burst * p.intensity + d.emitter.rate * p.intensity * d.particles.lifetime.max + 16.0;
     c.pool = ParticlePool(store.get());
-    c.pool.reserve(size_t(std::min(expected, double(config.budget))));
+    c.pool.reserve_in_store(size_t(std::min(expected, double(config.budget))));
     return {slot + 1, c.generation};
   }
 

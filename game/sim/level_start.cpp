@@ -87,7 +87,7 @@ void attach_ship_effects(World& w, Ship& s) {
   // Spawned at full intensity: the burst's particle count is scaled by the intensity of the
   // first particle step, after which update_shields_and_energy() dims it to what it shows.
   if (s.cls->shield > 0) spawn_shield(w, s, 4);
-  for (const glm::dvec3& e : s.cls->exhausts) {
+  for (const glm::dvec3& e : exhaust_plume_points(s.cls->exhausts)) {
     SpawnParams ep;
     ep.owner = s.particle_owner;
     ep.position = e;
@@ -96,6 +96,15 @@ void attach_ship_effects(World& w, Ship& s) {
     ep.priority = 0;
     s.exhaust_fx.push_back(spawn_fx(w, w.fx.engine_exhaust, ep));
   }
+}
+
+std::vector<glm::dvec3> exhaust_plume_points(const std::vector<glm::dvec3>& exhausts) {
+  const size_t n = exhausts.size();
+  if (n <= kMaxExhaustPlumes) return exhausts;
+  std::vector<glm::dvec3> out;
+  out.reserve(kMaxExhaustPlumes);
+  for (size_t k = 0; k < kMaxExhaustPlumes; ++k) out.push_back(exhausts[(2 * k + 1) * n / (2 * kMaxExhaustPlumes)]);
+  return out;
 }
 
 void arrive_ship(World& w, Ship& s) {

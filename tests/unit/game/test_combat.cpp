@@ -6,6 +6,8 @@
 #include "game/sim/beams.h"
 #include "game/sim/damage.h"
 #include "game/sim/geometry.h"
+#include "game/sim/level_start.h"
+#include "game/sim/world.h"
 #include "test_helpers.h"
 #include "core/data_root.h"
 
@@ -140,6 +142,37 @@ TEST(Damage, AttachedClustersGoWithTheirShipInTheSameTick) {
   g.step(InputFrame{});
   ASSERT_FALSE(w.ships[1].alive);
   for (ClusterHandle c : attached) EXPECT_FALSE(w.particles->alive(c));
+}
+
+// A class outlined in 100 000 vents carries kMaxExhaustPlumes plumes spread over its list, so
+// its particle pools are bounded; a class with few exhausts has one plume per point.
+TEST(Exhausts, ManyExhaustPointsSpawnABoundedNumberOfPlumes) {
+  Game g = facing_pair("vents.json", -400);
+  World& w = g.world_mut();
+  Ship& s = w.ships[1];
+  ASSERT_LE(s.cls->exhausts.size(), kMaxExhaustPlumes);
+  EXPECT_EQ(s.exhaust_fx.size(), s.cls->exhausts.size());
+  EXPECT_EQ(exhaust_plume_points(s.cls->exhausts), s.cls->exhausts);
+  ShipClassDef vents = *s.cls;
+  vents.shield = 0;
+  vents.exhausts.clear();
+  for (int i = 0; i < 100000; ++i) vents.exhausts.push_back({-8 + (i % 400) * 0.04, -2 + (i / 400) * 0.016, 6.125});
+  const std::vector<glm::dvec3> plumes = exhaust_plume_points(vents.exhausts);
+  ASSERT_EQ(plumes.size(), kMaxExhaustPlumes);
+  EXPECT_LT(plumes.front().y, -1.5);  // from the first runs of the list to the last
+  EXPECT_GT(plumes.back().y, 1.5);
+  const size_t clusters_before = w.particles->stats().live_clusters;
+  const ShipClassDef* viper = s.cls;
+  s.exhaust_fx.clear();
+  s.cls = &vents;
+  attach_ship_effects(w, s);
+  EXPECT_EQ(s.exhaust_fx.size(), kMaxExhaustPlumes);
+  size_t clusters = 0;
+  for (const EffectHandle& e : s.exhaust_fx) clusters += e.clusters.size();
+  EXPECT_LE(clusters, 2 * kMaxExhaustPlumes);  // a plume and a nozzle glow each
+  EXPECT_LE(w.particles->stats().live_clusters, clusters_before + 2 * kMaxExhaustPlumes);
+  for (int i = 0; i < 5; ++i) g.step(InputFrame{});
+  s.cls = viper;  // the game outlives `vents`
 }
 
 TEST(Damage, SplashDamageReachesNeighboursOnlyWhenTheLevelEnablesIt) {

@@ -34,7 +34,7 @@ TEST(GalleryCells, LabelsNeitherOverlapNorLeaveTheScreen) {
     g.step(InputFrame{});
     if (tick != 1 && tick != 120 && tick != 240) continue;
     const HudLayer h = gallery_view(g).hud;
-    ASSERT_GE(h.texts.size(), 13u);  // the objective and twelve cell labels
+    ASSERT_GE(h.texts.size(), 14u);  // the objective and thirteen cell labels
     for (size_t i = 0; i < h.texts.size(); ++i) {
       const HudBox a = text_box(h.texts[i]);
       SCOPED_TRACE(h.texts[i].text);
@@ -70,7 +70,7 @@ TEST(GalleryCells, EachLabelHangsBelowItsEffect) {
     EXPECT_LT(box.y0, at.y + 0.5 * kHeight / 3.0 + 40.0);        // and not in the next row
     EXPECT_LT(std::abs(0.5 * (box.x0 + box.x1) - at.x), kWidth / 8.0);  // in its column
   }
-  EXPECT_EQ(labelled, 12);
+  EXPECT_EQ(labelled, 13);
 }
 
 // Visible particles of `g`, seen from `eye` looking down −Z, with their world positions.
