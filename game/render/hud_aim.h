@@ -9,7 +9,7 @@
 //                bars, at any range,
 //   missile cue  with missiles selected: a circle around the target labelled "MSL", whole while
 //                the target is within the missile's reach and launch cone (missile_ready()),
-//                broken otherwise; missiles home on the target, so they need no lead point;
+//                broken otherwise, with no lead point since missiles home on the target,
 //                over it the lock ring, red, filling clockwise from the top over the lock time
 //                (game/sim/seekers.h), and once locked a bold double ring labelled "LOCK",
 //   plasma lead  with plasma selected: a diamond labelled "PLS" where the bolts meet the target,

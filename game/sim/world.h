@@ -471,7 +471,7 @@ void visit_fields(W& w, V&& v) {
   v("camera_mode", w.camera_mode, fields::saved, presentation_hash<3>);
   v("camera", w.camera, fields::saved, presentation_hash<4>);
   v("prev_camera", w.prev_camera, fields::saved, presentation_hash<5>);
-  v("training", w.training, fields::saved, state_hash<11>);  // only in training levels
+  v("training", w.training, fields::saved, state_hash<14>);  // only in training levels
   v("ships", w.ships, fields::checked, state_hash<8>, presentation_hash<0>);
   v("projectiles", w.projectiles, fields::saved, state_hash<9>, presentation_hash<1>);
   v("flares", w.flares, fields::saved, state_hash<11>, presentation_hash<7>);
@@ -479,9 +479,9 @@ void visit_fields(W& w, V&& v) {
   v("explosions", w.explosions, fields::saved, presentation_hash<2>);
   v("particles", w.particles, fields::saved, presentation_hash<6>);  // its own snapshot; hash_summary
   // Empty lists hash to nothing, so levels without a wing or waves keep their hashes.
-  v("wing", w.wing, fields::saved, state_hash<11>);
-  v("waves", w.waves, fields::checked, state_hash<12>);
-  v("messages", w.messages, fields::saved, presentation_hash<7>);
+  v("wing", w.wing, fields::saved, state_hash<12>);
+  v("waves", w.waves, fields::checked, state_hash<13>);
+  v("messages", w.messages, fields::saved, presentation_hash<8>);
   v("team_names", w.team_names, fields::not_saved, fields::unhashed);    // from the level
   v("model_paths", w.model_paths, fields::not_saved, fields::unhashed);  // from the level
   v("effects", w.effects, fields::not_saved, fields::unhashed);          // the shared library

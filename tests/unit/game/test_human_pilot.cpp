@@ -63,7 +63,7 @@ TEST(HumanPilot, ReadsTheCuesWhereTheHudDrawsThem) {
     ASSERT_TRUE(t.selected && t.on_screen && t.missile_cue) << height;
     const double r = t.half_size;
     EXPECT_TRUE(has_line(layer, t.centre.x - r, t.centre.y - r, t.centre.x - r + r * 0.4, t.centre.y - r)) << height;
-    EXPECT_TRUE(has_text_near(layer, "MSL", t.centre.x + r + 15 * k, t.centre.y - 6 * k)) << height;
+    EXPECT_TRUE(has_text_near(layer, "MSL", t.centre.x + r + 18 * k, t.centre.y - 6 * k)) << height;
     ASSERT_FALSE(pic.radar_blips.empty());
     EXPECT_TRUE(pic.radar_blips[0].target);
   }

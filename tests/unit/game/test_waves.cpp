@@ -106,7 +106,7 @@ TEST(Waves, ErrorsArePositioned) {
   e = error_of(with_waves(R"([ { "after_seconds": 5, "when_team_below": { "team": "red", "count": 1 }, "ships": [] } ])"));
   EXPECT_NE(e.find("exactly one trigger"), std::string::npos) << e;
   e = error_of(with_waves(R"([ { "after_seconds": -1, "ships": [] } ])"));
-  EXPECT_NE(e.find("'after_seconds' must be in [0, 36000]"), std::string::npos) << e;
+  EXPECT_NE(e.find("'waves[0].after_seconds' must be in [0, 36000]"), std::string::npos) << e;
   e = error_of(with_waves(R"([ { "after_seconds": 5, "ships": [] } ])"));
   EXPECT_NE(e.find("a wave needs at least one ship"), std::string::npos) << e;
   e = error_of(with_waves(R"([ { "when_team_below": { "team": "green", "count": 1 },

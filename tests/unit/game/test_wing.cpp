@@ -71,6 +71,13 @@ TEST(WingOrders, AttackTakesThePlayersTargetAndSaysSo) {
 
 TEST(WingOrders, AttackWithoutATargetIsRefused) {
   Flight f(wing_level(kFarHostile), "wing_attack_none.json");
+  // The nearest hostile is targeted at launch: step on through the list to a wingman.
+  auto hostile_target = [&] {
+    const Ship& me = f.w().ship(f.w().player);
+    return me.target && f.w().hostile(me, f.w().ship(me.target));
+  };
+  for (int i = 0; i < 8 && hostile_target(); ++i) f.game.step(InputFrame{}, {Command::TargetNext});
+  ASSERT_FALSE(hostile_target());
   f.run(0.1, {Command::OrderAttack});
   EXPECT_EQ(f.last_message(), "Alpha 2, Alpha 3: no hostile target to attack");
   EXPECT_EQ(f.w().wing[0].order, WingOrder::EngageAtWill);
