@@ -8,6 +8,7 @@
 
 #include "core/data_layers.h"
 #include "core/error.h"
+#include "core/input_file.h"
 #include "game/sim/geometry.h"
 #include "game/sim/world.h"
 #include "particles/effect_library.h"
@@ -25,10 +26,10 @@ std::shared_ptr<const EffectLibrary> load_effect_library(const std::string& root
     for (const ClusterDef& c : def.clusters) {
       const std::string sprite(kSpriteNames.at(c.sprite));
       const std::string texture = data_file(root_dir, "assets/textures/sprite_" + sprite + ".png");
-      std::error_code ec;
-      if (!std::filesystem::is_regular_file(texture, ec))
+      const std::string problem = input_path_problem(texture);
+      if (!problem.empty())
         throw InputError(def.path + ": cluster '" + c.name + "': sprite '" + sprite + "' names texture " + texture +
-                         ": no such file");
+                         ": " + (problem == "not found" ? "no such file" : problem));
     }
   }
   return lib;

@@ -3,6 +3,7 @@
 #include <system_error>
 
 #include "core/data_layers.h"
+#include "core/input_file.h"
 #include "game/sim/def_parsing.h"
 #include "game/sim/defs.h"
 
@@ -13,13 +14,9 @@ void defs_internal::require_named_file(const JsonValue& v, const std::string& na
                                        const char* what) {
   namespace fs = std::filesystem;
   const std::string file = fs::path(named).is_absolute() ? named : data_file(root_dir, named);
-  std::error_code ec;
-  const fs::file_status st = fs::status(file, ec);
-  if (fs::is_regular_file(st)) return;
-  const std::string why = fs::is_directory(st)                               ? "is a folder, not a file"
-                          : fs::exists(st)                                   ? "is not a regular file"
-                          : ec && ec != std::errc::no_such_file_or_directory ? ec.message()
-                                                                             : "no such file";
+  const std::string problem = input_path_problem(file);
+  if (problem.empty()) return;
+  const std::string why = problem == "not found" ? "no such file" : problem;
   std::string message = "'";
   message += v.name();
   message += "' names ";

@@ -155,7 +155,11 @@ for kind in $kinds; do
     # --level, --bindings, --sounds, --replay, --menu-script: the path as given.
     for entry in level bindings sounds replay menu-script; do
       p=$(plant "$kind" "$k" "$entry.arg") && [ -n "$p" ] || continue
-      expect "--$entry" "$kind" "$(basename "$p")" -- "${headless[@]}" "--$entry" "$p"
+      case $entry in
+        replay) expect "--$entry" "$kind" "$(basename "$p")" -- --headless --no-render "--$entry" "$p" ;;
+        menu-script) expect "--$entry" "$kind" "$(basename "$p")" -- --headless "--$entry" "$p" ;;
+        *) expect "--$entry" "$kind" "$(basename "$p")" -- "${headless[@]}" "--$entry" "$p" ;;
+      esac
     done
     # A replay's level line.
     p=$(plant "$kind" "$k" "script_level.json")

