@@ -112,13 +112,23 @@ void keep_own_effects_out_of_view(const World& w, ShipId ship, bool cockpit, con
       if (glm::dot(at - c, at - c) < 150.0 * 150.0) return true;
     return false;
   };
+  // The player's own flares are news too: they drift away beside the ship and must be seen burning
+  // there; only one within 15 m of the eye is still tamed, so it never glows across the screen.
+  std::vector<glm::dvec3> own_flares;
+  for (const Flare& f : w.flares)
+    if (f.owner == ship) own_flares.push_back(lerp_pos(f.prev_position, f.position, alpha) - camera.position);
+  auto at_own_flare = [&](const glm::dvec3& at) {
+    for (const glm::dvec3& c : own_flares)
+      if (glm::dot(at - c, at - c) < 8.0 * 8.0 && glm::dot(c, c) > 15.0 * 15.0) return true;
+    return false;
+  };
   // Chase: an impact around the own ship or near the eye stays a small flash on screen.
   auto tame_near = [&](ParticleInstance& p) {
     const glm::dvec3 at(p.pos[0], p.pos[1], p.pos[2]);
     const glm::dvec3 from_ship = at - centre;
     const double eye = std::sqrt(glm::dot(at, at));
     if (eye > rules.near_eye_m && glm::dot(from_ship, from_ship) > near_own * near_own) return true;
-    if (in_explosion(at)) return true;
+    if (in_explosion(at) || at_own_flare(at)) return true;
     if (p.billboard == uint8_t(Billboard::AxisLocked)) {  // a streak: its length kept short too
       const double depth = std::max(-view_space(p, pr.inverse).z, pr.near_plane);
       const double len = std::sqrt(double(p.axis[0]) * p.axis[0] + double(p.axis[1]) * p.axis[1] + double(p.axis[2]) * p.axis[2]);

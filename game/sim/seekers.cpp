@@ -16,7 +16,7 @@ namespace {
 constexpr uint64_t kDecoyStream = 0x464C0000ull;    // which missiles a flare pulls
 constexpr uint64_t kDefenceStream = 0x464C1000ull;  // when an AI pilot notices a missile
 constexpr double kFlareDrag = 1.2;                  // 1/s: a flare slows behind its ship
-constexpr double kFlareEjectSpeed = 40.0;           // m/s down and back from the ship
+constexpr double kFlareEjectSpeed = 25.0;           // m/s out to one side, up and back from the ship
 
 double angle_between(const glm::dvec3& a, const glm::dvec3& b) {
   return std::acos(std::clamp(glm::dot(safe_norm(a, glm::dvec3(0, 0, -1)), safe_norm(b, glm::dvec3(0, 0, -1))), -1.0, 1.0));
@@ -89,8 +89,11 @@ bool drop_flare(World& w, Ship& s) {
   f.serial = w.next_projectile_serial++;
   f.owner = s.id;
   f.particle_owner = allocate_owner(w);
-  // Down and back: it falls away under the ship, where the chase camera sees it burn.
-  const glm::dvec3 back = s.orientation * glm::dvec3(0, -0.8, 0.6);
+  // Out to one side (alternating), up and back: it drifts past the chase eye beside the ship,
+  // where the player sees it burn (the ship sits low in the chase frame, so a flare falling under
+  // it would leave the screen at once, and one straight back would glow across the eye).
+  const double side = k.flares % 2 == 0 ? 1.0 : -1.0;
+  const glm::dvec3 back = s.orientation * glm::dvec3(0.7 * side, 0.3, 0.65);
   f.position = f.prev_position = s.position + back * (s.cls->shield_radius + 2.0);
   f.velocity = s.velocity + safe_norm(back, glm::dvec3(0, 0, 1)) * kFlareEjectSpeed;
   f.expire_tick = w.tick + std::max<int64_t>(1, seconds_to_ticks(w, cm.lifetime));
