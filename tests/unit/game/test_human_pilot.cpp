@@ -134,7 +134,9 @@ TEST(HumanPilot, FiguresOnTheDuelSkirmishAndArenaStayWithinWideBounds) {
     EXPECT_GE(f.win_rate, c.lowest_win) << what;
     EXPECT_LE(f.win_rate, c.highest_win) << what;
     EXPECT_GT(f.on_screen_share, 0.3) << what;
-    EXPECT_LT(f.hidden_share, 0.05) << what;
+    // The arena's melee hides the target behind the own hull on 2–7 % of the near-nose ticks
+    // (docs/pilot.md); the bound catches a camera that hides it far more often.
+    EXPECT_LT(f.hidden_share, 0.08) << what;
     EXPECT_GT(f.damage_dealt, 150.0) << what;
     EXPECT_GT(f.beam_accuracy, 0.05) << what;
     EXPECT_GT(f.missile_accuracy, 0.1) << what;
