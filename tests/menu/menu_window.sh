@@ -23,7 +23,8 @@ run_menu() {
     win=$(timeout 60 xdotool search --sync --onlyvisible --name "Arcfire" | head -n 1)
     if [ -z "$win" ]; then echo "menu_window: no Arcfire window appeared"; kill $pid; cat "$log"; exit 1; fi
     xdotool windowactivate --sync "$win" 2>/dev/null || xdotool windowfocus --sync "$win"
-    sleep 2
+    # The menu loads the models of every listed mission before it takes keys; a loaded machine needs longer.
+    sleep 4
     key() { xdotool key --window "$win" "$@"; sleep 0.5; }
     eval "$keys"
     for i in $(seq 1 20); do kill -0 $pid 2>/dev/null || exit 0; sleep 0.5; done
