@@ -15,6 +15,7 @@
 #include <cstdlib>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "assets/image.h"
@@ -53,6 +54,20 @@ std::vector<uint32_t> own_clusters(const Ship& s) {
   return out;
 }
 
+// The frame with the own effects and without them (saved under ARCFIRE_GFX_DUMP when set).
+std::pair<Image, Image> render_with_and_without(Renderer& renderer, const RenderView& view, const RenderView& without,
+                                                const std::string& dump_name) {
+  renderer.render(view, kWidth, kHeight);
+  const Image with_own = renderer.read_pixels();
+  renderer.render(without, kWidth, kHeight);
+  const Image no_own = renderer.read_pixels();
+  if (const char* dir = std::getenv("ARCFIRE_GFX_DUMP"); dir && *dir) {
+    save_image(std::string(dir) + "/" + dump_name + ".png", with_own);
+    save_image(std::string(dir) + "/" + dump_name + "_without_own.png", no_own);
+  }
+  return {with_own, no_own};
+}
+
 struct Coverage {
   double share = 0;  // of the box around the crosshair
   int own_particles = 0;
@@ -85,14 +100,7 @@ Coverage own_effect_coverage(bool cockpit, const std::string& dump_name) {
   });
   Coverage result;
   result.own_particles = int(view.particles.size() - without.particles.size());
-  renderer.render(view, kWidth, kHeight);
-  const Image with_own = renderer.read_pixels();
-  renderer.render(without, kWidth, kHeight);
-  const Image no_own = renderer.read_pixels();
-  if (const char* dir = std::getenv("ARCFIRE_GFX_DUMP"); dir && *dir) {
-    save_image(std::string(dir) + "/" + dump_name + ".png", with_own);
-    save_image(std::string(dir) + "/" + dump_name + "_without_own.png", no_own);
-  }
+  const auto [with_own, no_own] = render_with_and_without(renderer, view, without, dump_name);
 
   // The crosshair: where the guns converge, half the beam's range ahead of the nose.
   const glm::dvec3 aim = me.position + forward_of(me.orientation) * (me.cls->beam.range * 0.5);
@@ -175,14 +183,7 @@ double own_glow_lower_half(bool plain, const std::string& dump_name) {
     const glm::dvec3 at(p.pos[0], p.pos[1], p.pos[2]);
     return glm::length(at) < 12.0 || glm::length(at - centre) < near_ship;
   });
-  renderer.render(view, kWidth, kHeight);
-  const Image with_own = renderer.read_pixels();
-  renderer.render(without, kWidth, kHeight);
-  const Image no_own = renderer.read_pixels();
-  if (const char* dir = std::getenv("ARCFIRE_GFX_DUMP"); dir && *dir) {
-    save_image(std::string(dir) + "/" + dump_name + ".png", with_own);
-    save_image(std::string(dir) + "/" + dump_name + "_without_own.png", no_own);
-  }
+  const auto [with_own, no_own] = render_with_and_without(renderer, view, without, dump_name);
   int lower = 0;
   for (int y = kHeight / 2; y < kHeight; ++y)
     for (int x = 0; x < kWidth; ++x) {

@@ -296,20 +296,9 @@ TEST(Pacing, DISABLED_PilotReport) {
     int64_t flares = 0;
     WeaponTally pilot_w, ai_w;
     for (uint64_t seed = 1; seed <= 20; ++seed) {
-      GameOptions o = options();
-      o.difficulty_override = true;
-      o.difficulty = static_cast<Difficulty>(d);
-      o.seed_override = true;
-      o.seed = seed;
-      Game g = Game::load_level(arc::data_root() + "/levels/duel.json", o);
+      Game g = load_flight(arc::data_root(), "levels/duel.json", d, seed);
+      fly_to_outcome(g, seed, PilotKind::Person, 240.0);
       const World& w = g.world();
-      TestPilot pilot(seed);
-      InputFrame in;
-      std::vector<Command> keys;
-      while (w.outcome == Outcome::Undecided && w.tick < 60 * 240) {
-        pilot.act(w, in, keys);
-        g.step(in, keys);
-      }
       if (w.outcome == Outcome::Victory) ++wins, win_s += double(w.outcome_tick) * w.dt;
       pilot_w.add(w.ships[0].stats);
       ai_w.add(w.ships[1].stats);

@@ -153,14 +153,17 @@ void TestPilot::act(const World& w, InputFrame& in, std::vector<Command>& comman
     in.buttons |= kFireSecondary;
 }
 
-DuelResult fly_duel(const std::string& root_dir, int difficulty, uint64_t seed, PilotKind pilot, double max_seconds) {
+Game load_flight(const std::string& root_dir, const std::string& level, int difficulty, uint64_t seed) {
   GameOptions o;
   o.root_dir = root_dir;
   o.difficulty_override = true;
   o.difficulty = static_cast<Difficulty>(difficulty);
   o.seed_override = true;
   o.seed = seed;
-  Game g = Game::load_level(root_dir + "/levels/duel.json", o);
+  return Game::load_level(level.rfind('/', 0) == 0 ? level : root_dir + "/" + level, o);
+}
+
+void fly_to_outcome(Game& g, uint64_t seed, PilotKind pilot, double max_seconds) {
   const World& w = g.world();
   TestPilot person(seed);
   InputFrame in;
@@ -170,6 +173,12 @@ DuelResult fly_duel(const std::string& root_dir, int difficulty, uint64_t seed, 
     if (pilot == PilotKind::Person) person.act(w, in, keys);
     g.step(in, keys);
   }
+}
+
+DuelResult fly_duel(const std::string& root_dir, int difficulty, uint64_t seed, PilotKind pilot, double max_seconds) {
+  Game g = load_flight(root_dir, "levels/duel.json", difficulty, seed);
+  fly_to_outcome(g, seed, pilot, max_seconds);
+  const World& w = g.world();
   DuelResult r;
   r.won = w.outcome == Outcome::Victory;
   r.lost = w.outcome == Outcome::Defeat;

@@ -21,6 +21,7 @@
 
 namespace arc {
 
+class Game;
 class World;
 
 // The HUD's target picture in pixels (origin top-left), as the player sees it this tick.
@@ -70,6 +71,12 @@ class TestPilot {
 };
 
 enum class PilotKind { Person, Idle };
+
+// A level (a path, or one relative to `root_dir`) at a difficulty and seed, as the pilots fly it.
+Game load_flight(const std::string& root_dir, const std::string& level, int difficulty, uint64_t seed);
+// Flies `g` until its outcome or `max_seconds`: the pilot of `seed` at the controls, or nobody
+// (the player's ship drifts) for PilotKind::Idle.
+void fly_to_outcome(Game& g, uint64_t seed, PilotKind pilot, double max_seconds);
 
 struct DuelResult {
   bool won = false;

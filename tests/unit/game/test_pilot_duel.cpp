@@ -83,13 +83,7 @@ TEST(TestPilot, DISABLED_Report) {
 TEST(TestPilot, DISABLED_Trace) {
   const int d = std::getenv("TRACE_DIFF") ? std::atoi(std::getenv("TRACE_DIFF")) : 1;
   const uint64_t seed = std::getenv("TRACE_SEED") ? std::strtoull(std::getenv("TRACE_SEED"), nullptr, 10) : 1;
-  GameOptions o;
-  o.root_dir = arc::data_root();
-  o.difficulty_override = true;
-  o.difficulty = static_cast<Difficulty>(d);
-  o.seed_override = true;
-  o.seed = seed;
-  Game g = Game::load_level(arc::data_root() + "/levels/duel.json", o);
+  Game g = load_flight(arc::data_root(), "levels/duel.json", d, seed);
   const World& w = g.world();
   TestPilot pilot(seed);
   InputFrame in;

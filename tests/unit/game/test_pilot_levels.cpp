@@ -12,22 +12,9 @@ namespace arc {
 
 LevelRun fly_level(const std::string& root_dir, const std::string& level, int difficulty, uint64_t seed, PilotKind pilot,
                    double max_seconds) {
-  GameOptions o;
-  o.root_dir = root_dir;
-  o.difficulty_override = true;
-  o.difficulty = static_cast<Difficulty>(difficulty);
-  o.seed_override = true;
-  o.seed = seed;
-  Game g = Game::load_level(level.rfind('/', 0) == 0 ? level : root_dir + "/" + level, o);
+  Game g = load_flight(root_dir, level, difficulty, seed);
+  fly_to_outcome(g, seed, pilot, max_seconds);
   const World& w = g.world();
-  TestPilot person(seed);
-  InputFrame in;
-  std::vector<Command> keys;
-  const int64_t limit = seconds_to_ticks(w, max_seconds);
-  while (w.outcome == Outcome::Undecided && w.tick < limit) {
-    if (pilot == PilotKind::Person) person.act(w, in, keys);
-    g.step(in, keys);
-  }
   LevelRun r;
   r.won = w.outcome == Outcome::Victory;
   r.lost = w.outcome == Outcome::Defeat;
