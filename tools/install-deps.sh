@@ -8,7 +8,7 @@ packages=(
   libglfw3-dev libglm-dev libtinygltf-dev libstb-dev libopenimageio-dev libegl-dev libepoxy-dev
   nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev libimgui-dev
   libegl-mesa0 libgl1-mesa-dri libgbm1
-  libopenal-dev
+  libopenal-dev libenet-dev libtbb-dev
   xvfb xauth xdotool time
   python3-matplotlib
 )
