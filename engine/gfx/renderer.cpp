@@ -242,6 +242,8 @@ void Renderer::render(const RenderView& v, int width, int height) {
 
 void Renderer::restart_smoothing() { impl_->batch.restart_smoothing(); }
 
+bool Renderer::warm_sky(uint64_t starfield_seed) { return impl_->sky.warm(starfield_seed, impl_->programs, impl_->rs); }
+
 SceneFormat Renderer::Impl::scene_format() const {
   SceneFormat f;
   f.hdr = rs.hdr;

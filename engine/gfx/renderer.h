@@ -129,6 +129,9 @@ class Renderer {
   // Forgets what smooths from frame to frame (the overdraw budget's cap): the next frame is
   // drawn as if it were the first, e.g. after a cut to an unrelated view.
   void restart_smoothing();
+  // Work a coming view would do in its first frame, done ahead a slice at a time (one face of
+  // the nebula for `starfield_seed`); true when nothing is left. For a mission about to launch.
+  bool warm_sky(uint64_t starfield_seed);
   Image read_pixels();                      // offscreen only; RGBA8, rows top to bottom
   std::vector<float> read_pixels_float();   // offscreen only; the scene buffer as RGBA floats, rows top to bottom
   FrameStats last_stats() const;

@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include <glm/gtc/type_ptr.hpp>
@@ -29,6 +31,14 @@ const glm::mat3 kCubeFaceBasis[6] = {
     glm::mat3(glm::vec3(-1, 0, 0), glm::vec3(0, -1, 0), glm::vec3(0, 0, 1)),   // −Z
 };
 
+constexpr int kStars = 2600;
+
+// The nebula's two lobes, oriented by the seed (drawn after the stars from the same stream).
+std::pair<glm::vec3, glm::vec3> nebula_lobes(uint64_t seed) {
+  const Rng r{seed, 0x57A25, 0};
+  return {glm::vec3(r.unit_vector(uint64_t(kStars) * 6)), glm::vec3(r.unit_vector(uint64_t(kStars) * 6 + 1))};
+}
+
 }  // namespace
 
 SkyPass::SkyPass() {
@@ -49,7 +59,7 @@ SkyPass::~SkyPass() {
 
 void SkyPass::build_stars(uint64_t seed) {
   // Seeded stars: a few bright ones, many faint, tints from red dwarfs to blue giants.
-  const int n = 2600;
+  const int n = kStars;
   Rng r{seed, 0x57A25, 0};
   std::vector<float> data;
   data.reserve(n * 7);
@@ -65,8 +75,7 @@ void SkyPass::build_stars(uint64_t seed) {
     glm::vec3 c = glm::vec3(tint * bright * 1.6);
     data.insert(data.end(), {float(d.x), float(d.y), float(d.z), size, c.r, c.g, c.b});
   }
-  lobe_a_ = glm::vec3(r.unit_vector(uint64_t(n) * 6));
-  lobe_b_ = glm::vec3(r.unit_vector(uint64_t(n) * 6 + 1));
+  std::tie(lobe_a_, lobe_b_) = nebula_lobes(seed);
   glBindVertexArray(star_vao_);
   glBindBuffer(GL_ARRAY_BUFFER, star_vbo_);
   glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * 4), data.data(), GL_STATIC_DRAW);
@@ -94,19 +103,48 @@ void SkyPass::set_uniforms(const Program& p, const glm::mat3& basis, float tan_x
 // than the face), so neighbouring faces hold the same colours along a shared edge, and sky.frag
 // scales the lookup's minor coordinates by (n − 1)/n so that a direction on an edge lands on
 // those texel centres.
-void SkyPass::bake(const ShaderPrograms& programs, int resolution, bool linear) {
-  const int n = resolution;
-  BakedCube& cube = cubes_[linear];
+SkyPass::BakedCube& SkyPass::cube_for(uint64_t seed, const ShaderPrograms& programs, const RenderSettings& rs) {
+  const int n = rs.sky_resolution;
+  BakedCube* pick = nullptr;
+  for (BakedCube& c : cubes_) {
+    if (c.seed == seed && c.linear == rs.hdr && c.size == n && c.shader_generation == programs.generation()) {
+      pick = &c;
+      break;
+    }
+    if (!pick || c.last_use < pick->last_use) pick = &c;
+  }
+  BakedCube& cube = *pick;
+  cube.last_use = ++use_clock_;
+  if (cube.seed == seed && cube.linear == rs.hdr && cube.size == n && cube.shader_generation == programs.generation())
+    return cube;
   if (!cube.tex) glGenTextures(1, &cube.tex);
-  if (!cube_fbo_) glGenFramebuffers(1, &cube_fbo_);
   glBindTexture(GL_TEXTURE_CUBE_MAP, cube.tex);
-  for (int f = 0; f < 6; ++f)
-    glTexImage2D(GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f), 0, GL_RGBA16F, n, n, 0, GL_RGBA, GL_FLOAT, nullptr);
+  if (cube.size != n)
+    for (int f = 0; f < 6; ++f)
+      glTexImage2D(GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f), 0, GL_RGBA16F, n, n, 0, GL_RGBA, GL_FLOAT, nullptr);
   glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAX_LEVEL, 0);
+  cube.size = n;
+  cube.seed = seed;
+  cube.linear = rs.hdr;
+  cube.shader_generation = programs.generation();
+  cube.faces = 0;
+  return cube;
+}
+
+// The nebula changes only with the level's seed, so it is rendered once into the six faces of a
+// half-float cube map (a face of 256² is 0.35° a texel, the noise's finest feature about 4°) and
+// each frame looks it up. The face edges need no seamless filtering (dear on llvmpipe): each face
+// is baked with its outermost texel centres on the cube's edges (a field of view n/(n − 1) wider
+// than the face), so neighbouring faces hold the same colours along a shared edge, and sky.frag
+// scales the lookup's minor coordinates by (n − 1)/n so that a direction on an edge lands on
+// those texel centres.
+void SkyPass::bake_faces(BakedCube& cube, const ShaderPrograms& programs, int first, int last) {
+  const int n = cube.size;
+  if (!cube_fbo_) glGenFramebuffers(1, &cube_fbo_);
   GLint fbo = 0, vp[4];
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &fbo);
   glGetIntegerv(GL_VIEWPORT, vp);
@@ -119,25 +157,39 @@ void SkyPass::bake(const ShaderPrograms& programs, int resolution, bool linear) 
     glGetIntegerv(GL_CLIP_DEPTH_MODE, &depth_mode);
     glClipControl(GL_LOWER_LEFT, GLenum(depth_mode));
   }
+  glDisable(GL_DEPTH_TEST);
+  glDepthMask(GL_FALSE);
+  glDisable(GL_BLEND);
   glBindFramebuffer(GL_FRAMEBUFFER, cube_fbo_);
   glViewport(0, 0, n, n);
-  glUseProgram(programs.sky_exact.id);
+  const Program& p = programs.sky_exact;
+  glUseProgram(p.id);
   glBindVertexArray(empty_vao_);
+  const auto [lobe_a, lobe_b] = nebula_lobes(cube.seed);
   const float edge_to_edge = float(n) / float(n - 1);
-  for (int f = 0; f < 6; ++f) {
+  for (int f = first; f < last; ++f) {
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f), cube.tex, 0);
     if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
       throw std::runtime_error("sky cube map framebuffer incomplete");
-    set_uniforms(programs.sky_exact, kCubeFaceBasis[f], edge_to_edge, edge_to_edge);
-    glUniform1i(programs.sky_exact.loc("u_linear"), linear);
+    glUniformMatrix3fv(p.loc("u_cam_basis"), 1, GL_FALSE, glm::value_ptr(kCubeFaceBasis[f]));
+    glUniform2f(p.loc("u_tan_half"), edge_to_edge, edge_to_edge);
+    glUniform3fv(p.loc("u_lobe_a"), 1, glm::value_ptr(lobe_a));
+    glUniform3fv(p.loc("u_lobe_b"), 1, glm::value_ptr(lobe_b));
+    glUniform1f(p.loc("u_seed"), float(cube.seed % 1000));
+    glUniform1i(p.loc("u_linear"), cube.linear);
     glDrawArrays(GL_TRIANGLES, 0, 3);
   }
+  cube.faces = std::max(cube.faces, last);
   glBindFramebuffer(GL_FRAMEBUFFER, GLuint(fbo));
   glViewport(vp[0], vp[1], vp[2], vp[3]);
   if (clip_control) glClipControl(GLenum(origin), GLenum(depth_mode));
-  cube.size = n;
-  cube.seed = star_seed_;
-  cube.shader_generation = programs.generation();
+}
+
+bool SkyPass::warm(uint64_t seed, const ShaderPrograms& programs, const RenderSettings& rs) {
+  if (rs.sky_exact) return true;
+  BakedCube& cube = cube_for(seed, programs, rs);
+  if (cube.faces < 6) bake_faces(cube, programs, cube.faces, cube.faces + 1);
+  return cube.faces == 6;
 }
 
 SkyPass::SkyGrid SkyPass::sky_grid_of(int n, int scene_w, int scene_h) {
@@ -151,19 +203,22 @@ int SkyPass::draw_nebula(const RenderView& v, const ShaderPrograms& programs, co
   glDisable(GL_DEPTH_TEST);
   glDepthMask(GL_FALSE);
   glDisable(GL_BLEND);
-  const BakedCube& cube = cubes_[rs.hdr];
-  if (!rs.sky_exact && (cube.seed != star_seed_ || cube.size != rs.sky_resolution ||
-                        cube.shader_generation != programs.generation()))
-    bake(programs, rs.sky_resolution, rs.hdr);
+  GLuint cube_tex = 0;
+  int cube_size = rs.sky_resolution;
+  if (!rs.sky_exact) {
+    BakedCube& cube = cube_for(star_seed_, programs, rs);
+    if (cube.faces < 6) bake_faces(cube, programs, cube.faces, 6);
+    cube_tex = cube.tex;
+  }
   const bool grid = !rs.sky_exact && rs.sky_grid > 0;
   const float ty = float(std::tan(v.camera.fov_y_radians * 0.5)), tx = float(ty * vp.aspect);
   glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_CUBE_MAP, cube.tex);
+  glBindTexture(GL_TEXTURE_CUBE_MAP, cube_tex);
   glBindVertexArray(empty_vao_);
   const SkyGrid g = sky_grid_of(std::max(rs.sky_grid, 1), scene_w, scene_h);
   int draws = 1;
   if (grid && color_only_fbo && !rs.hdr) {
-    draw_corner_cells(programs, vp.camera_basis, tx, ty, cube.size, g, color_only_fbo);
+    draw_corner_cells(programs, vp.camera_basis, tx, ty, cube_size, g, color_only_fbo);
     draws = 2;
   } else {
     if (color_only_fbo) {
@@ -175,7 +230,7 @@ int SkyPass::draw_nebula(const RenderView& v, const ShaderPrograms& programs, co
     set_uniforms(p, vp.camera_basis, tx, ty);
     glUniform1i(p.loc("u_sky"), 0);
     glUniform1i(p.loc("u_linear"), rs.hdr);
-    if (!rs.sky_exact) glUniform1f(p.loc("u_edge_scale"), float(cube.size - 1) / float(cube.size));
+    if (!rs.sky_exact) glUniform1f(p.loc("u_edge_scale"), float(cube_size - 1) / float(cube_size));
     if (grid) {
       glUniform1i(p.loc("u_cells_x"), g.cells_x);
       glUniform2f(p.loc("u_cell_ndc"), g.cell_ndc_x, g.cell_ndc_y);

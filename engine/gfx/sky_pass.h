@@ -56,10 +56,18 @@ class SkyPass {
   // llvmpipe its linear rasteriser there.
   int draw_stars(const RenderView& view, const ShaderPrograms& programs, const ViewProjection& vp,
                  const RenderSettings& settings, int scene_height);
+  // Bakes one face of the nebula for `seed` ahead of its first frame (a mission about to
+  // launch), keeping the maps in use; true once all six faces are baked. A face costs about a
+  // sixth of a whole bake, which a launch frame would otherwise pay at once.
+  bool warm(uint64_t seed, const ShaderPrograms& programs, const RenderSettings& settings);
 
  private:
+  struct BakedCube;
   void build_stars(uint64_t seed);
-  void bake(const ShaderPrograms& programs, int resolution, bool linear);
+  // The map for this seed and look, made (or taken from the least recently used) if missing.
+  BakedCube& cube_for(uint64_t seed, const ShaderPrograms& programs, const RenderSettings& settings);
+  // Bakes faces [first, last) of `cube`.
+  void bake_faces(BakedCube& cube, const ShaderPrograms& programs, int first, int last);
   void set_uniforms(const Program& p, const glm::mat3& basis, float tan_x, float tan_y) const;
   // The grid of N-pixel cells over a scene, the last row and column cut at its edge.
   struct SkyGrid {
@@ -77,16 +85,21 @@ class SkyPass {
   int star_count_ = 0;
   uint64_t star_seed_ = ~0ull;
   glm::vec3 lobe_a_{1, 0, 0}, lobe_b_{0, 1, 0};
-  // The baked nebula and what it was baked for: made again when the seed, the resolution or
-  // the shaders change. One map of display values, one in linear light (HDR), so switching
-  // render.hdr does not bake again.
+  // The baked nebulae and what each was baked for: made again when the seed, the resolution,
+  // the colour space (render.hdr) or the shaders change. A few are kept, so the menu's sky and
+  // the mission's both stay ready, and switching render.hdr does not bake again.
   struct BakedCube {
     GLuint tex = 0;
     int size = 0;
     uint64_t seed = ~0ull;
+    bool linear = false;
     int shader_generation = -1;
+    int faces = 0;          // faces baked so far, in order
+    uint64_t last_use = 0;  // for eviction: the least recently used map goes first
   };
-  BakedCube cubes_[2];  // [hdr]
+  static constexpr int kKeptCubes = 4;
+  BakedCube cubes_[kKeptCubes];
+  uint64_t use_clock_ = 0;
   GLuint cube_fbo_ = 0;
 };
 

@@ -201,6 +201,7 @@ void WindowSession::draw() {
     menu_boxes_.clear();
     if (menu_open) layout_menu(menu_->page(), width, height, view_.hud, &menu_boxes_);
     renderer_->render(view_, width, height);
+    warm_prepared_launch();
     if (hud_.show_fps) hud_.frame_stats = describe_particle_stats(renderer_->last_stats());
     // Read the frame just drawn, before the swap leaves the back buffer undefined; the PNG is
     // encoded and written by a worker (about 100 ms at 1280x720, a hitch on this thread).

@@ -116,9 +116,21 @@ void WindowSession::prepare_launch() {
   o.difficulty_override = true;
   if (prepared_ && prepared_->level == level && prepared_->options == o) return;
   if (prepared_) retired_.push_back(std::move(prepared_->game));  // not waited for here
-  prepared_ = PreparedLaunch{level, o, std::async(std::launch::async, [level, o] {
-                               return std::make_unique<Game>(Game::load_level(level, o));
-                             })};
+  auto seed = std::make_shared<PreparedLaunch::Seed>();
+  prepared_ = PreparedLaunch{level, o, std::async(std::launch::async, [level, o, seed] {
+                               auto g = std::make_unique<Game>(Game::load_level(level, o));
+                               seed->value = g->world().seed;
+                               seed->known.store(true, std::memory_order_release);
+                               return g;
+                             }), seed};
+}
+
+// While the briefing is read: the prepared mission's sky, a slice a frame (in the render step,
+// where the GL context is current).
+void WindowSession::warm_prepared_launch() {
+  if (!prepared_ || prepared_->sky_ready) return;
+  const PreparedLaunch::Seed& seed = *prepared_->seed;
+  if (seed.known.load(std::memory_order_acquire)) prepared_->sky_ready = renderer_->warm_sky(seed.value);
 }
 
 // The prepared game when it is the one asked for (same level and options); else nothing, and a

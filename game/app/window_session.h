@@ -8,6 +8,7 @@
 // progress are kept in user_config_dir() either way. window_loop.cpp has the frame (devices,
 // ticks, drawing); window_session.cpp the games it starts and what the menus ask for.
 #pragma once
+#include <atomic>
 #include <future>
 #include <memory>
 #include <optional>
@@ -70,6 +71,7 @@ class WindowSession {
   void load_models_for(const Game& fresh);
   void warm_launches();
   void prepare_launch();
+  void warm_prepared_launch();
   std::unique_ptr<Game> take_prepared(const std::string& level);
   void set_flight_scale();
   void launch(const std::string& level, Difficulty difficulty);
@@ -110,6 +112,14 @@ class WindowSession {
     std::string level;
     GameOptions options;
     std::future<std::unique_ptr<Game>> game;
+    // The loaded level's seed, set by the worker once it is known: its sky is baked ahead, a
+    // face a frame, while the briefing is read.
+    struct Seed {
+      uint64_t value = 0;
+      std::atomic<bool> known{false};  // value is written first
+    };
+    std::shared_ptr<Seed> seed;
+    bool sky_ready = false;
   };
   std::optional<PreparedLaunch> prepared_;
   std::vector<std::future<std::unique_ptr<Game>>> retired_;

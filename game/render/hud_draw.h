@@ -32,6 +32,18 @@ inline double hud_canvas_scale(int window_height) {
   return std::max(kHudSmallestScale, double(window_height) / kHudCanvasHeight);
 }
 
+// HUD sizes follow the canvas height: 1 at 720 units, never below 0.5. Text never shrinks
+// below the font's own size, where its one-pixel strokes would blur away.
+inline double hud_height_scale(int height) { return std::max(height / 720.0, 0.5); }
+inline double hud_text_scale(double at_720, int height) { return std::max(at_720 * hud_height_scale(height), 1.0); }
+// The weapon lines at the bottom right: their row spacing, and the top of the first line.
+inline double hud_weapon_row(int height) {
+  return std::max(24 * hud_height_scale(height), 14 * hud_text_scale(1.2, height));
+}
+inline double hud_weapon_top(int height) { return height - 36 * hud_height_scale(height) - hud_weapon_row(height); }
+// The left edge of the bottom right's column (the weapon lines and the radar above them).
+inline double hud_right_column(int width, int height) { return width - 260 * hud_height_scale(height); }
+
 // Multiplies every position, size, line width and text scale of the layer by `s`.
 inline void scale_hud(HudLayer& h, double s) {
   const float k = float(s);

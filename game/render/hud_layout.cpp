@@ -18,10 +18,8 @@
 namespace arc {
 namespace {
 
-// HUD sizes follow the window height: 1 at 720 pixels. Text never shrinks below the font's
-// own size, where its one-pixel strokes would blur away.
-double height_scale(int height) { return std::max(height / 720.0, 0.5); }
-double text_scale(double at_720, int height) { return std::max(at_720 * height_scale(height), 1.0); }
+double height_scale(int height) { return hud_height_scale(height); }
+double text_scale(double at_720, int height) { return hud_text_scale(at_720, height); }
 constexpr double kGlyphLineHeight = 13.0; // pixels per line at text scale 1 (the font's size)
 constexpr double kLeftMargin = 24.0;      // canvas units from the left edge to the panels there
 constexpr double kSideMargin = 12.0;      // at 720p, the least gap to the right edge and between panels
@@ -61,8 +59,13 @@ double own_bars_top(int height) {
   return height - 30 * k - 2 * own_bar_row(height) - 12 * k;
 }
 
-// The weapon text's line spacing at the bottom right.
-double weapon_row(int height) { return std::max(24 * height_scale(height), 14 * text_scale(1.2, height)); }
+double weapon_row(int height) { return hud_weapon_row(height); }
+
+// The right end of the own bars with the throttle and its widest speed ("1000 m/s").
+double own_panel_right(int height) {
+  const double k = height_scale(height);
+  return kLeftMargin + 220 * k + 14 * k + 12 * k + 8 * k + 8 * kGlyphAdvance * text_scale(1.4, height);
+}
 
 // Where the off-screen arrow may stand: inside the screen edges, under the top panels (the
 // target panel and the longest kill feed) and above the bottom ones (bars, radar, weapon).
@@ -93,10 +96,12 @@ void hud_outcome(const World& w, int width, int height, HudLayer& h) {
 // Text wrapped within the screen's margins on a dark band centred across it, `y` down from
 // its top, or up from its bottom when `from_bottom`.
 void text_band(HudLayer& h, const std::string& s, double y, bool from_bottom, int width, int height,
-               const glm::vec4& back, const glm::vec4& colour) {
+               const glm::vec4& back, const glm::vec4& colour, double max_band_width = 0) {
   const double k = height_scale(height), scale = text_scale(1.2, height), margin = 24 * k, pad = 8 * k;
   const double line_height = 14 * scale, advance = kGlyphAdvance * scale;
-  const size_t chars = size_t(std::max(8.0, (width - 2 * margin - 2 * pad) / advance));
+  double room = width - 2 * margin;
+  if (max_band_width > 0) room = std::min(room, max_band_width);
+  const size_t chars = size_t(std::max(8.0, (room - 2 * pad) / advance));
   const std::vector<std::string> lines = wrap_text(s, chars, 6);
   size_t longest = 0;
   for (const std::string& l : lines) longest = std::max(longest, l.size());
@@ -106,12 +111,15 @@ void text_band(HudLayer& h, const std::string& s, double y, bool from_bottom, in
   for (size_t i = 0; i < lines.size(); ++i) text(h, left + pad, top + pad + i * line_height, scale, colour, lines[i]);
 }
 
-// The notice just above the radar, growing upward: the top of the screen belongs to the
-// objective, the kill feed and the target panel, whose width leaves a notice no room there.
+// The notice at the bottom centre, growing upward between the own bars and the right column:
+// the top of the screen belongs to the objective, the kill feed and the target panel, and the
+// middle to the fight (the chase view's own ship sits just above the notice).
 void hud_notice(const HudState& state, int width, int height, HudLayer& h) {
   if (state.notice.empty()) return;
-  const double bottom = radar_rect(width, height).y - 8 * height_scale(height);
-  text_band(h, state.notice, bottom, true, width, height, {0.05f, 0.1f, 0.2f, 0.8f}, {0.85f, 0.95f, 1.0f, 1.0f});
+  const double k = height_scale(height), gap = kSideMargin * k;
+  const double half = std::min(width * 0.5 - own_panel_right(height), hud_right_column(width, height) - width * 0.5);
+  text_band(h, state.notice, height - gap, true, width, height, {0.05f, 0.1f, 0.2f, 0.8f},
+            {0.85f, 0.95f, 1.0f, 1.0f}, std::max(2 * (half - gap), 16 * kGlyphAdvance));
 }
 
 // The reload error under the top panels (the target panel and the longest kill feed).
@@ -218,7 +226,7 @@ void hud_weapon(const Ship& me, int width, int height, HudLayer& h) {
   const std::string kills = (me.cls->countermeasures.count > 0 ? "flares " + std::to_string(me.seeker.flares) + "  " : "") +
                             "kills " + std::to_string(me.kills);
   const double wide = double(std::max(weapon.size(), kills.size())) * kGlyphAdvance * s;
-  const double x = std::min(width - 260 * k, width - kSideMargin * k - wide), y = height - 36 * k;
+  const double x = std::min(hud_right_column(width, height), width - kSideMargin * k - wide), y = height - 36 * k;
   text(h, x, y - row, s, kHudWhite, weapon);
   text(h, x, y, s, kHudWhite, kills);
 }

@@ -41,9 +41,11 @@ RadarBlip blip(double cx, double cy, double half, const glm::dvec3& local, doubl
 
 }  // namespace
 
+// At the bottom right above the weapon lines, clear of the lower middle where the chase view
+// draws the own ship.
 HudRect radar_rect(double canvas_w, double canvas_h) {
-  const double size = std::min(canvas_w, canvas_h) * 0.22;
-  return {canvas_w * 0.5 - size * 0.5, canvas_h - size - 12.0, size, size};
+  const double size = std::min(canvas_w, canvas_h) * 0.22, k = hud_height_scale(int(canvas_h));
+  return {canvas_w - size - 12.0 * k, hud_weapon_top(int(canvas_h)) - 10.0 * k - size, size, size};
 }
 
 double radar_range(const World& w, const Ship& me, const HudRules& rules) {

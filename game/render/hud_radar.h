@@ -1,4 +1,4 @@
-// game/render/hud_radar.h — the radar at the bottom centre of the HUD (no GL).
+// game/render/hud_radar.h — the radar at the bottom right of the HUD (no GL).
 //
 // Seen from above the followed ship (its nose up the screen), every other live ship is a dot
 // (red hostile, blue friendly, larger for the target) with a tick for its height, and every

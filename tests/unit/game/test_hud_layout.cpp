@@ -1,12 +1,15 @@
 // tests/unit/game/test_hud_layout.cpp — the HUD's panels at every window size from 640x360 to
-// 3840x2160: none overlaps another and none leaves the screen (game/render/hud_layout.h).
+// 3840x2160: none overlaps another, none leaves the screen, and none covers the own ship in the
+// chase view (game/render/hud_layout.h).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <string>
 #include <vector>
 
+#include "assets/model.h"
 #include "game/render/hud_layout.h"
+#include "game/render/screen_projection.h"
 #include "game/render/render_view_builder.h"
 #include "game/sim/level_start.h"
 #include "game/sim/world.h"
@@ -77,6 +80,38 @@ TEST(HudLayout, PanelsNeitherOverlapNorLeaveTheScreenAtEverySize) {
   ASSERT_TRUE(g.world().ships[0].target);
   check_panels(g.world(), busy_state(),
                {"objective", "kill feed", "own bars", "weapon", "target panel", "radar", "notice", "error banner"});
+}
+
+// The chase view draws the own ship in the lower middle of the screen; no panel lies over the
+// screen box of its model's bounds, at any size.
+TEST(HudLayout, NoPanelCoversTheOwnShipInTheChaseView) {
+  Game g = busy_game();
+  const World& w = g.world();
+  ASSERT_EQ(w.camera_mode, CameraMode::Chase);
+  const Ship& me = w.ship(w.player);
+  const ModelData model = load_model(test::repo(w.model_paths[me.model.index()]));
+  for (auto [width, height] : {std::pair{640, 360}, {1280, 720}, {1920, 1080}, {3840, 2160}}) {
+    RenderView v;
+    build_render_view(w, {}, 1.0, CameraSettings{}, busy_state(), width, height, v);
+    std::vector<HudPanelBox> panels;
+    layout_hud(w, v.camera, busy_state(), 1.0, width, height, v.hud, &panels);
+    const Projector pr = Projector::of(v.camera, width, height);
+    HudBox ship{1e9, 1e9, -1e9, -1e9};
+    for (int c = 0; c < 8; ++c) {
+      const glm::dvec3 corner(c & 1 ? model.bounds_max.x : model.bounds_min.x, c & 2 ? model.bounds_max.y : model.bounds_min.y,
+                              c & 4 ? model.bounds_max.z : model.bounds_min.z);
+      glm::dvec2 px;
+      ASSERT_TRUE(pr.project(me.position + me.orientation * corner, px)) << "own ship behind the chase camera";
+      ship = {std::min(ship.x0, px.x), std::min(ship.y0, px.y), std::max(ship.x1, px.x), std::max(ship.y1, px.y)};
+    }
+    EXPECT_GT(ship.y0, height * 0.5) << "the own ship in the lower half at " << width << "x" << height;
+    for (const HudPanelBox& p : panels) {
+      const HudBox& a = p.box;
+      const bool overlap = a.x0 < ship.x1 && ship.x0 < a.x1 && a.y0 < ship.y1 && ship.y0 < a.y1;
+      EXPECT_FALSE(overlap) << box_text(p) << " covers the own ship [" << int(ship.x0) << "," << int(ship.y0) << " - "
+                            << int(ship.x1) << "," << int(ship.y1) << "] at " << width << "x" << height;
+    }
+  }
 }
 
 // The training level at its longest prompt, with a target, a kill in the feed, a notice and an
