@@ -97,6 +97,15 @@ static void hash_leaf(FastHasher& h, const std::optional<TrainingProgress>& t) {
   if (t) fields::hash_pass<kStateHashPass>(h, *t);
 }
 
+// Nothing at all outside levels with events or objectives, likewise.
+static void hash_leaf(FastHasher& h, const std::optional<MissionProgress>& m) {
+  if (m) fields::hash_pass<kStateHashPass>(h, *m);
+}
+
+static void dump_leaf(std::ostream& o, const std::optional<MissionProgress>& m) {
+  if (!m) o << "(none)";
+  else fields::dump_fields(o, *m);
+}
 static void dump_leaf(std::ostream& o, const InputFrame& f) {
   o << "(p" << int(f.pitch) << " y" << int(f.yaw) << " r" << int(f.roll) << " t" << int(f.throttle) << " x"
     << int(f.strafe_x) << " z" << int(f.strafe_y) << " b" << f.buttons << ')';
