@@ -201,6 +201,16 @@ std::string Game::summary_json() const {
   }
   j["ships"] = std::move(ships);
   if (w.training) j["training"] = {{"step", w.training->step}, {"steps", w.level.training.steps.size()}};
+  if (w.mission) {
+    static const char* const kStates[] = {"pending", "done", "failed"};
+    nlohmann::ordered_json objectives = nlohmann::ordered_json::object(), events = nlohmann::ordered_json::object();
+    for (size_t i = 0; i < w.mission->objectives.size(); ++i)
+      objectives[w.level.events.objectives[i].id] = kStates[size_t(w.mission->objectives[i].status)];
+    for (size_t i = 0; i < w.mission->events.size(); ++i)
+      events[w.level.events.events[i].id] = w.mission->events[i].fired_tick;
+    j["objectives"] = std::move(objectives);
+    j["events_fired"] = std::move(events);  // the tick each ran its actions, −1 for not yet
+  }
   ParticleStats st = w.particles->stats();
   j["particles"] = st.live_particles;
   j["clusters"] = st.live_clusters;
