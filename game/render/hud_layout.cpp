@@ -326,7 +326,7 @@ void layout_hud(const World& w, const CameraView& cam, const HudState& state, do
       });
     } else {
       marks.panel("objective", [&] { feed_y = hud_objective(w.level.objective, flying, width, height, h); });
-      if (w.mission) marks.panel("objectives", [&] { feed_y = hud_objectives(w, kLeftMargin, feed_y - 8, h); });
+      if (w.mission) marks.panel("objectives", [&] { feed_y = hud_objectives(w, kLeftMargin, feed_y, h); });
     }
     labels(w, pr, width, height, h);
     marks.panel("kill feed",
