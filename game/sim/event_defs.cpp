@@ -110,7 +110,7 @@ ObjectiveStatus status_of(const JsonValue& v, bool pending_allowed) {
   return s == "done" ? ObjectiveStatus::Done : s == "failed" ? ObjectiveStatus::Failed : ObjectiveStatus::Pending;
 }
 
-// Long: one case per trigger type, each reading exactly its own keys.
+// One case per trigger type, each reading exactly its own keys.
 TriggerDef parse_trigger(JsonObject o, const Names& n, size_t self) {
   TriggerDef t;
   const std::string type = o.require("type").choice(
@@ -166,7 +166,7 @@ void parse_order(JsonObject& o, const Names& n, ActionDef& a) {
   a.speed = o.number("speed", 1.0, 0.05, 1.0);
 }
 
-// Long: one case per action type, each reading exactly its own keys.
+// One case per action type, each reading exactly its own keys.
 ActionDef parse_action(JsonObject o, const Names& n) {
   ActionDef a;
   const std::string type =

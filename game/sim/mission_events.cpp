@@ -77,7 +77,7 @@ void change_team(World& w, const ActionDef& a) {
   }
 }
 
-// Long: one case per action kind.
+// One case per action kind.
 void run_action(World& w, const ActionDef& a) {
   switch (a.kind) {
     case ActionKind::Spawn: {
