@@ -7,6 +7,7 @@
 // the one before has been won at any difficulty (a won mission stays replayable at every
 // difficulty). Unlocks are read from the progress file's results, so they need no state of their own.
 //
+// Example, compiled as Campaign.HeaderExample in tests/unit/app/test_campaign.cpp:
 //   std::vector<MissionInfo> all = load_mission_catalog("levels", ".");
 //   add_campaign(all, load_campaign("levels/campaign/campaign.json", "."), ".");
 #pragma once

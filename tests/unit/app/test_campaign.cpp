@@ -56,6 +56,12 @@ TEST(Campaign, EightMissionsInOrderEveryLevelLoads) {
   for (int n = 1; n <= 8; ++n) EXPECT_FALSE(nth(all, n).chapter.empty());
 }
 
+TEST(Campaign, HeaderExample) {
+  std::vector<MissionInfo> all = load_mission_catalog("levels", ".");
+  add_campaign(all, load_campaign("levels/campaign/campaign.json", "."), ".");
+  EXPECT_EQ(all.back().campaign, 8);
+}
+
 TEST(Campaign, UnlocksInOrderAtAnyDifficulty) {
   const std::vector<MissionInfo> all = catalog();
   Progress p;
