@@ -49,9 +49,12 @@ std::string text_of(const JsonValue& v, size_t longest) {
 
 std::string id_of(const JsonValue& v) {
   const std::string s = text_of(v, kMaxId);
-  for (char c : s)
-    if (!((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_'))
-      v.fail("'" + v.name() + "' must be an id of a-z, 0-9 and _, got \"" + s + "\"");
+  const bool ok = std::all_of(s.begin(), s.end(), [](char c) { return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_'; });
+  if (!ok) {
+    std::string message = "'";
+    message.append(v.name()).append("' must be an id of a-z, 0-9 and _, got \"").append(s).append("\"");
+    v.fail(message);
+  }
   return s;
 }
 
