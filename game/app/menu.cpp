@@ -2,6 +2,8 @@
 // results and the pause screen.
 #include "game/app/menu.h"
 
+#include "game/app/campaign.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -49,6 +51,15 @@ MissionResult mission_result(const World& w) {
   r.damage_taken = me.stats.damage_taken;
   r.beam_accuracy = accuracy(me.stats.beam_hit_ticks, me.stats.beam_ticks);
   r.missile_accuracy = accuracy(me.stats.missiles_hit, me.stats.missiles_fired);
+  if (!w.mission) return r;
+  for (size_t i = 0; i < w.mission->objectives.size(); ++i) {
+    const ObjectiveProgress& o = w.mission->objectives[i];
+    const bool primary = w.level.events.objectives[i].kind == ObjectiveKind::Primary;
+    if (!primary && !o.revealed) continue;  // a hidden objective never found does not count
+    const bool done = o.status == ObjectiveStatus::Done;
+    (primary ? r.primary_total : r.bonus_total) += 1;
+    (primary ? r.primary_done : r.bonus_done) += done ? 1 : 0;
+  }
   return r;
 }
 
@@ -127,7 +138,8 @@ std::vector<Menu::Item> Menu::items() const {
     case MenuScreen::Advanced: return settings_items();
     case MenuScreen::Results: {
       std::vector<Item> v{Item::Retry};
-      if (next_mission(catalog_, chosen_)) v.push_back(Item::Next);
+      if (const MissionInfo* n = next_mission(catalog_, chosen_); n && !mission_locked(catalog_, files_.progress, n->path))
+        v.push_back(Item::Next);
       v.push_back(Item::ToMenu);
       return v;
     }
@@ -150,6 +162,16 @@ std::string Menu::best_text(const std::string& level) const {
   return it == files_.progress.best.end() ? "no result yet" : result_text(it->second);
 }
 
+// "Campaign 3. Cargo Run   best: won in 0:57, 3 kills  gold", or "(locked)" until the one before is won.
+std::string Menu::campaign_label(const MissionInfo& m) const {
+  std::string label = "Campaign " + std::to_string(m.campaign) + ". " + m.title;
+  label.resize(std::max<size_t>(label.size() + 2, 32), ' ');
+  if (mission_locked(catalog_, files_.progress, m.path)) return label + "(locked)";
+  auto it = files_.progress.best.find(progress_key(m.path, difficulty_name(difficulty_)));
+  const std::string medal = it == files_.progress.best.end() ? "" : medal_name(mission_medal(it->second));
+  return label + "best: " + best_text(m.path) + (medal.empty() ? "" : "  " + medal);
+}
+
 std::string Menu::item_label(Item item, int index) const {
   switch (item) {
     case Item::Play: return "Play";
@@ -158,6 +180,7 @@ std::string Menu::item_label(Item item, int index) const {
     case Item::Quit: return "Quit";
     case Item::Mission: {
       const MissionInfo& m = *listed()[size_t(index)];
+      if (m.campaign > 0) return campaign_label(m);
       std::string label = (m.mod.empty() ? "" : "[" + m.mod + "] ") + std::to_string(m.order) + ". " + m.title;
       label.resize(std::max<size_t>(label.size() + 2, 24), ' ');
       return label + "best: " + best_text(m.path);
@@ -181,7 +204,7 @@ void Menu::fill_briefing_page(MenuPage& p) const {
   if (!m) return;
   p.title = m->title;
   p.subtitle = "Objective: " + m->objective;
-  p.paragraph = m->briefing;
+  p.paragraph = m->chapter.empty() ? m->briefing : m->chapter + " " + m->briefing;
   p.lines.push_back(std::string("Difficulty: ") + difficulty_name(difficulty_) + "   (Left/Right changes it)");
   p.lines.push_back(std::string("Best (") + difficulty_name(difficulty_) + "): " + best_text(m->path));
 }
@@ -201,6 +224,13 @@ void Menu::fill_results_page(MenuPage& p) const {
              !last_is_best_ ? "Best so far: " + best_text(chosen_)
              : r.victory    ? "New best!"
                             : "Your best try yet (no win so far)"};
+  if (r.primary_total + r.bonus_total == 0) return;
+  // Objectives and the medal go above the best-so-far line.
+  const std::string medal = medal_name(mission_medal(r));
+  p.lines.insert(p.lines.end() - 1,
+                 {"Objectives        " + std::to_string(r.primary_done) + "/" + std::to_string(r.primary_total) +
+                      (r.bonus_total ? "   bonus " + std::to_string(r.bonus_done) + "/" + std::to_string(r.bonus_total) : ""),
+                  "Medal             " + (medal.empty() ? std::string("none") : medal)});
 }
 
 MenuPage Menu::page() const {
@@ -295,6 +325,10 @@ std::vector<MenuRequest> Menu::accept(Item item, int index) {
     case Item::Settings: go(MenuScreen::Settings); return {};
     case Item::Quit: return {{K::Quit}};
     case Item::Mission:
+      if (mission_locked(catalog_, files_.progress, listed()[size_t(index)]->path)) {
+        message_ = "Locked: win the campaign mission before it first";
+        return {};
+      }
       chosen_ = listed()[size_t(index)]->path;
       go(MenuScreen::Briefing);
       return {};

@@ -137,6 +137,7 @@ class Menu {
   std::vector<MenuRequest> bind(int code);
   std::vector<const MissionInfo*> listed() const;  // the missions or effects on screen
   std::string best_text(const std::string& level) const;
+  std::string campaign_label(const MissionInfo& m) const;
   void fill_results_page(MenuPage& p) const;
   void fill_briefing_page(MenuPage& p) const;
   std::string pause_label(Item item) const;

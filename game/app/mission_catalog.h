@@ -23,6 +23,8 @@ struct MissionInfo {
   int order = 0;
   MissionCategory category = MissionCategory::Mission;
   std::string mod;   // the mod folder's name the level comes from ("" for the game's own)
+  int campaign = 0;  // its place in the campaign (game/app/campaign.h), 1 first; 0: not in it
+  std::string chapter;  // the campaign's line before its briefing ("" outside the campaign)
 };
 
 std::vector<MissionInfo> load_mission_catalog(const std::string& levels_dir, const std::string& root_dir);

@@ -24,6 +24,7 @@ namespace fs = std::filesystem;
 constexpr const char* kSettingsFile = "settings.json";
 constexpr const char* kProgressFile = "progress.json";
 constexpr int kFormat = 1;
+constexpr int kProgressFormat = 2;  // 2: objectives in each result
 
 JsonObject root_object(const std::shared_ptr<const JsonDoc>& doc) { return JsonValue(doc, "", &doc->root()).object(); }
 
@@ -86,6 +87,10 @@ MissionResult parse_result(JsonObject o) {
   m.damage_taken = o.number("damage_taken", 0.0, 0.0, 1.0e12);
   m.beam_accuracy = o.number("beam_accuracy", 0.0, 0.0, 1.0);
   m.missile_accuracy = o.number("missile_accuracy", 0.0, 0.0, 1.0);
+  m.primary_total = static_cast<int>(o.integer("primary_total", 0, 0, 1000));
+  m.primary_done = static_cast<int>(o.integer("primary_done", 0, 0, m.primary_total));
+  m.bonus_total = static_cast<int>(o.integer("bonus_total", 0, 0, 1000));
+  m.bonus_done = static_cast<int>(o.integer("bonus_done", 0, 0, m.bonus_total));
   o.finish();
   return m;
 }
@@ -126,6 +131,7 @@ void write_into(const std::string& dir, const char* name, const std::string& tex
 
 bool better_result(const MissionResult& a, const MissionResult& than) {
   if (a.victory != than.victory) return a.victory;
+  if (a.victory && a.bonus_done != than.bonus_done) return a.bonus_done > than.bonus_done;
   if (a.victory) return a.seconds < than.seconds;
   return a.damage_dealt > than.damage_dealt;
 }
@@ -180,7 +186,11 @@ UserSettings parse_settings(const std::string& text, const std::string& path,
 Progress parse_progress(const std::string& text, const std::string& path) {
   auto doc = JsonDoc::parse(text, path);
   JsonObject r = root_object(doc);
-  check_format(r);
+  JsonValue f = r.require("format");
+  const int64_t format = f.integer(0, 1000000);
+  if (format != 1 && format != kProgressFormat)
+    f.fail("'" + f.name() + "' must be 1 or " + std::to_string(kProgressFormat) + " (the formats this version reads), got " +
+           f.raw().dump());
   Progress p;
   if (auto bv = r.get("best")) {
     JsonObject b = bv->object();
@@ -223,13 +233,15 @@ std::string settings_json(const UserSettings& s) {
 
 std::string progress_json(const Progress& p) {
   nlohmann::ordered_json j;
-  j["format"] = kFormat;
+  j["format"] = kProgressFormat;
   j["best"] = nlohmann::ordered_json::object();
   for (const auto& [key, m] : p.best)
     j["best"][key] = {{"victory", m.victory},           {"seconds", m.seconds},
                       {"kills", m.kills},               {"damage_dealt", m.damage_dealt},
                       {"damage_taken", m.damage_taken}, {"beam_accuracy", m.beam_accuracy},
-                      {"missile_accuracy", m.missile_accuracy}};
+                      {"missile_accuracy", m.missile_accuracy}, {"primary_done", m.primary_done},
+                      {"primary_total", m.primary_total}, {"bonus_done", m.bonus_done},
+                      {"bonus_total", m.bonus_total}};
   return j.dump(2) + "\n";
 }
 

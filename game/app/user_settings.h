@@ -48,18 +48,22 @@ struct UserSettings {
   bool operator==(const UserSettings&) const = default;
 };
 
-// One mission's best: a victory beats any defeat; between victories the quicker, between
-// defeats the one that dealt more damage.
+// One mission's best: a victory beats any defeat; between victories the one with more bonus
+// objectives done, then the quicker; between defeats the one that dealt more damage.
 struct MissionResult {
   bool victory = false;
   double seconds = 0;
   int kills = 0;
   double damage_dealt = 0, damage_taken = 0;
   double beam_accuracy = 0, missile_accuracy = 0;
+  // Objectives of levels that have them: primary and secondary (bonus; hidden ones count once
+  // revealed) done, of how many.
+  int primary_done = 0, primary_total = 0, bonus_done = 0, bonus_total = 0;
   bool operator==(const MissionResult&) const = default;
 };
 bool better_result(const MissionResult& a, const MissionResult& than);
 
+// progress.json: format 2 adds the objectives to each result; format 1 files still load.
 struct Progress {
   std::map<std::string, MissionResult> best;  // progress_key(level, difficulty) → best result
   bool operator==(const Progress&) const = default;

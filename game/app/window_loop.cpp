@@ -8,6 +8,7 @@
 
 #include "core/data_layers.h"
 #include "core/error.h"
+#include "game/app/campaign.h"
 #include "game/app/frame_time_log.h"
 #include "game/app/run_files.h"
 #include "game/app/scene_resources.h"
@@ -49,7 +50,7 @@ void WindowSession::setup() {
   if (!options_.level_given) {
     level_ = data_file(game_options_.root_dir, "levels/attract.json");
     Bindings defaults = load_bindings(data_file(game_options_.root_dir, "assets/settings/bindings.json"));
-    menu_.emplace(load_mission_catalog(game_options_.root_dir + "/levels", game_options_.root_dir), user_, bindings_,
+    menu_.emplace(load_catalog_with_campaign(game_options_.root_dir), user_, bindings_,
                   defaults, data_file(game_options_.root_dir, "assets/settings/quality.json"));
   } else {
     menu_.emplace(user_);  // the pause screen only

@@ -1,5 +1,6 @@
 // WindowSession's games: the user's files and settings, starting, launching, restarting and
 // reloading a level, the recording's end, and what the menu and the pause screen ask for.
+#include "game/app/campaign.h"
 #include "game/app/key_remap.h"
 #include "game/app/window_session.h"
 
@@ -75,7 +76,7 @@ void WindowSession::load_models_for(const Game& fresh) {
 // models, and a particle store written through.
 void WindowSession::warm_launches() {
   std::vector<std::string> levels;
-  for (const MissionInfo& m : load_mission_catalog(game_options_.root_dir + "/levels", game_options_.root_dir))
+  for (const MissionInfo& m : load_catalog_with_campaign(game_options_.root_dir))
     levels.push_back(m.path);
   scene_models_.warm(*renderer_, levels, game_options_.root_dir);
   spare_store_ = std::make_shared<ParticleStore>(game_options_.particle_budget);

@@ -173,7 +173,7 @@ void layout_kill_feed(const World& w, const Ship* me, const HudRules& rules, dou
   for (size_t i = 0; i < w.messages.size(); ++i) {
     const SimMessage& m = w.messages[i];
     if (seconds_since(w, m.tick) >= rules.kill_feed_seconds) continue;
-    const glm::vec4 col = m.kind == MessageKind::Hostile ? kHudYellow : kHudBlue;
+    const glm::vec4 col = m.kind == MessageKind::Hostile ? kHudYellow : m.kind == MessageKind::Radio ? kHudWhite : kHudBlue;
     lines.push_back({m.tick, w.ships.size() + i, m.text, col});
   }
   std::sort(lines.begin(), lines.end(), [](const Line& a, const Line& b) {

@@ -11,6 +11,7 @@
 #include "game/render/hud_comms.h"
 #include "game/render/hud_draw.h"
 #include "game/render/hud_radar.h"
+#include "game/render/hud_objectives.h"
 #include "game/render/hud_training.h"
 #include "game/render/screen_projection.h"
 #include "game/sim/world.h"
@@ -333,6 +334,7 @@ void layout_hud(const World& w, const CameraView& cam, const HudState& state, do
       });
     } else {
       marks.panel("objective", [&] { feed_y = hud_objective(w.level.objective, flying, width, height, h); });
+      if (w.mission) marks.panel("objectives", [&] { feed_y = hud_objectives(w, kLeftMargin, feed_y, h); });
     }
     labels(w, pr, width, height, h);
     marks.panel("kill feed",

@@ -7,17 +7,13 @@
 
 #include "core/rng.h"
 #include "game/sim/geometry.h"
+#include "game/sim/mission_events.h"
 #include "game/sim/seekers.h"
 #include "game/sim/wing.h"
 #include "game/sim/world.h"
 
 namespace arc {
-namespace {
 
-constexpr uint64_t kAiStream = 0x41490000ull;
-
-// Stick commands that turn the nose toward a world direction, damped by the current turn rate;
-// the stick goes no further than `stick_limit` (calmer pilots turn more gently).
 void steer_toward(const Ship& s, const glm::dvec3& dir, double stick_limit, InputFrame& out) {
   glm::dvec3 local = glm::conjugate(s.orientation) * dir;
   double yaw_angle = std::atan2(local.x, -local.z);
@@ -33,6 +29,10 @@ void steer_toward(const Ship& s, const glm::dvec3& dir, double stick_limit, Inpu
   // Level the wings slowly so the ship does not corkscrew.
   out.roll = quantise_axis(-0.3 * s.angular_velocity.z);
 }
+
+namespace {
+
+constexpr uint64_t kAiStream = 0x41490000ull;
 
 glm::dvec3 lead_point(const Ship& shooter, const Ship& target, double projectile_speed) {
   glm::dvec3 rel = target.position - shooter.position;
@@ -94,6 +94,7 @@ void think(World& w, Ship& s) {
   if (!ai.target || !w.ship(ai.target).alive || rng.uniform(0) < 0.25) ai.target = pick_target(w, s.id);
   const Wingman* wing = wingman_of(w, s.id);  // the player's orders come first (ai_orders.cpp)
   if (wing) ai.target = wing_target(w, s, *wing, ai.target);
+  if (const ShipId ordered = ordered_target(w, s.id)) ai.target = ordered;  // an event's attack order
   s.target = ai.target;
   ai.aim_error = rng.unit_vector(1) * (tune.aim_error * rng.uniform(2));
   if (!ai.target) return;

@@ -7,6 +7,9 @@ namespace arc {
 // The World's difficulty row of its level's AI table (assets/settings/ai.json).
 const AiDifficultyDef& ai_difficulty(const World& w);
 
+// Stick commands that turn the nose toward a world direction, damped by the current turn rate;
+// the stick goes no further than `stick_limit` (calmer pilots turn more gently).
+void steer_toward(const Ship& s, const glm::dvec3& dir, double stick_limit, InputFrame& out);
 // A fighter: re-thinks at its reaction time (target, evade, break off; off a player's tail after
 // the difficulty's tail_limit_s), then steers and fires.
 void drive_ai(World& w, Ship& s);

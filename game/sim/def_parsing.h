@@ -55,5 +55,11 @@ void parse_waves(JsonObject& r, LevelDef& L, const std::string& root_dir);
 // and the checks across it and the rest of the level.
 void parse_training(JsonObject& r, LevelDef& L);
 void check_training(JsonObject& r, const LevelDef& L);
+// The optional "objectives" and "events" (game/sim/event_defs.cpp), after the ships, waves and
+// training they name; and whether an event's spawn action brings the ship of world index `ship`.
+void parse_events(JsonObject& r, LevelDef& L);
+bool spawned_by_event(const LevelDef& L, size_t ship);
+// A time or team_below trigger, the one an event's "when" holds, for a wave (wave_defs.cpp).
+TriggerDef wave_trigger(const WaveDef& d);
 
 }  // namespace arc::defs_internal

@@ -19,6 +19,7 @@
 #include <vector>
 #include <glm/vec3.hpp>
 
+#include "game/sim/event_defs.h"
 #include "game/sim/input.h"
 
 namespace arc {
@@ -105,8 +106,9 @@ struct ShipSpawnDef {
   glm::dvec3 position{0.0};
   glm::dvec3 orientation_deg{0.0};  // yaw, pitch, roll
   glm::dvec3 velocity{0.0};
-  // Absent until a training step spawns it ("inactive": true): a ship that has not arrived.
+  // Absent until a training step or an event's spawn brings it ("inactive": true).
   bool inactive = false;
+  std::string group;  // "group": events name the ships that share it together
 };
 
 // A reinforcement wave ("waves"): its ships enter the fight at once when the trigger holds,
@@ -115,6 +117,7 @@ struct WaveDef {
   double after_seconds = -1;  // < 0: triggered by a team's losses
   std::string team;           // with `below`: the team counted
   int below = 0;
+  TriggerDef when;            // the same trigger as a time or team_below event's
   std::vector<ShipSpawnDef> ships;
 };
 
@@ -144,7 +147,8 @@ struct EffectSpawnDef {
   glm::dvec3 label_at{0.0};
 };
 
-enum class WinKind : uint8_t { DestroyAllHostiles = 0, SurviveTicks = 1, LastTeamStanding = 2, TrainingComplete = 3 };
+// Objectives: won when every primary objective is done, lost when one fails ("objectives").
+enum class WinKind : uint8_t { DestroyAllHostiles = 0, SurviveTicks = 1, LastTeamStanding = 2, TrainingComplete = 3, Objectives = 4 };
 enum class LoseKind : uint8_t { PlayerDestroyed = 0, Protect = 1, None = 2 };
 
 struct CameraHintDef {
@@ -232,6 +236,7 @@ struct LevelDef {
   AiDifficultyTable ai;  // the AI pilots at each difficulty
   MissionDef mission;    // "mission": present only in levels the menu lists
   TrainingDef training;  // "training": steps for the player, empty in other levels
+  EventsDef events;      // "objectives" and "events" (event_defs.cpp), empty in other levels
 };
 
 class EffectLibrary;

@@ -97,6 +97,15 @@ static void hash_leaf(FastHasher& h, const std::optional<TrainingProgress>& t) {
   if (t) fields::hash_pass<kStateHashPass>(h, *t);
 }
 
+// Nothing at all outside levels with events or objectives, likewise.
+static void hash_leaf(FastHasher& h, const std::optional<MissionProgress>& m) {
+  if (m) fields::hash_pass<kStateHashPass>(h, *m);
+}
+
+static void dump_leaf(std::ostream& o, const std::optional<MissionProgress>& m) {
+  if (!m) o << "(none)";
+  else fields::dump_fields(o, *m);
+}
 static void dump_leaf(std::ostream& o, const InputFrame& f) {
   o << "(p" << int(f.pitch) << " y" << int(f.yaw) << " r" << int(f.roll) << " t" << int(f.throttle) << " x"
     << int(f.strafe_x) << " z" << int(f.strafe_y) << " b" << f.buttons << ')';
@@ -192,6 +201,16 @@ std::string Game::summary_json() const {
   }
   j["ships"] = std::move(ships);
   if (w.training) j["training"] = {{"step", w.training->step}, {"steps", w.level.training.steps.size()}};
+  if (w.mission) {
+    static const char* const kStates[] = {"pending", "done", "failed"};
+    nlohmann::ordered_json objectives = nlohmann::ordered_json::object(), events = nlohmann::ordered_json::object();
+    for (size_t i = 0; i < w.mission->objectives.size(); ++i)
+      objectives[w.level.events.objectives[i].id] = kStates[size_t(w.mission->objectives[i].status)];
+    for (size_t i = 0; i < w.mission->events.size(); ++i)
+      events[w.level.events.events[i].id] = w.mission->events[i].fired_tick;
+    j["objectives"] = std::move(objectives);
+    j["events_fired"] = std::move(events);  // the tick each ran its actions, −1 for not yet
+  }
   ParticleStats st = w.particles->stats();
   j["particles"] = st.live_particles;
   j["clusters"] = st.live_clusters;

@@ -37,6 +37,7 @@ struct GameOptions {
   int lightning_interval = 0;  // 0 = effects' own
   int substeps = 1;
   double cull_distance = 20000.0;  // particle clusters farther from the camera are not animated or drawn
+  bool autopilot = false;  // the fighter AI flies the player's ship (sim.autopilot)
   std::string root_dir = ".";  // where assets/ lives (files named in levels are relative to it)
   bool operator==(const GameOptions&) const = default;
 };

@@ -31,10 +31,11 @@ void parse_team_colors(JsonObject& r, LevelDef& L) {
 void parse_rules(JsonObject& r, LevelDef& L) {
   JsonObject win = r.require_object("win");
   std::string wk = win.choice("type", "destroy_all_hostiles",
-                              {"destroy_all_hostiles", "survive_ticks", "last_team_standing", "training_complete"});
+                              {"destroy_all_hostiles", "survive_ticks", "last_team_standing", "training_complete", "objectives"});
   L.win = wk == "destroy_all_hostiles" ? WinKind::DestroyAllHostiles
           : wk == "survive_ticks"      ? WinKind::SurviveTicks
           : wk == "training_complete"  ? WinKind::TrainingComplete
+          : wk == "objectives"         ? WinKind::Objectives
                                        : WinKind::LastTeamStanding;
   if (L.win == WinKind::SurviveTicks) L.win_ticks = win.require("ticks").integer(1, 100000000);
   win.finish();
@@ -200,6 +201,10 @@ ShipSpawnDef defs_internal::parse_ship_entry(JsonObject& s, LevelDef& L, const s
   d.orientation_deg = orientation(s);
   d.velocity = s.vec3("velocity", glm::dvec3(0.0), -1.0e5, 1.0e5);
   d.inactive = s.boolean("inactive", false);
+  if (auto g = s.get("group")) {
+    d.group = g->string();
+    if (d.group.empty() || d.group.size() > 40) g->fail("'" + g->name() + "' must be a group name of 1 to 40 characters");
+  }
   s.finish();
   if (!names.insert(d.name).second) s.fail_key("name", "ship name '" + d.name + "' is used twice");
   load_class_of(L, d, cls, root_dir);
@@ -225,6 +230,7 @@ LevelDef parse_level_doc(std::shared_ptr<const JsonDoc> doc, const std::string& 
   parse_team_colors(r, L);
   parse_mission(r, L);
   parse_training(r, L);
+  parse_events(r, L);
   check_training(r, L);
   check_protected_ship(r, L);
   r.finish();

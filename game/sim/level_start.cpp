@@ -10,6 +10,7 @@
 #include "game/sim/commands.h"
 #include "game/sim/effects.h"
 #include "game/sim/geometry.h"
+#include "game/sim/mission_events.h"
 #include "game/sim/shields.h"
 #include "game/sim/training.h"
 #include "game/sim/world.h"
@@ -56,6 +57,8 @@ void add_ship(World& w, const ShipSpawnDef& d, bool waiting) {
   s.alive = !waiting && !d.inactive;
   if (!s.cls->missile.present && s.cls->plasma.present) s.secondary = SecondaryWeapon::Plasma;
   if (d.player) w.player = s.id;
+  // The autopilot setting hands the player's ship to the fighter AI (replays of whole missions).
+  if (d.player && w.options.autopilot && s.ai == AiKind::None) s.ai = AiKind::Fighter;
   if (d.wing) w.wing.push_back({s.id, WingOrder::EngageAtWill, ShipId{}, int32_t(w.wing.size() + 1)});
   w.ships.push_back(std::move(s));
 }
@@ -148,6 +151,7 @@ void init_world(World& w, LevelDef level, std::shared_ptr<const EffectLibrary> e
     for (Ship& s : w.ships)
       if (s.alive) attach_ship_effects(w, s);
     start_training(w);
+    start_mission(w);
   } catch (const InputError& e) {
     throw InputError(w.level.path + ": " + e.what());
   }

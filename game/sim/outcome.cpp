@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "game/sim/mission_events.h"
 #include "game/sim/training.h"
 #include "game/sim/world.h"
 
@@ -46,6 +47,10 @@ void update_outcome(World& w) {
       else if (!friends) decide(w, player ? Outcome::Defeat : Outcome::TeamWon, first_live_team(w, side));
       break;
     }
+    case WinKind::Objectives:
+      if (primary_objective_failed(w)) decide(w, player ? Outcome::Defeat : Outcome::TeamWon, first_live_team(w, side));
+      else if (primary_objectives_done(w)) decide(w, player ? Outcome::Victory : Outcome::TeamWon, side);
+      break;
     case WinKind::TrainingComplete:
       if (training_complete(w)) decide(w, Outcome::Victory, side);
       break;

@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "game/sim/mission_events.h"
 #include "game/sim/world.h"
 #include "core/snapshot_io.h"
 #include "core/state_fields.h"
@@ -30,6 +31,11 @@ static void write_leaf(snapshot::Writer& out, const std::optional<ParticleWorld>
 // Written only in training levels (the reader knows from the level), so other snapshots keep their bytes.
 static void write_leaf(snapshot::Writer& out, const std::optional<TrainingProgress>& t) {
   if (t) fields::write_value(out, *t);
+}
+
+// Written only in levels with events or objectives, likewise.
+static void write_leaf(snapshot::Writer& out, const std::optional<MissionProgress>& m) {
+  if (m) fields::write_value(out, *m);
 }
 
 namespace {
@@ -116,6 +122,13 @@ struct WorldReading {
     fields::FieldReader(in, *this).read(name, *t);
     if (t->step < 0 || size_t(t->step) > steps)
       in.fail(std::string(name) + " step " + std::to_string(t->step) + " is outside 0.." + std::to_string(steps));
+  }
+
+  void read_leaf(Reader& in, const char* name, std::optional<MissionProgress>& m) {
+    m.reset();
+    if (w.level.events.empty()) return;
+    m.emplace(new_mission_progress(w));
+    fields::FieldReader(in, *this).read(name, *m);
   }
 
   // A typed id: its u32 value (validate checks what it refers to).

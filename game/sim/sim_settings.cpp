@@ -6,6 +6,7 @@ namespace arc {
 
 void register_sim_settings(Settings& s) {
   s.define_integer("sim.substeps", 1, 1, 16, "physics sub-steps per tick; each costs CPU time");
+  s.define_integer("sim.autopilot", 0, 0, 1, "1: the fighter AI flies the player's ship (mission replays)");
 }
 
 }  // namespace arc

@@ -10,6 +10,7 @@
 #include "game/sim/damage.h"
 #include "game/sim/effects.h"
 #include "game/sim/flight.h"
+#include "game/sim/mission_events.h"
 #include "game/sim/outcome.h"
 #include "game/sim/projectiles.h"
 #include "game/sim/seekers.h"
@@ -30,10 +31,12 @@ void step_world(World& w, const InputFrame& input, const std::vector<Command>& c
     s.prev_orientation = s.orientation;
   }
   if (!w.waves.empty()) update_waves(w);
+  if (w.mission) update_events(w);
   if (!w.wing.empty()) update_wing_orders(w);
   for (Ship& s : w.ships) {
     if (!s.alive) continue;
     if (s.id == w.player && s.ai == AiKind::None) s.controls = input;
+    else if (w.mission && fly_order(w, s)) {}  // an event's route or hold order
     else if (s.ai == AiKind::Fighter) drive_ai(w, s), defend_against_missiles(w, s);
     else if (s.ai == AiKind::Gunner) drive_gunner(w, s);
     else if (s.ai == AiKind::Drone) drive_drone(w, s);

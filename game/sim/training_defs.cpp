@@ -163,7 +163,7 @@ void parse_training(JsonObject& r, LevelDef& L) {
   o.finish();
 }
 
-// Every inactive ship arrives at some step, and a training_complete win needs the steps.
+// Every inactive ship arrives at some step or event, and a training_complete win needs the steps.
 void check_training(JsonObject& r, const LevelDef& L) {
   if (L.win == WinKind::TrainingComplete && L.training.steps.empty()) {
     JsonObject win = r.require_object("win");
@@ -174,9 +174,11 @@ void check_training(JsonObject& r, const LevelDef& L) {
     bool spawned = false;
     for (const TrainingStepDef& t : L.training.steps)
       spawned = spawned || std::count(t.spawn.begin(), t.spawn.end(), s.name) > 0;
+    spawned = spawned || spawned_by_event(L, size_t(&s - L.ships.data()));
     if (!spawned)
-      r.fail_key(L.training.steps.empty() ? "ships" : "training",
-                 "ship \"" + s.name + "\" is inactive and no training step spawns it (\"spawn\": [\"" + s.name + "\"])");
+      r.fail_key(L.training.steps.empty() ? (L.events.events.empty() ? "ships" : "events") : "training",
+                 "ship \"" + s.name + "\" is inactive and no training step spawns it (\"spawn\": [\"" + s.name +
+                     "\"]), nor does an event's spawn action");
     if (s.player) r.fail_key("ships", "the player's ship \"" + s.name + "\" cannot be inactive");
   }
 }

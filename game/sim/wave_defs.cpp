@@ -1,5 +1,6 @@
 // game/sim/wave_defs.cpp — a level's "waves": reinforcements that enter the fight after a time
-// or when a team runs low, each with ships written like the level's "ships".
+// or when a team runs low, each with ships written like the level's "ships". A wave is sugar
+// for an event: its trigger is an event trigger and its ships arrive by the events' spawn.
 #include <set>
 #include <string>
 
@@ -27,6 +28,7 @@ void parse_trigger(JsonObject& o, const LevelDef& L, WaveDef& d) {
            "({ \"team\": NAME, \"count\": N })");
   if (timed) {
     d.after_seconds = o.require_number("after_seconds", 0.0, 36000.0);
+    d.when = wave_trigger(d);
     return;
   }
   JsonObject t = o.require_object("when_team_below");
@@ -35,9 +37,23 @@ void parse_trigger(JsonObject& o, const LevelDef& L, WaveDef& d) {
   if (!team_in_level(L, d.team)) team.fail("'team' names no team of the level's 'ships': \"" + d.team + "\"");
   d.below = static_cast<int>(t.require("count").integer(1, int64_t(kMaxLevelShips)));
   t.finish();
+  d.when = wave_trigger(d);
 }
 
 }  // namespace
+
+TriggerDef wave_trigger(const WaveDef& d) {
+  TriggerDef t;
+  if (d.after_seconds >= 0) {
+    t.kind = TriggerKind::Time;
+    t.seconds = d.after_seconds;
+  } else {
+    t.kind = TriggerKind::TeamBelow;
+    t.team = d.team;
+    t.count = d.below;
+  }
+  return t;
+}
 
 void parse_waves(JsonObject& r, LevelDef& L, const std::string& root_dir) {
   r.check_list_length("waves", kMaxWaves);

@@ -45,14 +45,15 @@ enum class Outcome : uint8_t { Undecided = 0, Victory = 1, Defeat = 2, TeamWon =
 // The player's standing order to the wing (game/sim/wing.h).
 enum class WingOrder : uint8_t { EngageAtWill = 0, Attack = 1, Cover = 2, FormUp = 3 };
 // Who a message on the HUD speaks for: a wingman, reinforcements of the player's side or hostile ones.
-enum class MessageKind : uint8_t { Wing = 0, Friendly = 1, Hostile = 2 };
+// Radio: a line an event gives a named speaker ("Speaker: text").
+enum class MessageKind : uint8_t { Wing = 0, Friendly = 1, Hostile = 2, Radio = 3 };
 // The last value of each enum: a snapshot's byte beyond it is an error.
 constexpr SecondaryWeapon last_enumerator(SecondaryWeapon) { return SecondaryWeapon::Plasma; }
 constexpr AiMode last_enumerator(AiMode) { return AiMode::BreakOff; }
 constexpr CameraMode last_enumerator(CameraMode) { return CameraMode::Padlock; }
 constexpr Outcome last_enumerator(Outcome) { return Outcome::TeamWon; }
 constexpr WingOrder last_enumerator(WingOrder) { return WingOrder::FormUp; }
-constexpr MessageKind last_enumerator(MessageKind) { return MessageKind::Hostile; }
+constexpr MessageKind last_enumerator(MessageKind) { return MessageKind::Radio; }
 
 // Where the per-tick hash takes a field: word W of the state pass or of the presentation pass.
 inline constexpr int kStateHashPass = 0;
@@ -406,6 +407,12 @@ void visit_fields(M& m, V&& v) {
   v("text", m.text, fields::saved, presentation_hash<2>);
 }
 
+}  // namespace arc
+
+#include "game/sim/mission_state.h"  // NOLINT: needs the hash words and reference tags above
+
+namespace arc {
+
 class World {
  public:
   LevelDef level;
@@ -440,6 +447,8 @@ class World {
   std::vector<Wingman> wing;            // the player's wingmen, in level order (empty: no wing)
   std::vector<WaveState> waves;         // one per LevelDef::waves entry; their ships wait, not alive
   std::vector<SimMessage> messages;     // newest last, at most kMaxMessages
+  // Present only in levels with "objectives" or "events" (game/sim/mission_events.h).
+  std::optional<MissionProgress> mission;
 
   Ship& ship(ShipId id) { return ships[id.index()]; }
   const Ship& ship(ShipId id) const { return ships[id.index()]; }
@@ -482,6 +491,7 @@ void visit_fields(W& w, V&& v) {
   v("wing", w.wing, fields::saved, state_hash<12>);
   v("waves", w.waves, fields::checked, state_hash<13>);
   v("messages", w.messages, fields::saved, presentation_hash<8>);
+  v("mission", w.mission, fields::saved, state_hash<15>);  // only in levels with events or objectives
   v("team_names", w.team_names, fields::not_saved, fields::unhashed);    // from the level
   v("model_paths", w.model_paths, fields::not_saved, fields::unhashed);  // from the level
   v("effects", w.effects, fields::not_saved, fields::unhashed);          // the shared library

@@ -42,7 +42,7 @@ TEST(AllSettings, EachModuleRegistersItsOwnKeys) {
     size_t count;
   } modules[] = {{register_render_settings, "render.", 19},
                  {register_particle_settings, "particles.", 3},
-                 {register_sim_settings, "sim.", 1},
+                 {register_sim_settings, "sim.", 2},
                  {register_audio_settings, "audio.", 4}};
   std::vector<std::string> assembled;
   for (const auto& m : modules) {
