@@ -304,7 +304,7 @@ void AudioEngine::Impl::start(Voice& v, int sound, const SoundCue& cue) {
   v.fade_rate = def.loop ? 1.0 / kLoopFadeIn : 0.0;
   v.started = next_start++;
   v.level = level_of(def, cue);
-  if (def.duck > 0) ducker.trigger(def.duck, def.duck_hold >= 0 ? def.duck_hold : library.mix.duck_hold, library.mix.duck_release);
+  if (def.duck > 0) ducker.trigger(def.duck * std::min(cue.gain, 1.0), def.duck_hold >= 0 ? def.duck_hold : library.mix.duck_hold, library.mix.duck_release);
   alSourcei(v.source, AL_BUFFER, ALint(buffers[size_t(sound)]));
   alSourcei(v.source, AL_LOOPING, def.loop ? AL_TRUE : AL_FALSE);
   alSourcei(v.source, AL_SOURCE_RELATIVE, def.positional ? AL_FALSE : AL_TRUE);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <future>
 
 #include "audio/sequencer.h"
 
@@ -27,9 +28,13 @@ void MusicPlayer::load(const MusicLibraryDef& lib, int rate) {
   clear();
   lib_ = lib;
   slots_.resize(lib.pieces.size());
+  // Pieces are independent: rendered on threads, uploaded in order (the samples do not depend on it).
+  std::vector<std::future<std::vector<float>>> rendered;
+  for (const MusicPieceDef& p : lib.pieces)
+    rendered.push_back(std::async(std::launch::async, [&lib, &p, rate] { return render_piece(lib, p, rate); }));
   for (size_t i = 0; i < lib.pieces.size(); ++i) {
     Slot& s = slots_[i];
-    const std::vector<float> f = render_piece(lib, lib.pieces[i], rate);
+    const std::vector<float> f = rendered[i].get();
     std::vector<int16_t> pcm(f.size());
     for (size_t k = 0; k < f.size(); ++k) pcm[k] = int16_t(std::lround(std::clamp(f[k], -1.0f, 1.0f) * 32767.0f));
     alGenBuffers(1, &s.buffer);

@@ -10,6 +10,7 @@ namespace arc {
 namespace {
 
 constexpr int64_t kHitInterval = 6;  // ticks between two hit sounds on one ship
+constexpr int64_t kPlayerHitInterval = 30;  // on the player's: each cuts through, so fewer
 constexpr uint64_t kProjectileOwner = uint64_t(1) << 32;
 constexpr uint64_t kLockOwner = uint64_t(3) << 32;  // the player's lock tone: one loop
 // Seconds between lock ticks as the lock starts and just before it completes.
@@ -85,8 +86,11 @@ void SoundEventTracker::ship_events(const World& w, size_t i, std::vector<SoundE
       const SoundKind kind = s.id == w.player ? SoundKind::PlayerHit
                              : shield         ? SoundKind::BeamHitShield
                                               : SoundKind::BeamHitHull;
-      out.push_back(event(kind, hit_point(w, i), s.velocity, owner, std::clamp(0.5 + 10.0 * share, 0.5, 1.0)));
-      m.next_hit_sound = w.tick + kHitInterval;
+      double intensity = std::clamp(0.5 + 10.0 * share, 0.5, 1.0);
+      // The first hit on the player after a lull cuts through; the rest of a burst is quieter.
+      if (kind == SoundKind::PlayerHit && w.tick < m.next_hit_sound + kPlayerHitInterval * 3) intensity = 0.4;
+      out.push_back(event(kind, hit_point(w, i), s.velocity, owner, intensity));
+      m.next_hit_sound = w.tick + (kind == SoundKind::PlayerHit ? kPlayerHitInterval : kHitInterval);
     }
     if (regenerating && !m.regenerating) out.push_back(event(SoundKind::ShieldRecharge, s.position, s.velocity, owner));
     if (s.afterburner_on && !m.afterburner) out.push_back(event(SoundKind::Afterburner, s.position, s.velocity, owner));
@@ -153,7 +157,8 @@ void SoundEventTracker::player_events(const World& w, std::vector<SoundEvent>& o
   for (const Projectile& p : w.projectiles) homing = homing || (p.kind == SecondaryWeapon::Missile && p.target == me.id && !p.decoy);
   if (!homing) next_warning_ = 0;
   if (homing && me.alive && primed_ && w.tick >= next_warning_) {
-    out.push_back(event(SoundKind::MissileWarning, me.position, me.velocity, kLockOwner));
+    // The first warning of a threat cuts through; its repeats remind, quieter.
+    out.push_back(event(SoundKind::MissileWarning, me.position, me.velocity, kLockOwner, next_warning_ ? 0.3 : 1.0));
     next_warning_ = w.tick + std::max<int64_t>(1, std::llround(kWarningInterval / w.dt));
   }
   if (primed_ && me.kills > player_kills_) out.push_back(event(SoundKind::Kill, me.position, me.velocity, kLockOwner));

