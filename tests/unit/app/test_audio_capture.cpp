@@ -66,7 +66,8 @@ TEST(AudioCapture, ABeamOnAShieldIsHeardWhileItFires) {
   double before = 0;
   for (int i = 2; i < 10; ++i) before = std::max(before, rms[size_t(i)]);
   for (int i = 11; i < 30; ++i) EXPECT_GT(rms[size_t(i)], 2.0 * before) << "window " << i << " while the beam fires";
-  EXPECT_LT(rms[38], 1.5 * before) << "quiet again after the beam";
+  // Quiet again after the beam, before the shield's recharge rises from 3.5 s.
+  EXPECT_LT(rms[33], 1.5 * before) << "quiet again after the beam";
 }
 
 TEST(AudioCapture, TheSameSessionGivesTheSameSamples) {

@@ -4,6 +4,7 @@
 // have music with no stretch of silence over 2 s; mood changes land on the beat.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <map>
 
@@ -97,6 +98,67 @@ TEST(AudioMix, AKillStandsOut) {
   ASSERT_GT(t, 0) << "the player's kill was not heard";
   EXPECT_GE(cue_rise_db(r.samples, r.rate, t), 6.0);
   EXPECT_LE(peak_dbfs(r.samples), -1.0);
+}
+
+// The attract demo behind the title menu plays the menu theme: no silence over 2 s.
+TEST(AudioMix, TheMenuHasMusic) {
+  Game game = Game::load_level(data_root() + "/levels/attract.json", GameOptions{});
+  AudioCapture capture(data_root() + "/assets/sounds/sounds.json", all_settings(), testing::TempDir() + "menu.wav");
+  capture.session().set_menu(true);
+  for (int t = 0; t < 60 * 30; ++t) {
+    game.step(InputFrame{});
+    capture.after_tick(game.world());
+  }
+  EXPECT_EQ(capture.session().engine().music(), "menu");
+  const SilenceFigures s = silence(capture.samples(), 48000);
+  std::printf("menu: silence %.1f %%, longest %.1f s, loudness %.2f LUFS, peak %.2f dBFS\n", 100 * s.share, s.longest,
+              integrated_lufs(capture.samples(), 48000), peak_dbfs(capture.samples()));
+  EXPECT_LT(s.longest, 2.0);
+  EXPECT_LE(peak_dbfs(capture.samples()), -1.0);
+}
+
+// After the kill wins the range: the victory stinger, then the menu theme under the results.
+TEST(AudioMix, TheResultsHaveMusic) {
+  const Render r = render_script("tests/replays/range_kill_explosion.replay", all_settings(), 60 * 30);
+  double won = -1;
+  for (const auto& [t, piece] : r.music)
+    if (piece == "victory") won = t;
+  ASSERT_GT(won, 0);
+  EXPECT_EQ(r.music.back().second, "menu") << "the stinger hands over to the menu theme";
+  const std::vector<float> after(r.samples.begin() + std::ptrdiff_t(won * r.rate) * 2, r.samples.end());
+  const SilenceFigures s = silence(after, r.rate);
+  std::printf("results: silence %.1f %%, longest %.1f s over %.1f s\n", 100 * s.share, s.longest, double(after.size() / 2) / r.rate);
+  EXPECT_LT(s.longest, 2.0);
+}
+
+// Changes of mood between the mission's layers fall within a tick after a beat of the set.
+TEST(AudioMix, MoodsChangeOnTheBeat) {
+  const Render r = render_script("tests/audio/duel.replay", all_settings());
+  const double beat = 60.0 / 112.0, tick = 1.0 / 60.0;
+  ASSERT_GE(r.music.size(), 3u) << "the duel moves between calm, tension and combat";
+  const double start = r.music.front().first;
+  for (size_t i = 1; i < r.music.size(); ++i) {
+    const double since = r.music[i].first - start;
+    const double past = since - std::floor(since / beat + 1e-9) * beat;
+    EXPECT_LE(past, tick + 1e-6) << r.music[i].second << " at " << r.music[i].first << " s";
+  }
+}
+
+TEST(AudioMix, ARadioLineSpeaksWithASubtitle) {
+  Game game = Game::load_level(data_root() + "/levels/attract.json", GameOptions{});
+  AudioCapture capture(data_root() + "/assets/sounds/sounds.json", all_settings(), testing::TempDir() + "radio.wav");
+  EXPECT_FALSE(capture.session().say("no_such_line"));
+  ASSERT_TRUE(capture.session().say("objective_done"));
+  bool heard = false, shown = false;
+  for (int t = 0; t < 30; ++t) {
+    game.step(InputFrame{});
+    capture.after_tick(game.world());
+    for (const VoiceInfo& v : capture.session().engine().voices()) heard = heard || v.sound == "radio/objective_done";
+    if (auto sub = capture.session().subtitle()) shown = shown || sub->text == "Objective complete.";
+  }
+  EXPECT_TRUE(heard);
+  EXPECT_TRUE(shown);
+  EXPECT_GT(capture.session().engine().duck_db(), 0) << "the fight ducks under the voice";
 }
 
 }  // namespace
