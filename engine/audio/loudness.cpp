@@ -95,6 +95,23 @@ double rms_dbfs(const std::vector<float>& stereo, int rate, double from, double 
   return to_db(sum / double(b - a));
 }
 
+double k_weighted_lufs(const std::vector<float>& stereo, int rate, double from, double to) {
+  const size_t frames = stereo.size() / 2;
+  const size_t settle = size_t(std::max(0.0, from - 0.2) * rate), a = size_t(std::max(0.0, from) * rate);
+  const size_t b = std::min(frames, size_t(std::max(0.0, to) * rate));
+  if (b <= a) return -200.0;
+  double sum = 0;
+  for (int ch = 0; ch < 2; ++ch) {
+    Biquad shelf{}, hp{};
+    k_weighting(rate, shelf, hp);
+    for (size_t i = settle; i < b; ++i) {
+      const double y = hp.run(shelf.run(stereo[2 * i + size_t(ch)]));
+      if (i >= a) sum += y * y;
+    }
+  }
+  return -0.691 + to_db(sum / double(b - a));
+}
+
 double cue_rise_db(const std::vector<float>& stereo, int rate, double at, double window) {
   return rms_dbfs(stereo, rate, at, at + window) - rms_dbfs(stereo, rate, at - 1.0, at);
 }

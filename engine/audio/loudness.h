@@ -22,6 +22,8 @@ double peak_dbfs(const std::vector<float>& stereo);
 double integrated_lufs(const std::vector<float>& stereo, int sample_rate);
 // RMS of both channels over [from, to) seconds, in dBFS (−200 for silence).
 double rms_dbfs(const std::vector<float>& stereo, int sample_rate, double from, double to);
+// K-weighted loudness (BS.1770's filter, no gating) of [from, to) seconds, in LUFS.
+double k_weighted_lufs(const std::vector<float>& stereo, int sample_rate, double from, double to);
 // How far a cue starting at `at` seconds stands out: the RMS of the `window` after it over the
 // RMS of the second before it, in dB.
 double cue_rise_db(const std::vector<float>& stereo, int sample_rate, double at, double window = 0.3);

@@ -11,7 +11,8 @@
 namespace arc {
 namespace {
 
-constexpr double kRadioDuck = 10;       // dB the fight drops under a line
+constexpr double kRadioDuck = 12;       // dB the fight drops under a line
+constexpr double kRadioGain = 1.6;      // speech is sparse: lifted over the fight, the limiter takes its peaks
 constexpr double kMissileCallGap = 10;  // seconds between two "missile on your six"
 constexpr double kKillCallGap = 4;
 
@@ -72,6 +73,7 @@ RadioLibrary load_radio_library(const std::string& path) {
     s.positional = false;
     s.priority = 99;
     s.duck = kRadioDuck;
+    s.gain = kRadioGain;
     s.duck_hold = l.seconds;
     s.duration = l.seconds;
     s.pcm = std::move(a.samples);
@@ -136,12 +138,6 @@ std::vector<std::string> RadioDirector::lines(const World& w, const std::vector<
       const std::string id = line_of(m);
       if (!id.empty()) out.push_back(id);
     }
-  if (!started_) {
-    started_ = true;
-    bool hostiles = false;
-    for (const Ship& s : w.ships) hostiles = hostiles || (in_fight(s) && w.hostile(w.ship(w.player), s));
-    if (hostiles && w.tick <= 1) out.push_back("mission_start");
-  }
   return out;
 }
 

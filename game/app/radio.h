@@ -5,10 +5,11 @@
 // tools/radio/gen_radio.py. Each line becomes a sound "radio/ID" of the voice group that ducks
 // the fight while it speaks. RadioQueue speaks one line at a time, in order, and says what the
 // HUD subtitles now. RadioDirector picks the lines the game's events call for (wing replies,
-// reinforcements, a missile on the player, the player's kills, the outcome, the start).
+// reinforcements, a missile on the player, the player's kills, the outcome); mission lines
+// ("mission_start", "objective_done") are the mission events' to say.
 //
-// Example, compiled as AppExamples.RadioLine in tests/unit/app/test_app_examples.cpp (mission
-// events call AudioSession::say with a line id from the manifest):
+// Example, as AudioMix.ARadioLineSpeaksWithASubtitle in tests/unit/app/test_audio_mix.cpp does
+// (mission events call AudioSession::say with a line id from the manifest):
 //   audio.say("objective_done");          // unknown ids: false, and nothing is said
 //   if (auto s = audio.subtitle()) hud.subtitle = s->speaker + ": " + s->text;
 #pragma once
@@ -70,7 +71,6 @@ class RadioDirector {
   int64_t last_tick_ = -1, next_missile_call_ = 0, next_kill_call_ = 0;
   int kill_calls_ = 0;
   int outcome_ = 0;
-  bool started_ = false;
 };
 
 }  // namespace arc
