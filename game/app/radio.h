@@ -8,8 +8,8 @@
 // reinforcements, a missile on the player, the player's kills, the outcome); mission lines
 // ("mission_start", "objective_done") are the mission events' to say.
 //
-// Example, as AudioMix.ARadioLineSpeaksWithASubtitle in tests/unit/app/test_audio_mix.cpp does
-// (mission events call AudioSession::say with a line id from the manifest):
+// Mission events call AudioSession::say with a line id from the manifest.
+// Example, compiled as AppExamples.RadioLine in tests/unit/app/test_app_examples.cpp:
 //   audio.say("objective_done");          // unknown ids: false, and nothing is said
 //   if (auto s = audio.subtitle()) hud.subtitle = s->speaker + ": " + s->text;
 #pragma once

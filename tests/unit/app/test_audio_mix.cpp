@@ -97,7 +97,7 @@ TEST(AudioMix, ARadioLineStandsOutInTheArena) {
   print_figures("arena with a radio line", r);
   std::printf("arena radio line at %.2f s: rise %+.1f dB over 0.5 s\n", t, rise);
   // Band-limited speech against the arena's full-band bed: the fight drops 12 dB under it, so
-  // the words carry, but its RMS does not yet rise 6 dB over the second before (docs/audio.md).
+  // the words carry, but its RMS does not rise 6 dB over the second before (docs/audio.md).
   EXPECT_GE(rise, -3.0);
   EXPECT_LE(peak_dbfs(r.samples), -1.0);
 }
