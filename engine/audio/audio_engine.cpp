@@ -14,6 +14,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "audio/mix_bus.h"
+#include "audio/music_player.h"
 #include "audio/synth.h"
 #include "core/file_writer.h"
 #include "core/json.h"
@@ -36,6 +38,7 @@ struct Voice {
   bool fading = false;
   double fade = 1, fade_rate = 0;  // fade_rate per second: < 0 out, > 0 in
   double cue_gain = 1;
+  double level = 1;        // gain at the listener before the mix: fall-off × cue × sound
   uint64_t started = 0;    // order of starting, for "oldest among equals"
 };
 
@@ -81,6 +84,9 @@ struct AudioEngine::Impl {
   glm::dvec3 listener_pos{0.0}, listener_vel{0.0};
   glm::dquat listener_inv{1, 0, 0, 0};
   uint64_t next_start = 0;
+  std::unique_ptr<Limiter> limiter;
+  Ducker ducker;
+  MusicPlayer music;
 
   bool open_device();
   bool open_loopback();
@@ -89,10 +95,13 @@ struct AudioEngine::Impl {
   void delete_sources();
   void apply(Voice& v, const SoundCue* cue);
   double mix_gain(const SoundDef& def) const;
+  double group_gain(MixGroup g, bool duckable = true) const;
   Voice* find_loop(int sound, uint64_t key);
   Voice* free_voice();
-  Voice* take_voice(int priority, bool loop);
-  bool audible(const SoundDef& def, const SoundCue& cue) const;
+  Voice* take_voice(double standing, bool loop);
+  bool thin(int sound, double level);
+  double level_of(const SoundDef& def, const SoundCue& cue) const;
+  double standing(const Voice& v) const;
   void stop(Voice& v);
   void start(Voice& v, int sound, const SoundCue& cue);
 };
@@ -144,6 +153,7 @@ bool AudioEngine::Impl::open_device() {
 }
 
 void AudioEngine::Impl::close() {
+  if (context) music.clear();
   delete_sources();
   if (!buffers.empty()) alDeleteBuffers(ALsizei(buffers.size()), buffers.data());
   buffers.clear();
@@ -173,9 +183,15 @@ void AudioEngine::Impl::delete_sources() {
   voices.clear();
 }
 
-double AudioEngine::Impl::mix_gain(const SoundDef& def) const {
+double AudioEngine::Impl::group_gain(MixGroup g, bool duckable) const {
   if (mix.mute) return 0.0;
-  return mix.volume * (def.positional ? mix.effects_volume : 1.0) * def.gain;
+  const double master = mix.volume * std::pow(10.0, library.mix.master_db / 20.0);
+  return master * mix.group_volume[int(g)] * (duckable && library.mix.ducked[int(g)] ? ducker.gain() : 1.0);
+}
+
+// A sound that ducks the others is not ducked itself.
+double AudioEngine::Impl::mix_gain(const SoundDef& def) const {
+  return group_gain(def.group, def.duck <= 0) * (def.positional ? mix.effects_volume : 1.0) * def.gain;
 }
 
 // Position and velocity in the camera's frame, and the gain with its fade, onto the source.
@@ -188,7 +204,10 @@ void AudioEngine::Impl::apply(Voice& v, const SoundCue* cue) {
     alSource3f(v.source, AL_VELOCITY, float(vel.x), float(vel.y), float(vel.z));
     alSourcef(v.source, AL_PITCH, float(std::clamp(cue->pitch, 0.25, 4.0)));
   }
-  if (cue) v.cue_gain = cue->gain;
+  if (cue) {
+    v.cue_gain = cue->gain;
+    v.level = level_of(def, *cue);
+  }
   alSourcef(v.source, AL_GAIN, float(std::max(0.0, mix_gain(def) * v.cue_gain * v.fade)));
 }
 
@@ -204,32 +223,57 @@ Voice* AudioEngine::Impl::free_voice() {
   return nullptr;
 }
 
-// OpenAL's inverse-distance-clamped gain at the cue's distance, times the cue's own.
-bool AudioEngine::Impl::audible(const SoundDef& def, const SoundCue& cue) const {
-  if (!def.positional) return true;
+// OpenAL's inverse-distance-clamped gain at the cue's distance, times the cue's and the sound's.
+double AudioEngine::Impl::level_of(const SoundDef& def, const SoundCue& cue) const {
+  if (!def.positional) return cue.gain * def.gain;
   const double d = std::clamp(glm::length(cue.position - listener_pos), def.reference_distance, def.max_distance);
   const double falloff = def.reference_distance / (def.reference_distance + def.rolloff * (d - def.reference_distance));
-  return falloff * cue.gain * def.gain >= kInaudible;
+  return falloff * cue.gain * def.gain;
+}
+
+// Priority and importance first; among equals the nearer (louder) sound stands higher.
+double AudioEngine::Impl::standing(const Voice& v) const {
+  return library.sounds[size_t(v.sound)].priority + 10.0 * std::log10(std::max(v.level, 1e-6));
+}
+
+// A sound at its max_voices: a new cue louder by 3 dB than the quietest of them takes its
+// place (it fades out); else the cue is not heard. Returns whether the cue may start.
+bool AudioEngine::Impl::thin(int sound, double level) {
+  const SoundDef& def = library.sounds[size_t(sound)];
+  if (def.max_voices <= 0) return true;
+  int count = 0;
+  Voice* quietest = nullptr;
+  for (Voice& v : voices) {
+    if (v.sound != sound || v.fading) continue;
+    ++count;
+    if (!quietest || v.level < quietest->level) quietest = &v;
+  }
+  if (count < def.max_voices) return true;
+  if (!quietest || level < quietest->level * 1.41) return false;
+  quietest->fading = true;
+  quietest->fade_rate = -1.0 / kStealFade;
+  return true;
 }
 
 // When the pool is full: the lowest-priority playing voice (oldest among equals) starts fading
 // out, if it is below `priority` — or equal, when neither is a loop (a newer spark replaces an
 // older one; loops of equal priority, asked for every tick, would otherwise take turns).
 // Returns the source the new sound takes, or null.
-Voice* AudioEngine::Impl::take_voice(int priority, bool loop) {
+Voice* AudioEngine::Impl::take_voice(double priority, bool loop) {
   int playing = 0;
   Voice* victim = nullptr;
   for (Voice& v : voices) {
     if (v.sound < 0 || v.fading) continue;
     ++playing;
-    const int p = library.sounds[size_t(v.sound)].priority;
-    const int vp = victim ? library.sounds[size_t(victim->sound)].priority : 1000;
+    const double p = standing(v);
+    const double vp = victim ? standing(*victim) : 1e9;
     if (p < vp || (p == vp && v.started < victim->started)) victim = &v;
   }
   if (playing >= mix.voices) {
     if (!victim) return nullptr;
-    const int vp = library.sounds[size_t(victim->sound)].priority;
-    if (vp > priority || (vp == priority && (loop || victim->loop))) return nullptr;
+    const double vp = standing(*victim);
+    // Loops asked for every tick keep their voices against a newcomer unless it clearly stands higher.
+    if (vp > priority || ((loop || victim->loop) && vp + 3.0 > priority)) return nullptr;
     victim->fading = true;
     victim->fade_rate = -1.0 / kStealFade;
   }
@@ -259,6 +303,8 @@ void AudioEngine::Impl::start(Voice& v, int sound, const SoundCue& cue) {
   v.fade = def.loop ? 0.0 : 1.0;
   v.fade_rate = def.loop ? 1.0 / kLoopFadeIn : 0.0;
   v.started = next_start++;
+  v.level = level_of(def, cue);
+  if (def.duck > 0) ducker.trigger(def.duck * std::min(cue.gain, 1.0), def.duck_hold >= 0 ? def.duck_hold : library.mix.duck_hold, library.mix.duck_release);
   alSourcei(v.source, AL_BUFFER, ALint(buffers[size_t(sound)]));
   alSourcei(v.source, AL_LOOPING, def.loop ? AL_TRUE : AL_FALSE);
   alSourcei(v.source, AL_SOURCE_RELATIVE, def.positional ? AL_FALSE : AL_TRUE);
@@ -302,8 +348,14 @@ void AudioEngine::load(const SoundLibraryDef& library) {
   m.buffers.assign(library.sounds.size(), 0);
   alGenBuffers(ALsizei(m.buffers.size()), m.buffers.data());
   const int rate = sample_rate();
+  m.limiter = std::make_unique<Limiter>(rate, library.mix.ceiling_db, library.mix.limiter_release);
   for (size_t i = 0; i < library.sounds.size(); ++i) {
-    std::vector<float> f = synthesise(library.sounds[i], rate);
+    const SoundDef& def = library.sounds[i];
+    if (!def.pcm.empty()) {
+      alBufferData(m.buffers[i], AL_FORMAT_MONO16, def.pcm.data(), ALsizei(def.pcm.size() * 2), def.pcm_rate);
+      continue;
+    }
+    std::vector<float> f = synthesise(def, rate);
     std::vector<int16_t> pcm(f.size());
     for (size_t k = 0; k < f.size(); ++k) pcm[k] = int16_t(std::lround(std::clamp(f[k], -1.0f, 1.0f) * 32767.0f));
     alBufferData(m.buffers[i], AL_FORMAT_MONO16, pcm.data(), ALsizei(pcm.size() * 2), rate);
@@ -348,13 +400,16 @@ void AudioEngine::play(const SoundCue& cue) {
       return;
     }
   }
-  if (!m.audible(def, cue)) return;
-  if (Voice* v = m.take_voice(def.priority, def.loop)) m.start(*v, sound, cue);
+  const double level = m.level_of(def, cue);
+  if (level < kInaudible || !m.thin(sound, level)) return;
+  if (Voice* v = m.take_voice(def.priority + 10.0 * std::log10(std::max(level, 1e-6)), def.loop)) m.start(*v, sound, cue);
 }
 
 void AudioEngine::update(double seconds) {
   Impl& m = *impl_;
   if (!active()) return;
+  m.ducker.advance(seconds);
+  m.music.update(seconds, m.group_gain(MixGroup::Music));
   for (Voice& v : m.voices) {
     if (v.sound < 0) continue;
     if (v.loop && !v.asked && !v.fading) {
@@ -383,7 +438,19 @@ void AudioEngine::render(float* stereo, int frames) {
     return;
   }
   m.render(m.device, stereo, frames);
+  if (m.limiter) m.limiter->process(stereo, frames);
 }
+
+void AudioEngine::load_music(const MusicLibraryDef& music) {
+  if (active()) impl_->music.load(music, sample_rate());
+}
+
+void AudioEngine::set_music(const std::string& piece) {
+  if (active()) impl_->music.request(piece);
+}
+
+std::string AudioEngine::music() const { return impl_->music.playing(); }
+double AudioEngine::duck_db() const { return impl_->ducker.depth_db(); }
 
 int AudioEngine::voice_count() const {
   int n = 0;
@@ -396,7 +463,7 @@ std::vector<VoiceInfo> AudioEngine::voices() const {
   for (const Voice& v : impl_->voices)
     if (v.sound >= 0)
       out.push_back({impl_->library.sounds[size_t(v.sound)].name, impl_->library.sounds[size_t(v.sound)].priority,
-                     v.fading, v.fade});
+                     v.fading, v.fade, v.level});
   return out;
 }
 

@@ -8,8 +8,15 @@
 // calls all do nothing: never a crash, never a hang.
 //
 // Voices: at most `voices` sounds play at once. A cue that finds the pool full takes the voice
-// of the lowest priority (the oldest among equals) if its own priority is at least as high,
-// else it is dropped; a taken voice fades out over 30 ms on a spare source, so nothing clicks.
+// of the lowest standing (the oldest among equals) if its own is at least as high, else it is
+// dropped; standing is the sound's priority plus half its level at the listener in dB, so a
+// far sound yields to a near one of the same kind. A sound with max_voices keeps only that many
+// voices, the loudest (a dozen beams are thinned to the nearest few, not a wall of crackle).
+// A taken voice fades out over 30 ms on a spare source, so nothing clicks.
+//
+// Mix bus: every sound belongs to a group (MixGroup) with its own volume; a sound with `duck`
+// lowers the ducked groups (audio/mix_bus.h) while it sounds; the loopback output passes a
+// look-ahead limiter. A device keeps OpenAL Soft's own output limiter instead.
 // A looping sound (engine hum, beam, missile flight) plays while the game asks for it with the
 // same key each update and fades out in 60 ms once it stops asking.
 //
@@ -35,6 +42,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>
 
+#include "audio/music_def.h"
 #include "audio/sound_def.h"
 
 namespace arc {
@@ -49,6 +57,7 @@ struct AudioDesc {
 struct AudioMix {
   double volume = 1;          // master
   double effects_volume = 1;  // positional game sounds (UI sounds use only the master volume)
+  double group_volume[kMixGroups] = {1, 1, 1, 1, 1, 1};  // by MixGroup: music, weapons, impacts, engines, UI, voice
   bool mute = false;
   int voices = 32;
 };
@@ -67,6 +76,7 @@ struct VoiceInfo {
   int priority = 0;
   bool fading = false;
   double fade = 1;
+  double level = 1;  // its gain at the listener before the mix (distance fall-off × cue × sound)
 };
 
 class AudioEngine {
@@ -89,8 +99,15 @@ class AudioEngine {
   // Advances fades by `seconds`, ends loops not asked for since the last update, frees voices
   // whose sound ended.
   void update(double seconds);
-  // Loopback only: the next `frames` stereo frames, interleaved floats (zeros when inactive).
+  // Loopback only: the next `frames` stereo frames, interleaved floats (zeros when inactive),
+  // through the master limiter (never above the library's mix ceiling_db).
   void render(float* stereo, int frames);
+
+  // Music (audio/music_player.h): renders the pieces; then the piece to play, by name ("" none).
+  void load_music(const MusicLibraryDef& music);
+  void set_music(const std::string& piece);
+  std::string music() const;
+  double duck_db() const;  // how far the ducked groups are lowered now
 
   int voice_count() const;             // playing voices, fading ones excluded
   std::vector<VoiceInfo> voices() const;

@@ -13,6 +13,11 @@
 
 namespace arc {
 
+// The mix bus's groups: each has its volume setting, and ducking lowers some of them.
+enum class MixGroup : uint8_t { Music = 0, Weapons = 1, Impacts = 2, Engines = 3, Ui = 4, Voice = 5 };
+constexpr int kMixGroups = 6;
+const char* mix_group_name(MixGroup g);
+
 struct SoundLayerDef {
   enum class Source : uint8_t { Sine, Square, Saw, Triangle, Noise };
   Source source = Source::Sine;
@@ -37,12 +42,29 @@ struct SoundDef {
   double max_distance = 20000;     // beyond it the sound no longer falls off
   double rolloff = 1;
   uint64_t seed = 1;
+  MixGroup group = MixGroup::Weapons;
+  int max_voices = 0;           // at most this many voices of the sound (the loudest kept); 0: no cap
+  double duck = 0;              // dB by which the ducked groups drop while it sounds (a cue that must cut through)
+  double duck_hold = -1;        // seconds the duck holds; < 0: the mix's duck_hold
+  std::vector<int16_t> pcm;     // samples given instead of layers (radio lines decoded from assets)
+  int pcm_rate = 0;
   std::vector<SoundLayerDef> layers;
+};
+
+// The master bus: gain, the limiter's ceiling, and how ducking moves.
+struct MixDef {
+  double master_db = 0;         // gain on the whole mix before the limiter
+  double ceiling_db = -1;       // the limiter's ceiling: no sample of the output exceeds it
+  double limiter_release = 0.25;  // seconds for the limiter's gain to recover 63 % of the way
+  double duck_hold = 0.6;       // seconds a duck holds at full depth after its cue starts
+  double duck_release = 0.5;    // seconds over which it returns to 0 dB
+  bool ducked[kMixGroups] = {true, true, true, true, false, false};  // music, weapons, impacts, engines
 };
 
 struct SoundLibraryDef {
   double speed_of_sound = 1500;  // world units per second, for Doppler (space is silent: a game value)
   double doppler_factor = 1;
+  MixDef mix;
   std::vector<SoundDef> sounds;  // in file order
   const SoundDef* find(const std::string& name) const {
     for (const SoundDef& s : sounds)

@@ -38,6 +38,29 @@ SoundLayerDef parse_layer(JsonObject o) {
   return l;
 }
 
+MixGroup group_of(const std::string& name) {
+  for (int g = 0; g < kMixGroups; ++g)
+    if (name == mix_group_name(MixGroup(g))) return MixGroup(g);
+  return MixGroup::Weapons;
+}
+
+MixDef parse_mix(JsonObject o) {
+  MixDef m;
+  m.master_db = o.number("master_db", m.master_db, -40, 20);
+  m.ceiling_db = o.number("ceiling_db", m.ceiling_db, -20, 0);
+  m.limiter_release = o.number("limiter_release", m.limiter_release, 0.01, 5);
+  m.duck_hold = o.number("duck_hold", m.duck_hold, 0, 10);
+  m.duck_release = o.number("duck_release", m.duck_release, 0.01, 10);
+  if (auto v = o.get("ducked")) {
+    for (bool& d : m.ducked) d = false;
+    for (const JsonValue& g : v->array())
+      m.ducked[int(group_of(g.choice({"music", "weapons", "impacts", "engines", "ui", "voice"})))] = true;
+  }
+  o.allow({"doc"});
+  o.finish();
+  return m;
+}
+
 SoundDef parse_sound(const std::string& name, JsonObject o) {
   SoundDef s;
   s.name = name;
@@ -50,6 +73,10 @@ SoundDef parse_sound(const std::string& name, JsonObject o) {
   s.max_distance = o.number("max_distance", s.max_distance, 0.01, 1e9);
   s.rolloff = o.number("rolloff", s.rolloff, 0, 10);
   s.seed = uint64_t(o.integer("seed", 1, 0, UINT32_MAX));
+  s.group = group_of(o.choice("group", s.positional ? "weapons" : "ui", {"weapons", "impacts", "engines", "ui", "voice"}));
+  s.max_voices = int(o.integer("max_voices", 0, 0, 128));
+  s.duck = o.number("duck", 0, 0, 40);
+  s.duck_hold = o.number("duck_hold", -1, -1, 30);
   for (JsonObject layer : o.objects("layers")) s.layers.push_back(parse_layer(layer));
   if (s.layers.empty()) o.fail("sound '" + name + "' needs 'layers': a non-empty array of layer objects");
   o.allow({"doc"});
@@ -62,6 +89,7 @@ SoundLibraryDef parse_root(const std::shared_ptr<const JsonDoc>& doc) {
   SoundLibraryDef lib;
   lib.speed_of_sound = root.number("speed_of_sound", lib.speed_of_sound, 1, 1e6);
   lib.doppler_factor = root.number("doppler_factor", lib.doppler_factor, 0, 10);
+  if (root.has("mix")) lib.mix = parse_mix(root.require_object("mix"));
   JsonObject sounds = root.require_object("sounds");
   for (auto it = sounds.raw().begin(); it != sounds.raw().end(); ++it) {
     JsonValue v = *sounds.get(it.key());
@@ -74,6 +102,18 @@ SoundLibraryDef parse_root(const std::shared_ptr<const JsonDoc>& doc) {
 }
 
 }  // namespace
+
+const char* mix_group_name(MixGroup g) {
+  switch (g) {
+    case MixGroup::Music: return "music";
+    case MixGroup::Weapons: return "weapons";
+    case MixGroup::Impacts: return "impacts";
+    case MixGroup::Engines: return "engines";
+    case MixGroup::Ui: return "ui";
+    case MixGroup::Voice: return "voice";
+  }
+  return "";
+}
 
 SoundLibraryDef load_sound_library(const std::string& path) { return parse_root(JsonDoc::load_file(path)); }
 

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 
+#include "audio/music_def.h"
 #include "audio/sound_library.h"
 #include "core/error.h"
 #include "game/sim/world.h"
@@ -12,6 +14,14 @@ namespace arc {
 namespace {
 
 constexpr double kReferenceBlast = 48;  // a fighter's blast radius (collision radius 8 × 6)
+
+// assets/NAME beside assets/sounds/, or "" when there is no such file.
+std::string beside_sounds(const std::string& sounds_path, const char* name) {
+  namespace fs = std::filesystem;
+  const fs::path p = fs::path(sounds_path).parent_path().parent_path() / name;
+  std::error_code ec;
+  return fs::is_regular_file(p, ec) ? p.string() : "";
+}
 
 }  // namespace
 
@@ -36,25 +46,38 @@ AudioMix audio_mix(const Settings& s) {
   m.volume = s.number("audio.volume");
   m.effects_volume = s.number("audio.effects_volume");
   m.mute = s.flag("audio.mute");
+  const char* groups[kMixGroups] = {"audio.music_volume", "audio.weapons_volume", "audio.impacts_volume",
+                                    "audio.engines_volume", "audio.ui_volume",    "audio.voice_volume"};
+  for (int g = 0; g < kMixGroups; ++g) m.group_volume[g] = s.number(groups[g]);
   m.voices = int(s.integer("audio.voices"));
   return m;
 }
 
 AudioSession::AudioSession(const std::string& sounds_path, const Settings& settings, bool loopback)
     : path_(sounds_path), mix_(audio_mix(settings)) {
-  SoundLibraryDef library = load_sound_library(sounds_path);  // throws before any device opens
+  // Every file is read and checked before any device opens: a bad one throws first.
+  SoundLibraryDef library = load_sound_library(sounds_path);
+  const std::string radio_path = beside_sounds(sounds_path, "radio/lines.json");
+  if (!radio_path.empty()) radio_ = load_radio_library(radio_path);
+  const std::string music_path = beside_sounds(sounds_path, "music/music.json");
+  MusicLibraryDef music;
+  if (!music_path.empty()) music = load_music_library(music_path);
+  for (const SoundDef& s : radio_.sounds) library.sounds.push_back(s);
+  subtitles_ = settings.flag("audio.subtitles");
   AudioDesc desc;
   desc.loopback = loopback;
   desc.voices = mix_.voices;
   engine_ = std::make_unique<AudioEngine>(desc);
   engine_->set_mix(mix_);
   engine_->load(library);
+  if (!music.pieces.empty()) engine_->load_music(music);
 }
 
 void AudioSession::apply_settings(const Settings& settings) {
   const bool mute = mix_.mute;
   mix_ = audio_mix(settings);
   mix_.mute = mix_.mute || mute;  // M's toggle stands until the setting is changed to on
+  subtitles_ = settings.flag("audio.subtitles");
   engine_->set_mix(mix_);
 }
 
@@ -74,7 +97,9 @@ void AudioSession::after_tick(const World& w) {
   ticked_ = true;
   events_ = tracker_.collect(w);
   for (const SoundEvent& e : events_) engine_->play(sound_cue(e));
-  stinger(w);
+  for (const std::string& id : radio_director_.lines(w, events_))
+    say(id, id == "missile_six" || id == "mission_won" || id == "mission_lost");
+  mood_ = director_.mood(w);
 }
 
 void AudioSession::frame(const World& w, double seconds) {
@@ -85,23 +110,29 @@ void AudioSession::frame(const World& w, double seconds) {
     for (const SoundEvent& e : events_)
       if (is_loop(e.kind)) engine_->play(sound_cue(e));
   ticked_ = false;
+  engine_->set_music(menu_ ? "menu" : mood_);
+  if (std::optional<RadioLine> line = radio_queue_.advance(seconds)) engine_->play({.sound = radio_sound_name(line->id)});
   engine_->update(seconds);
+}
+
+bool AudioSession::say(const std::string& id, bool urgent) {
+  const RadioLine* line = radio_.find(id);
+  if (!line) return false;
+  radio_queue_.say(*line, urgent);
+  return true;
+}
+
+std::optional<Subtitle> AudioSession::subtitle() const {
+  return subtitles_ ? radio_queue_.subtitle() : std::nullopt;
 }
 
 void AudioSession::ui(const std::string& sound) { engine_->play({.sound = sound}); }
 
-void AudioSession::stinger(const World& w) {
-  const int outcome = int(w.outcome);
-  if (outcome == stinger_outcome_) return;
-  stinger_outcome_ = outcome;
-  if (!w.player) return;  // the attract demo has no winner to cheer
-  if (w.outcome == Outcome::Victory) ui("victory");
-  if (w.outcome == Outcome::Defeat) ui("defeat");
-}
-
 std::string AudioSession::reload() {
   try {
-    engine_->load(load_sound_library(path_));
+    SoundLibraryDef library = load_sound_library(path_);
+    for (const SoundDef& s : radio_.sounds) library.sounds.push_back(s);
+    engine_->load(library);
     return "";
   } catch (const InputError& e) {
     return e.what();

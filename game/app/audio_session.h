@@ -5,8 +5,11 @@
 // default device (window) or the loopback device (headless, tests), applies the audio.*
 // settings, and after every tick turns the SoundEventTracker's events (game/render/
 // sound_events.h) into cues; before mixing it places the listener at the camera. UI clicks
-// and the victory / defeat stingers come from the app. Without a device it is silent and
-// costs almost nothing.
+// come from the app. Beside the sound file it loads the music (assets/music/music.json, played
+// by the MusicDirector's mood, or the menu theme while a menu is over the game) and the radio
+// lines (assets/radio/lines.json, spoken one at a time with subtitles); where either file is
+// absent (a test's own sound file) there is none. Without a device it is silent and costs
+// almost nothing.
 //
 // Example, compiled as AppExamples.AudioSession in tests/unit/app/test_app_examples.cpp:
 //   AudioSession audio(root + "/assets/sounds/sounds.json", settings, false);
@@ -14,12 +17,15 @@
 //   audio.frame(game.world(), frame_seconds);
 #pragma once
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "audio/audio_engine.h"
 #include "audio/sound_def.h"
 #include "core/settings.h"
+#include "game/app/music_director.h"
+#include "game/app/radio.h"
 #include "game/render/sound_events.h"
 
 namespace arc {
@@ -50,8 +56,14 @@ class AudioSession {
   void ui(const std::string& sound);
   // Reads the sound file again: "" when it loaded, else its error (the old sounds stay).
   std::string reload();
-  // The victory or defeat stinger once, when the world's outcome is decided.
-  void stinger(const World& w);
+  // While a menu is over the game (the title, the results) the menu theme plays.
+  void set_menu(bool open) { menu_ = open; }
+  // Speaks a radio line by its id in assets/radio/lines.json (after any line speaking now);
+  // false for an unknown id. Missions' own lines come through here.
+  bool say(const std::string& line_id, bool urgent = false);
+  // The line being spoken, for the HUD (none when audio.subtitles is off).
+  std::optional<Subtitle> subtitle() const;
+  const RadioLibrary& radio() const { return radio_; }
 
   AudioEngine& engine() { return *engine_; }
   const std::vector<SoundEvent>& last_events() const { return events_; }
@@ -63,7 +75,12 @@ class AudioSession {
   std::unique_ptr<AudioEngine> engine_;
   SoundEventTracker tracker_;
   std::vector<SoundEvent> events_;
-  int stinger_outcome_ = 0;
+  MusicDirector director_;
+  RadioLibrary radio_;
+  RadioDirector radio_director_;
+  RadioQueue radio_queue_;
+  const char* mood_ = "menu";
+  bool menu_ = false, subtitles_ = true;
   bool ticked_ = false;  // a tick was stepped since the last frame()
 };
 

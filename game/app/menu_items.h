@@ -10,6 +10,7 @@ enum class Menu::Item {
   Graphics, Sound, Controls, Advanced, ResetProgress,              // the settings screen
   Quality, Scale, Fullscreen, Vsync, Fov,                          // graphics
   MasterVolume, EffectsVolume, Mute,                               // sound
+  MusicVolume, WeaponsVolume, ImpactsVolume, EnginesVolume, UiVolume, VoiceVolume, Subtitles,  // sound groups
   Sensitivity, InvertY, Deadzone, RemapKeys,                       // controls
   Action, ResetKeys,                                               // key remapping
   DevPanel, RenderKey, ResetRender,                                // advanced

@@ -66,6 +66,11 @@ std::string cost_label(const std::string& preset, const std::string& machine) {
   return std::string(c->software) + " on software, " + c->gpu + " on a GPU";
 }
 
+// "Music volume: < 100 % >" for a group's audio.*_volume setting.
+std::string group_volume_label(const char* group, const char* key, const Settings& s) {
+  return number_text((std::string(group) + " volume: < %.0f %% >").c_str(), s.number(key) * 100);
+}
+
 // The renderer's name without its details: "llvmpipe (LLVM 15.0.7, 256 bits)" → "llvmpipe".
 std::string machine_name(const std::string& gl_renderer) { return gl_renderer.substr(0, gl_renderer.find(" (")); }
 
@@ -76,7 +81,9 @@ std::vector<Menu::Item> Menu::settings_items() const {
     case MenuScreen::Settings:
       return {Item::Graphics, Item::Sound, Item::Controls, Item::Advanced, Item::ResetProgress, Item::Back};
     case MenuScreen::Graphics: return {Item::Quality, Item::Scale, Item::Fullscreen, Item::Vsync, Item::Fov, Item::Back};
-    case MenuScreen::Sound: return {Item::MasterVolume, Item::EffectsVolume, Item::Mute, Item::Back};
+    case MenuScreen::Sound:
+      return {Item::MasterVolume, Item::EffectsVolume, Item::Mute,     Item::MusicVolume, Item::WeaponsVolume,
+              Item::ImpactsVolume, Item::EnginesVolume, Item::UiVolume, Item::VoiceVolume, Item::Subtitles, Item::Back};
     case MenuScreen::Controls: return {Item::Sensitivity, Item::InvertY, Item::Deadzone, Item::RemapKeys, Item::Back};
     case MenuScreen::Keys: {
       std::vector<Item> v(remap_actions().size(), Item::Action);
@@ -115,6 +122,13 @@ std::string Menu::settings_label(Item item, int index) const {
     case Item::EffectsVolume:
       return number_text("Effects volume: < %.0f %% >", effective_.number("audio.effects_volume") * 100) + asks;
     case Item::Mute: return "Mute (M in the game): " + toggle_text(effective_.flag("audio.mute")) + asks;
+    case Item::MusicVolume: return group_volume_label("Music", "audio.music_volume", effective_) + asks;
+    case Item::WeaponsVolume: return group_volume_label("Weapons", "audio.weapons_volume", effective_) + asks;
+    case Item::ImpactsVolume: return group_volume_label("Hits and explosions", "audio.impacts_volume", effective_) + asks;
+    case Item::EnginesVolume: return group_volume_label("Engines", "audio.engines_volume", effective_) + asks;
+    case Item::UiVolume: return group_volume_label("Interface and warnings", "audio.ui_volume", effective_) + asks;
+    case Item::VoiceVolume: return group_volume_label("Radio voices", "audio.voice_volume", effective_) + asks;
+    case Item::Subtitles: return "Radio subtitles: " + toggle_text(effective_.flag("audio.subtitles")) + asks;
     case Item::Sensitivity: return number_text("Mouse sensitivity: < %.2f > deg/px", s.mouse_sensitivity) + asks;
     case Item::InvertY: return "Invert Y: " + toggle_text(s.invert_y) + asks;
     case Item::Deadzone: return number_text("Gamepad dead zone: < %.2f >", s.pad_deadzone) + asks;
@@ -263,6 +277,13 @@ std::vector<MenuRequest> Menu::settings_adjust(Item item, int step) {
     case Item::MasterVolume: return step_user_number("audio.volume", step, 0.1);
     case Item::EffectsVolume: return step_user_number("audio.effects_volume", step, 0.1);
     case Item::Mute: return set_user_value("audio.mute", effective_.flag("audio.mute") ? "false" : "true");
+    case Item::MusicVolume: return step_user_number("audio.music_volume", step, 0.1);
+    case Item::WeaponsVolume: return step_user_number("audio.weapons_volume", step, 0.1);
+    case Item::ImpactsVolume: return step_user_number("audio.impacts_volume", step, 0.1);
+    case Item::EnginesVolume: return step_user_number("audio.engines_volume", step, 0.1);
+    case Item::UiVolume: return step_user_number("audio.ui_volume", step, 0.1);
+    case Item::VoiceVolume: return step_user_number("audio.voice_volume", step, 0.1);
+    case Item::Subtitles: return set_user_value("audio.subtitles", effective_.flag("audio.subtitles") ? "false" : "true");
     case Item::Sensitivity:
       s.mouse_sensitivity = stepped(s.mouse_sensitivity, step, 0.01, 0.01, 1.0);
       return {{K::SaveSettings}, {K::ApplyBindings}};

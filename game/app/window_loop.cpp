@@ -125,6 +125,8 @@ void WindowSession::update(double frame_seconds) {
   previous_devices_ = devices_;
   reload_.update(window_->time_seconds());
   step_ticks(frame_seconds);
+  // The menu theme under the title and settings; a decided fight's results keep its stinger.
+  audio_->set_menu(menu_->over_game() && game_->world().outcome == Outcome::Undecided);
   audio_->frame(game_->world(), frame_seconds);
   show_results_when_decided();
   notices_.count_frame(frame_seconds);
@@ -188,6 +190,8 @@ void WindowSession::draw() {
   sync_pause_screen();  // what the frame's ticks and requests changed: the volume, a resume
   hud_.error_banner = reload_.banner();
   hud_.notice = notices_.notice(window_->time_seconds());
+  const std::optional<Subtitle> line = audio_->subtitle();
+  hud_.subtitle = line ? line->speaker + ": " + line->text : "";
   const bool menu_open = menu_->open();
   const MouseReticle r = input_->reticle();
   hud_.reticle = {r.shown && !w.paused && !menu_open, r.x, r.y, r.radius, r.deadzone};

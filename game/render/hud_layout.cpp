@@ -123,6 +123,13 @@ void hud_notice(const HudState& state, int width, int height, HudLayer& h) {
             {0.85f, 0.95f, 1.0f, 1.0f}, std::max(2 * (half - gap), 16 * kGlyphAdvance));
 }
 
+// The radio line being spoken, centred over the notice's place above the radar.
+void hud_subtitle(const HudState& state, int width, int height, HudLayer& h) {
+  if (state.subtitle.empty()) return;
+  const double bottom = radar_rect(width, height).y - 64 * height_scale(height);
+  text_band(h, state.subtitle, bottom, true, width, height, {0.0f, 0.0f, 0.0f, 0.6f}, {1.0f, 0.95f, 0.7f, 1.0f});
+}
+
 // The reload error under the top panels (the target panel and the longest kill feed).
 void hud_error_banner(const HudState& state, double feed_y, int kill_feed_lines, int width, int height,
                       HudLayer& h) {
@@ -354,6 +361,7 @@ void layout_hud(const World& w, const CameraView& cam, const HudState& state, do
   hud_reticle(state.reticle, width, height, h);
   if (state.show_outcome) hud_outcome(w, width, height, h);
   marks.panel("notice", [&] { hud_notice(state, width, height, h); });
+  if (state.show_hud) hud_subtitle(state, width, height, h);
   marks.panel("error banner",
               [&] { hud_error_banner(state, feed_y, state.rules.kill_feed_lines, width, height, h); });
   scale_hud(h, scale);

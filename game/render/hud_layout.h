@@ -48,6 +48,7 @@ struct HudState {
   HudReticle reticle;
   bool comms_open = false;   // the comms menu (hud_comms.h) is drawn while flying
   std::string notice;        // one line above the radar (e.g. "Recording stopped ...")
+  std::string subtitle;      // the radio line being spoken ("Wing: Copy. Engaging your target."), over the notice
   std::string error_banner;  // a failed hot reload, wrapped within the screen below the objective
   HudRules rules;           // tunable numbers (assets/settings/hud.json), also the own-effect view rules
   // Remappable action id → its key's name ("target_nearest" → "R"), for training prompts

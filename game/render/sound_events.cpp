@@ -10,10 +10,12 @@ namespace arc {
 namespace {
 
 constexpr int64_t kHitInterval = 6;  // ticks between two hit sounds on one ship
+constexpr int64_t kPlayerHitInterval = 30;  // on the player's: each cuts through, so fewer
 constexpr uint64_t kProjectileOwner = uint64_t(1) << 32;
 constexpr uint64_t kLockOwner = uint64_t(3) << 32;  // the player's lock tone: one loop
 // Seconds between lock ticks as the lock starts and just before it completes.
 constexpr double kLockTickSlowest = 0.4, kLockTickFastest = 0.1;
+constexpr double kWarningInterval = 1.5;  // seconds between missile warnings while one homes on the player
 
 SoundEvent event(SoundKind kind, const glm::dvec3& p, const glm::dvec3& v, uint64_t owner, double intensity = 1) {
   SoundEvent e;
@@ -42,6 +44,9 @@ const char* sound_kind_name(SoundKind kind) {
     case SoundKind::LockTick: return "lock_tick";
     case SoundKind::LockTone: return "lock_tone";
     case SoundKind::Flare: return "flare";
+    case SoundKind::PlayerHit: return "player_hit";
+    case SoundKind::MissileWarning: return "missile_warning";
+    case SoundKind::Kill: return "kill_confirm";
   }
   return "";
 }
@@ -78,9 +83,14 @@ void SoundEventTracker::ship_events(const World& w, size_t i, std::vector<SoundE
     if ((s.shield < m.shield || s.hull < m.hull) && w.tick >= m.next_hit_sound) {
       const bool shield = s.shield < m.shield;
       const double share = ((m.shield - s.shield) + (m.hull - s.hull)) / max_shield;
-      out.push_back(event(shield ? SoundKind::BeamHitShield : SoundKind::BeamHitHull, hit_point(w, i), s.velocity,
-                          owner, std::clamp(0.5 + 10.0 * share, 0.5, 1.0)));
-      m.next_hit_sound = w.tick + kHitInterval;
+      const SoundKind kind = s.id == w.player ? SoundKind::PlayerHit
+                             : shield         ? SoundKind::BeamHitShield
+                                              : SoundKind::BeamHitHull;
+      double intensity = std::clamp(0.5 + 10.0 * share, 0.5, 1.0);
+      // The first hit on the player after a lull cuts through; the rest of a burst is quieter.
+      if (kind == SoundKind::PlayerHit && w.tick < m.next_hit_sound + kPlayerHitInterval * 3) intensity = 0.4;
+      out.push_back(event(kind, hit_point(w, i), s.velocity, owner, intensity));
+      m.next_hit_sound = w.tick + (kind == SoundKind::PlayerHit ? kPlayerHitInterval : kHitInterval);
     }
     if (regenerating && !m.regenerating) out.push_back(event(SoundKind::ShieldRecharge, s.position, s.velocity, owner));
     if (s.afterburner_on && !m.afterburner) out.push_back(event(SoundKind::Afterburner, s.position, s.velocity, owner));
@@ -138,6 +148,23 @@ void SoundEventTracker::flare_events(const World& w, std::vector<SoundEvent>& ou
   flares_ = std::move(now);
 }
 
+// The cues that must cut through the fight: a missile homing on the player (not one a flare
+// pulled away) and each kill the player makes.
+void SoundEventTracker::player_events(const World& w, std::vector<SoundEvent>& out) {
+  if (!w.player) return;
+  const Ship& me = w.ship(w.player);
+  bool homing = false;
+  for (const Projectile& p : w.projectiles) homing = homing || (p.kind == SecondaryWeapon::Missile && p.target == me.id && !p.decoy);
+  if (!homing) next_warning_ = 0;
+  if (homing && me.alive && primed_ && w.tick >= next_warning_) {
+    // The first warning of a threat cuts through; its repeats remind, quieter.
+    out.push_back(event(SoundKind::MissileWarning, me.position, me.velocity, kLockOwner, next_warning_ ? 0.3 : 1.0));
+    next_warning_ = w.tick + std::max<int64_t>(1, std::llround(kWarningInterval / w.dt));
+  }
+  if (primed_ && me.kills > player_kills_) out.push_back(event(SoundKind::Kill, me.position, me.velocity, kLockOwner));
+  player_kills_ = me.kills;
+}
+
 std::vector<SoundEvent> SoundEventTracker::collect(const World& w) {
   std::vector<SoundEvent> out;
   if (w.tick < tick_ || ships_.size() != w.ships.size()) {
@@ -145,6 +172,8 @@ std::vector<SoundEvent> SoundEventTracker::collect(const World& w) {
     projectiles_.clear();
     flares_.clear();
     next_lock_tick_ = 0;
+    next_warning_ = 0;
+    player_kills_ = 0;
     primed_ = false;
   }
   if (w.paused || (primed_ && w.tick == tick_)) return out;
@@ -152,6 +181,7 @@ std::vector<SoundEvent> SoundEventTracker::collect(const World& w) {
   projectile_events(w, out);
   flare_events(w, out);
   lock_events(w, out);
+  player_events(w, out);
   if (primed_) {
     for (const ExplosionEvent& e : w.explosions) {
       if (e.tick <= tick_ || e.tick > w.tick) continue;

@@ -35,6 +35,9 @@ enum class SoundKind : uint8_t {
   LockTick,        // the player's missile lock building: ticks that come faster as it fills
   LockTone,        // loop while the player's lock is complete
   Flare,           // a flare dropped
+  PlayerHit,       // the player's ship took damage (heard at the listener, over the fight)
+  MissileWarning,  // a missile homes on the player: at its launch, then every kWarningInterval
+  Kill,            // the player destroyed a ship
 };
 
 // The name of the kind's sound in assets/sounds/sounds.json (and in replay messages).
@@ -69,9 +72,12 @@ class SoundEventTracker {
   std::vector<ShipMemory> ships_;
   void lock_events(const World& w, std::vector<SoundEvent>& out);
   void flare_events(const World& w, std::vector<SoundEvent>& out);
+  void player_events(const World& w, std::vector<SoundEvent>& out);
 
   std::vector<uint32_t> projectiles_;  // serials alive at the last call, sorted
   std::vector<uint32_t> flares_;       // flare serials alive at the last call, sorted
+  int64_t next_warning_ = 0;           // no missile warning before this tick
+  int player_kills_ = 0;
   int64_t next_lock_tick_ = 0;         // no lock tick before this tick
   int64_t tick_ = -1;
   bool primed_ = false;

@@ -18,6 +18,7 @@
 #include "audio/audio_engine.h"
 #include "game/app/all_settings.h"
 #include "game/app/audio_session.h"
+#include "game/render/hud_layout.h"
 #include "game/app/input_bindings.h"
 #include "game/app/key_remap.h"
 #include "game/app/menu.h"
@@ -76,6 +77,14 @@ TEST(AppExamples, AudioSession) {
   AudioSession audio(root + "/assets/sounds/sounds.json", settings, false);
   game.step(frame, commands);  audio.after_tick(game.world());
   audio.frame(game.world(), frame_seconds);
+  SUCCEED();
+}
+
+TEST(AppExamples, RadioLine) {
+  AudioSession audio(kRoot + "/assets/sounds/sounds.json", all_settings(), true);
+  HudState hud;
+  audio.say("objective_done");          // unknown ids: false, and nothing is said
+  if (auto s = audio.subtitle()) hud.subtitle = s->speaker + ": " + s->text;
   SUCCEED();
 }
 

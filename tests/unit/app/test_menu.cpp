@@ -215,15 +215,17 @@ TEST(Menu, GraphicsPageRatesThePresetForThisMachine) {
   EXPECT_DOUBLE_EQ(m.settings().fov, 55);
 }
 
-// Sound: the master and effects volumes and mute, kept as the player's own audio.* values.
-// There is no music to set.
+// Sound: the master and effects volumes, mute, each group's volume and the radio subtitles,
+// kept as the player's own audio.* values.
 TEST(Menu, SoundPageSetsTheVolumes) {
   Menu m = make_menu();
   run(m, "down down accept down accept");
   ASSERT_EQ(m.screen(), MenuScreen::Sound);
   EXPECT_EQ(describe_page(m.page()),
             "title: SOUND\n> Master volume: < 80 % >\n  Effects volume: < 100 % >\n  Mute (M in the game): < off >\n"
-            "  Back\n");
+            "  Music volume: < 100 % >\n  Weapons volume: < 100 % >\n  Hits and explosions volume: < 100 % >\n"
+            "  Engines volume: < 100 % >\n  Interface and warnings volume: < 100 % >\n  Radio voices volume: < 100 % >\n"
+            "  Radio subtitles: < on >\n  Back\n");
   EXPECT_EQ(saves(run(m, "right down left left down right")), 4);
   EXPECT_EQ(m.settings().render.at("audio.volume"), "0.9");
   EXPECT_EQ(m.settings().render.at("audio.effects_volume"), "0.8");
@@ -233,6 +235,9 @@ TEST(Menu, SoundPageSetsTheVolumes) {
   EXPECT_TRUE(s.flag("audio.mute"));
   run(m, "up up right right");
   EXPECT_TRUE(has_line(m.page(), "> Master volume: < 100 % >")) << "no louder than full";
+  EXPECT_EQ(saves(run(m, "down down down left down down down down down down right")), 2);
+  EXPECT_EQ(m.settings().render.at("audio.music_volume"), "0.9");
+  EXPECT_EQ(m.settings().render.at("audio.subtitles"), "false");
 }
 
 // Controls: mouse and gamepad, and the key remapping (a key another action has is swapped).
