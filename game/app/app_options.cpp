@@ -49,6 +49,7 @@ void apply_simulation_settings(const Settings& s, GameOptions& game) {
   game.particle_budget = uint32_t(s.integer("particles.budget"));
   game.lightning_interval = int(s.integer("particles.lightning_interval"));
   game.substeps = int(s.integer("sim.substeps"));
+  game.sim_threads = int(s.integer("sim.threads"));
   game.cull_distance = s.number("particles.cull_distance");
 }
 
