@@ -9,7 +9,7 @@ namespace arc {
 bool is_software_rasteriser(std::string_view gl_renderer) {
   std::string lower(gl_renderer);
   for (char& c : lower) c = char(std::tolower(static_cast<unsigned char>(c)));
-  for (const char* name : {"llvmpipe", "softpipe", "swrast", "software rasterizer"})
+  for (const char* name : {"llvmpipe", "softpipe", "swrast", "software rasterizer", "swiftshader", "gdi generic"})
     if (lower.find(name) != std::string::npos) return true;
   return false;
 }
