@@ -138,7 +138,6 @@ void ParticleBatch::gather_sorted(const RenderView& v, size_t total, int soft_ov
   }
 }
 
-// Long: one flow of culling, flags, sorting and the single run, kept together for the reader.
 void ParticleBatch::prepare_by_cluster(const RenderView& v, const ViewProjection& vp, const ModelCoverBoxes& model_boxes,
                                        const ParticleBatchOptions& options) {
   visible = culled_offscreen = over_draw_limit = sorted = soft_shaded = 0;

@@ -2,9 +2,8 @@
 //
 // With no saved settings and no --quality, a hardware GPU gets the full look ("high": HDR,
 // bloom, anti-aliasing) and a software rasteriser the built-in settings made for it; the
-// Graphics page says which was chosen and why. A saved preset and --quality win.
-//   QualityChoice c = device_default_quality("NVIDIA H200/PCIe/SSE2");
-//   // c.preset == "high", c.why == "high: chosen for a GPU (NVIDIA H200/PCIe/SSE2)"
+// Graphics page says which was chosen and why. A saved preset and --quality win (the
+// window session applies it; tests/unit/app/test_device_look.cpp has renderer names).
 #pragma once
 #include <string>
 
