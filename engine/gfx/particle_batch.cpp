@@ -72,6 +72,7 @@ void radix_sort_back_to_front(const std::vector<uint32_t>& keys, std::vector<uin
 
 void ParticleBatch::prepare(const RenderView& v, const ViewProjection& vp, const ModelCoverBoxes& model_boxes,
                             const ParticleBatchOptions& options) {
+  if (options.by_cluster) return prepare_by_cluster(v, vp, model_boxes, options);
   visible = culled_offscreen = over_draw_limit = sorted = soft_shaded = 0;
   any_soft = any_contrast = false;
   runs.clear();

@@ -43,6 +43,10 @@ struct ParticleBatchOptions {
   const SpriteTrim* trim = nullptr;  // the sprites' trim boxes, for the area estimate
   TrimMode trim_mode = TrimMode::Off;
   int trim_height = 720;  // pixel rows of the target drawn into: the half-resolution one's when it is likely
+  // Per cluster (RenderSettings::ParticlePrep): whole stretches of a cluster are culled and
+  // flagged, copied as they are, sorted by full radix or by stretch, drawn in one run; no
+  // overdraw budget (a GPU's fill rate needs none). Per particle otherwise, as described above.
+  bool by_cluster = false;
 };
 
 struct ParticleBatch {
@@ -67,6 +71,26 @@ struct ParticleBatch {
   void restart_smoothing() { budget_.reset(); }
 
  private:
+  // A stretch: consecutive particles of one cluster (at most 1024) taken as one for culling.
+  struct Stretch {
+    uint32_t first = 0, count = 0;
+    glm::vec3 centre{0.0f};  // camera-relative, of the positions' box
+    float radius = 0;        // a sphere around centre holding every quad
+    float extent = 0;        // the largest soft-edge depth extent
+    float depth = 0;         // centre along the view direction
+    uint32_t methods = 0;    // bit per SoftEdge present
+    uint32_t soft_count = 0; // particles with a soft-edge method
+    bool ordered = false, lit = false, clear = false;
+  };
+  void prepare_by_cluster(const RenderView& view, const ViewProjection& vp, const ModelCoverBoxes& model_boxes,
+                          const ParticleBatchOptions& options);
+  void gather_stretches(const RenderView& view, const glm::vec3& forward);
+  void gather_in_order(const RenderView& view, size_t total, int soft_override);
+  void gather_sorted(const RenderView& view, size_t total, int soft_override);
+  std::vector<uint32_t> hist_;
+  std::vector<uint64_t> pairs_, pairs_tmp_;  // (depth key, source index) for the full sort
+  std::vector<Stretch> stretches_;
+  std::vector<uint32_t> kept_;  // indices of the stretches drawn, in draw order
   void cull_and_flag(const RenderView& view, const ViewProjection& vp, const glm::vec3& forward,
                      const ModelCoverBoxes& model_boxes, int soft_override);
   void sort(RenderSettings::Sorting sorting, const glm::vec3& forward);

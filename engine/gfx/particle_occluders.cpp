@@ -164,11 +164,28 @@ void OccluderSet::gather(const RenderView& v, const ModelCoverBoxes& model_boxes
 bool OccluderSet::soft_can_matter(const ParticleInstance& p, const QuadBounds& q, float near) const {
   const QuadFootprint f = quad_footprint(q, near);
   float extent = p.soft_extent > 0.0f ? p.soft_extent : q.size;
-  float reach = f.z1 + extent * 1.001f;
   uint8_t method = p.soft_edge & ~kSoftClear;
   float push = method == uint8_t(SoftEdge::AverageDensity) ? 0.5f * extent
                : method == uint8_t(SoftEdge::DensityExtent) ? extent
                                                            : 0.0f;
+  return reach_can_matter(f, extent, push, near);
+}
+
+QuadFootprint sphere_footprint(const glm::vec3& centre, float radius, float near) {
+  QuadBounds q{centre, radius, radius, radius, false};
+  QuadFootprint f = quad_footprint(q, near);  // x/y at the centre's depth; now spread in depth
+  f.z0 = -centre.z - radius, f.z1 = -centre.z + radius;
+  f.whole_screen = !(f.z0 > near);
+  if (f.whole_screen) return f;
+  auto lo = [&](float a) { return a < 0.0f ? a / f.z0 : a / f.z1; };
+  auto hi = [&](float b) { return b < 0.0f ? b / f.z1 : b / f.z0; };
+  f.x0 = lo(centre.x - radius), f.x1 = hi(centre.x + radius);
+  f.y0 = lo(centre.y - radius), f.y1 = hi(centre.y + radius);
+  return f;
+}
+
+bool OccluderSet::reach_can_matter(const QuadFootprint& f, float extent, float push, float near) const {
+  float reach = f.z1 + extent * 1.001f;
   float front = f.z0 - push * 1.001f;
   auto touches = [&](const Occluder& o) {
     return o.nearest < reach && o.farthest > front &&

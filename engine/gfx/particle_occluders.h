@@ -54,6 +54,8 @@ struct QuadFootprint {
 };
 
 QuadFootprint quad_footprint(const QuadBounds& q, float near);
+// The footprint of a view-space sphere (a cluster's particles together): depths centre ± radius.
+QuadFootprint sphere_footprint(const glm::vec3& centre, float radius, float near);
 
 // An opaque mesh as the particle pass sees it: the view depth range of its box and the box's
 // screen rectangle in tangent units (x/depth, y/depth); infinite when the box crosses the near
@@ -93,6 +95,8 @@ class OccluderSet {
   // Whether an opaque surface can lie, at some pixel of the particle's quad, within the reach
   // of its soft edges (see the definition for the exact range).
   bool soft_can_matter(const ParticleInstance& p, const QuadBounds& q, float near) const;
+  // The same for a footprint whose soft edges reach `extent` behind it and `push` in front.
+  bool reach_can_matter(const QuadFootprint& f, float extent, float push, float near) const;
   size_t size() const { return occluders_.size(); }
 
  private:

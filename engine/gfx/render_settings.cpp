@@ -12,6 +12,9 @@ void register_render_settings(Settings& s) {
   s.define_choice("render.sorting", "full", {"off", "cluster", "full"},
                   "back-to-front order of non-additive particles: none, by cluster, or per particle;"
                   " cheap (CPU time, full the most)");
+  s.define_choice("render.particle_prep", "auto", {"auto", "particle", "cluster"},
+                  "particle preparation on the CPU: per particle (budget, runs; for a software rasteriser) or per"
+                  " cluster (a tenth of the CPU time, no budget; for a GPU); auto picks by device");
   s.define_choice("render.depth_mode", "reversed", {"reversed", "standard"},
                   "reversed-Z float depth (needs clip control) or standard depth; no cost");
   s.define_flag("render.infinite_far", true, "infinite far plane; no cost");

@@ -47,6 +47,11 @@ struct RenderSettings {
   // copy: the same depth values and picture, no copy, and on llvmpipe a cheaper read. Off only
   // to measure what it saves, or where a driver gets it wrong.
   bool depth_fetch = true;
+  // The particle batch's CPU preparation (particle_batch.h): per particle (culling, soft flags,
+  // overdraw budget, runs: a software rasteriser's fill is what it saves) or per cluster stretch
+  // (about a tenth of the CPU time, one draw, no budget: what a GPU wants). Auto: per cluster on
+  // a hardware GPU, per particle on a software rasteriser (device_class.h).
+  enum class ParticlePrep { Auto, PerParticle, PerCluster } particle_prep = ParticlePrep::Auto;
   int max_particle_draws = 24;  // runs the particle batch may be split into (particle_runs.h); ≥ 1
   // Particles drawn at half resolution, then put over the scene (particle_target.h): Full never,
   // Half always, Auto when a frame's particles blend more than kHalfResAbove screen layers

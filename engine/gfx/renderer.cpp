@@ -44,6 +44,7 @@
 #include <stdexcept>
 
 #include "gfx/bloom_pass.h"
+#include "gfx/device_class.h"
 #include "gfx/gl_features.h"
 #include "gfx/gpu_timers.h"
 #include "gfx/hud_pass.h"
@@ -76,6 +77,7 @@ struct Renderer::Impl {
       : desc(d),
         version(describe_context()),
         clip_control(arc::has_clip_control()),
+        software(is_software_rasteriser(reinterpret_cast<const char*>(glGetString(GL_RENDERER)))),
         programs(d.shader_dir),
         targets(d.offscreen, d.float_scene),
         particles(d.max_particles_per_draw) {}
@@ -84,6 +86,7 @@ struct Renderer::Impl {
   RenderSettings rs;
   std::string version;
   bool clip_control;
+  bool software;  // GL_RENDERER names a software rasteriser (device_class.h)
 
   ShaderPrograms programs;
   RenderTargets targets;
@@ -157,6 +160,10 @@ void Renderer::apply_settings(const Settings& s) {
   r.sorting = sorting == "off" ? RenderSettings::Sorting::Off
               : sorting == "cluster" ? RenderSettings::Sorting::Cluster
                                      : RenderSettings::Sorting::Full;
+  const std::string& prep = s.choice("render.particle_prep");
+  r.particle_prep = prep == "particle"  ? RenderSettings::ParticlePrep::PerParticle
+                    : prep == "cluster" ? RenderSettings::ParticlePrep::PerCluster
+                                        : RenderSettings::ParticlePrep::Auto;
   r.reversed_z = s.choice("render.depth_mode") == "reversed";
   r.infinite_far = s.flag("render.infinite_far");
   const std::string& f = s.choice("render.texture_filter");
@@ -280,6 +287,8 @@ ParticleBatchOptions Renderer::Impl::batch_options() const {
   options.soft_override = rs.soft_override;
   options.sorting = rs.sorting;
   options.max_particles = particles.max_particles_per_draw();
+  using Prep = RenderSettings::ParticlePrep;
+  options.by_cluster = rs.particle_prep == Prep::PerCluster || (rs.particle_prep == Prep::Auto && !software);
   options.overdraw = {rs.overdraw_budget, rs.overdraw_near};
   options.size_clamp = rs.size_clamp;
   options.max_runs = std::max(1, rs.max_particle_draws);

@@ -4,7 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+
 #include <glm/mat3x3.hpp>
+#include <oneapi/tbb/blocked_range.h>
+#include <oneapi/tbb/parallel_for.h>
+#include <oneapi/tbb/task_arena.h>
 
 #include "core/error.h"
 #include "core/rng.h"
@@ -43,6 +48,15 @@ struct ParticleWorld::Impl : ParticleWorldState {
   // store (copy assignment keeps the source), so it does not follow the largest such cluster
   // in the heap.
   mutable ParticlePool scratch;
+  // With config.threads != 1, made on the first step; a copy of the world makes its own.
+  struct Arena {
+    std::unique_ptr<tbb::task_arena> p;
+    Arena() = default;
+    Arena(const Arena&) {}
+    Arena& operator=(const Arena&) { return *this; }
+  } arena;
+  std::vector<uint32_t> todo;              // the slots step() animates
+  std::vector<uint8_t> was_culled;         // of each of them, before this step
   uint32_t skipped_particles = 0, animated_particles = 0, caught_up = 0;  // the last step's, for stats()
 
   Cluster* find(ClusterHandle hnd) {
@@ -465,20 +479,40 @@ void ParticleWorld::step(uint64_t tick, const ParticleCamera& camera) {
       if (c.alive) w.advance(c, t);
   w.tick = std::max(w.tick, tick);
   w.skipped = w.skipped_particles = w.animated_particles = w.caught_up = 0;
-  for (Cluster& c : w.slots) {
-    if (!c.alive || w.tick < c.spawn_tick) continue;
+  w.todo.clear();
+  for (size_t slot = 0; slot < w.slots.size(); ++slot)
+    if (w.slots[slot].alive && w.tick >= w.slots[slot].spawn_tick) w.todo.push_back(uint32_t(slot));
+  w.was_culled.resize(w.todo.size());
+  // Each cluster touches only its own state: any split over threads gives the same result.
+  auto animate_one = [&](size_t k) {
+    Cluster& c = w.slots[w.todo[k]];
     w.update_bound(c, w.tick);
-    const bool was_culled = c.culled;
+    w.was_culled[k] = c.culled;
     c.culled = c.intensity <= 0.0 || !w.visible(c, camera);
+    if (c.culled) return;
+    w.animate(c, w.tick, c.pool);
+    c.animated_tick = w.tick;
+  };
+  if (w.config.threads == 1 || w.todo.size() < 2) {
+    for (size_t k = 0; k < w.todo.size(); ++k) animate_one(k);
+  } else {
+    if (!w.arena.p)
+      w.arena.p = std::make_unique<tbb::task_arena>(w.config.threads > 0 ? w.config.threads : static_cast<int>(tbb::task_arena::automatic));
+    w.arena.p->execute([&] {
+      tbb::parallel_for(tbb::blocked_range<size_t>(0, w.todo.size()), [&](const tbb::blocked_range<size_t>& r) {
+        for (size_t k = r.begin(); k != r.end(); ++k) animate_one(k);
+      });
+    });
+  }
+  for (size_t k = 0; k < w.todo.size(); ++k) {  // the counts, in slot order
+    const Cluster& c = w.slots[w.todo[k]];
     if (c.culled) {
       ++w.skipped;
       w.skipped_particles += uint32_t(c.pool.count());
       continue;
     }
-    w.caught_up += was_culled ? 1u : 0u;
+    w.caught_up += w.was_culled[k] ? 1u : 0u;
     w.animated_particles += uint32_t(c.pool.count());
-    w.animate(c, w.tick, c.pool);
-    c.animated_tick = w.tick;
   }
 }
 

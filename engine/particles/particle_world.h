@@ -80,6 +80,9 @@ struct ParticleConfig {
   double cull_distance = 20000.0;    // clusters beyond this (or outside the frustum) skip ticks
   int lightning_interval = 0;        // 0 = each effect's own sizzle interval
   double tick_seconds = 1.0 / 60.0;
+  // Clusters animated at once by step() on a oneTBB arena (0: every core). Clusters are
+  // independent and keyed, so the state and its hash do not depend on it.
+  int threads = 1;
 };
 
 struct ParticleStats {

@@ -50,6 +50,7 @@ void apply_simulation_settings(const Settings& s, GameOptions& game) {
   game.lightning_interval = int(s.integer("particles.lightning_interval"));
   game.substeps = int(s.integer("sim.substeps"));
   game.autopilot = s.integer("sim.autopilot") != 0;
+  game.sim_threads = int(s.integer("sim.threads"));
   game.cull_distance = s.number("particles.cull_distance");
 }
 

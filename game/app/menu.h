@@ -118,6 +118,14 @@ class Menu {
   // What draws the frames (the GL renderer's name, "" if unknown): the Graphics page rates the
   // quality presets for it (a software rasteriser or a GPU).
   void set_machine(std::string gl_renderer) { machine_ = std::move(gl_renderer); }
+  // The preset a first start chose for the device (device_look.h), and why: shown on the
+  // Graphics page while that preset is the one in use.
+  void adopt_device_quality(const std::string& preset, std::string why) {
+    files_.settings.quality = preset;
+    device_preset_ = preset;
+    device_why_ = std::move(why);
+    refresh_effective();
+  }
 
   const UserSettings& settings() const { return files_.settings; }
   const Progress& progress() const { return files_.progress; }
@@ -162,6 +170,7 @@ class Menu {
   std::vector<MenuRequest> step_user_number(const std::string& key, int step, double by);
   bool settings_back();
   std::string machine_;
+  std::string device_preset_, device_why_;  // adopt_device_quality()
   int confirm_ = -1;  // the value row whose change waits for a second Enter (or click)
   MenuScreen screen_ = MenuScreen::Main;
   int selection_ = 0;

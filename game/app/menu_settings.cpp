@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "gfx/device_class.h"
 #include "game/app/key_remap.h"
 #include "game/app/menu_items.h"
 
@@ -33,11 +34,7 @@ const SettingDef* setting_def(const Settings& s, const std::string& key) {
 }
 
 // Mesa's llvmpipe and softpipe, Google's SwiftShader, Microsoft's WARP-backed GDI driver.
-bool software_rasteriser(const std::string& gl_renderer) {
-  for (const char* name : {"llvmpipe", "softpipe", "SwiftShader", "software", "Software", "GDI Generic"})
-    if (gl_renderer.find(name) != std::string::npos) return true;
-  return false;
-}
+bool software_rasteriser(const std::string& gl_renderer) { return is_software_rasteriser(gl_renderer); }
 
 // What a preset costs, as a class: the built-in settings ("default") are made for a software
 // rasteriser, where the look's presets (medium, high) take several times its frame time; they
@@ -167,6 +164,7 @@ void Menu::fill_settings_page(MenuPage& p) const {
                    : software_rasteriser(machine_) ? "this machine: " + machine_name(machine_) + ", a software rasteriser"
                                                    : "this machine: " + machine_name(machine_) + ", a GPU";
       p.hint = values;
+      if (!device_why_.empty() && files_.settings.quality == device_preset_) p.subtitle += "; " + device_why_;
       if (selection_ == 0 && confirm_ != 0 && p.message.empty()) p.message = quality_note();
       break;
     case MenuScreen::Sound: p.title = "SOUND"; p.hint = values; break;

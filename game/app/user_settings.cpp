@@ -256,6 +256,8 @@ UserFiles load_user_files(const std::string& dir, const std::string& quality_fil
   }
   const std::string settings_path = (fs::path(dir) / kSettingsFile).string();
   const std::string progress_path = (fs::path(dir) / kProgressFile).string();
+  std::error_code exists_error;
+  f.settings_found = fs::exists(settings_path, exists_error);
   f.settings = load_or_default<UserSettings>(
       settings_path, [&](const std::string& t) { return parse_settings(t, settings_path, presets); }, settings_json,
       f.message);

@@ -78,6 +78,7 @@ struct UserFiles {
   UserSettings settings;
   Progress progress;
   std::string message;  // why a file was replaced by defaults (and where its copy is); "" if none
+  bool settings_found = false;  // settings.json was there: its preset was chosen (device_look.h)
 };
 
 // $XDG_CONFIG_HOME/arcfire, else $HOME/.config/arcfire (else ./.arcfire-config).

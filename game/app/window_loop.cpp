@@ -73,6 +73,7 @@ void WindowSession::setup() {
   window_ = open_window(wd);
   renderer_ = make_renderer();
   menu_->set_machine(renderer_->gl_renderer());  // the Graphics page rates the presets for it
+  adopt_device_look();
   panel_ = std::make_unique<GamePanel>(game_options_.root_dir);
   load_sprites(*renderer_, game_options_.root_dir);
   models_ = scene_models_.of(*renderer_, game_->world(), game_options_.root_dir);

@@ -12,6 +12,7 @@
 
 #include "core/data_layers.h"
 #include "core/error.h"
+#include "game/app/device_look.h"
 #include "game/app/menu_input.h"
 #include "game/app/scene_resources.h"
 #include "game/sim/world.h"
@@ -49,6 +50,23 @@ Settings WindowSession::user_render_settings() const {
     return options_.settings;  // a preset the quality file no longer has: the command line's settings
   }
   return s;
+}
+
+// First start (no settings.json) without --quality: the preset follows the device that draws.
+// The look changes at once; the simulation keys of the preset apply to the games launched next.
+void WindowSession::adopt_device_look() {
+  if (options_.quality_given || user_.settings_found) return;
+  const QualityChoice c = device_default_quality(renderer_->gl_renderer());
+  std::fprintf(stderr, "arcfire: quality %s\n", c.why.c_str());
+  if (c.preset == user_.settings.quality) {
+    menu_->adopt_device_quality(c.preset, c.why);
+    return;
+  }
+  user_.settings.quality = c.preset;
+  menu_->adopt_device_quality(c.preset, c.why);
+  settings_ = user_render_settings();
+  renderer_->apply_settings(settings_);
+  apply_simulation_settings(settings_, game_options_);
 }
 
 std::unique_ptr<Renderer> WindowSession::make_renderer() const {

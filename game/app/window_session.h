@@ -65,6 +65,7 @@ class WindowSession {
   void report_screenshots(const std::vector<ScreenshotWriter::Done>& shots);
   // window_session.cpp: the games and the menus' requests.
   std::unique_ptr<Renderer> make_renderer() const;
+  void adopt_device_look();  // the first start's preset by device (device_look.h)
   void load_user_files_and_bindings();
   Settings user_render_settings() const;
   void start_game(std::unique_ptr<Game> fresh);

@@ -34,6 +34,7 @@ struct GameOptions {
   bool seed_override = false;
   uint64_t seed = 0;
   uint32_t particle_budget = 200000;
+  int sim_threads = 1;  // ParticleConfig::threads (sim.threads); not saved or hashed: it changes no state
   int lightning_interval = 0;  // 0 = effects' own
   int substeps = 1;
   double cull_distance = 20000.0;  // particle clusters farther from the camera are not animated or drawn

@@ -133,6 +133,7 @@ void init_world(World& w, LevelDef level, std::shared_ptr<const EffectLibrary> e
   pc.lightning_interval = o.lightning_interval;
   pc.cull_distance = o.cull_distance;
   pc.tick_seconds = w.dt;
+  pc.threads = o.sim_threads;
   if (store && store->in_use() > 0) store = nullptr;  // another world's particles are in it
   w.particles.emplace(pc, w.effects.get(), std::move(store));
   add_ships(w);

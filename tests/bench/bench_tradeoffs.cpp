@@ -149,6 +149,7 @@ std::vector<Row> render_rows() {
   const KeySweep keys = {
       {"render.soft_edges", {"off", "linear", "contrast", "average_density", "density_extent"}},
       {"render.sorting", {"off", "cluster"}},
+      {"render.particle_prep", {"cluster"}},
       {"render.depth_mode", {"standard"}},
       {"render.texture_filter", {"nearest", "linear", "mipmap_nearest"}},
       {"render.scale", {"0.5", "0.75", "1", "1.5"}},

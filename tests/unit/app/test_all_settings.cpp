@@ -40,9 +40,9 @@ TEST(AllSettings, EachModuleRegistersItsOwnKeys) {
     void (*register_keys)(Settings&);
     std::string prefix;
     size_t count;
-  } modules[] = {{register_render_settings, "render.", 19},
+  } modules[] = {{register_render_settings, "render.", 20},
                  {register_particle_settings, "particles.", 3},
-                 {register_sim_settings, "sim.", 2},
+                 {register_sim_settings, "sim.", 3},
                  {register_audio_settings, "audio.", 11}};
   std::vector<std::string> assembled;
   for (const auto& m : modules) {

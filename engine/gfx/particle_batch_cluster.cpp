@@ -1,0 +1,222 @@
+// gfx/particle_batch_cluster.cpp — the particle batch prepared per cluster stretch (no GL).
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include <glm/geometric.hpp>
+
+#include "gfx/particle_batch.h"
+
+namespace arc {
+namespace {
+
+// A stretch longer than this is split, so one far-flung cluster does not keep a huge bound.
+constexpr uint32_t kMaxStretch = 1024;
+
+uint32_t method_bit(uint8_t soft_edge) { return 1u << (soft_edge & 7u); }
+
+}  // namespace
+
+// One pass over the view's particles: bounds, reach and soft methods of each stretch of
+// consecutive particles of one cluster, and every particle's depth key (descending order). Branch-light on purpose: this is the only loop that
+// reads every particle of the view.
+void ParticleBatch::gather_stretches(const RenderView& v, const glm::vec3& forward) {
+  stretches_.clear();
+  const size_t n = v.particles.size();
+  keys_.resize(n);
+  uint32_t* keys = keys_.data();
+  const ParticleInstance* p = v.particles.data();
+  size_t i = 0;
+  while (i < n) {
+    Stretch s;
+    s.first = uint32_t(i);
+    const uint32_t cluster = p[i].cluster;
+    float lo[3] = {p[i].pos[0], p[i].pos[1], p[i].pos[2]};
+    float hi[3] = {lo[0], lo[1], lo[2]};
+    float reach = 0.0f, extent = 0.0f;
+    uint32_t methods = 0, soft = 0, ordered = 0, lit = 0;
+    const size_t end = std::min(n, i + kMaxStretch);
+    // Bitwise ors, not ||: no branch per particle.
+    for (; i < end && p[i].cluster == cluster; ++i) {
+      const ParticleInstance& q = p[i];
+      keys[i] = ~sortable_bits(q.pos[0] * forward.x + q.pos[1] * forward.y + q.pos[2] * forward.z);
+      lo[0] = std::min(lo[0], q.pos[0]), hi[0] = std::max(hi[0], q.pos[0]);
+      lo[1] = std::min(lo[1], q.pos[1]), hi[1] = std::max(hi[1], q.pos[1]);
+      lo[2] = std::min(lo[2], q.pos[2]), hi[2] = std::max(hi[2], q.pos[2]);
+      const float size = std::max(q.size, 0.0f);
+      // |a|₁ ≥ |a|₂: a bound without a square root.
+      reach = std::max(reach, size + std::abs(q.axis[0]) + std::abs(q.axis[1]) + std::abs(q.axis[2]));
+      extent = std::max(extent, std::max(q.soft_extent, size));
+      methods |= method_bit(q.soft_edge);
+      soft += uint32_t(q.soft_edge != 0);
+      ordered |= uint32_t(q.color[3] * (1.0f - q.burn) > 0.0f);
+      lit |= uint32_t(q.color[0] > 0) | uint32_t(q.color[1] > 0) | uint32_t(q.color[2] > 0) | uint32_t(q.color[3] > 0);
+    }
+    s.count = uint32_t(i) - s.first;
+    s.centre = glm::vec3(0.5f * (lo[0] + hi[0]), 0.5f * (lo[1] + hi[1]), 0.5f * (lo[2] + hi[2]));
+    const glm::vec3 half(0.5f * (hi[0] - lo[0]), 0.5f * (hi[1] - lo[1]), 0.5f * (hi[2] - lo[2]));
+    // A quad's corners lie within √2 of its reach from its centre.
+    s.radius = glm::length(half) * 1.001f + reach * 1.4143f + 1e-6f;
+    s.extent = extent;
+    s.methods = methods;
+    s.soft_count = soft;
+    s.ordered = ordered != 0;
+    s.lit = lit != 0;
+    stretches_.push_back(s);
+  }
+}
+
+namespace {
+
+// The soft-edge byte as drawn: the override, then the clear flag.
+inline void set_soft(ParticleInstance& q, int soft_override, bool clear) {
+  if (soft_override >= 0) q.soft_edge = uint8_t(soft_override);
+  if (clear && q.soft_edge != 0) q.soft_edge |= kSoftClear;
+}
+
+}  // namespace
+
+// The kept stretches copied as they are, in kept_ order.
+void ParticleBatch::gather_in_order(const RenderView& v, size_t total, int soft_override) {
+  particles.resize(total);
+  ParticleInstance* out = particles.data();
+  for (uint32_t k : kept_) {
+    const Stretch& s = stretches_[k];
+    std::memcpy(out, v.particles.data() + s.first, s.count * sizeof(ParticleInstance));
+    if (soft_override >= 0 || s.clear)
+      for (uint32_t j = 0; j < s.count; ++j) set_soft(out[j], soft_override, s.clear);
+    out += s.count;
+  }
+}
+
+// The kept particles back to front by depth: 64-bit (key, source) pairs in three LSD radix
+// passes of 11 bits (histograms in one read), then one gather from the view. Equal keys keep
+// their view order (stable), as radix_sort_back_to_front does.
+void ParticleBatch::gather_sorted(const RenderView& v, size_t total, int soft_override) {
+  constexpr uint64_t kClearBit = uint64_t(1) << 31;  // in the source half: the stretch is clear
+  pairs_.resize(total);
+  pairs_tmp_.resize(total);
+  hist_.assign(3 * 2048, 0);
+  uint32_t* hist = hist_.data();
+  size_t n = 0;
+  for (uint32_t k : kept_) {
+    const Stretch& s = stretches_[k];
+    const uint32_t* keys = keys_.data() + s.first;
+    const uint64_t clear = s.clear ? kClearBit : 0;
+    for (uint32_t j = 0; j < s.count; ++j) {
+      const uint32_t key = keys[j];
+      pairs_[n++] = (uint64_t(key) << 32) | clear | (s.first + j);
+      ++hist[key & 2047];
+      ++hist[2048 + ((key >> 11) & 2047)];
+      ++hist[4096 + (key >> 22)];
+    }
+  }
+  for (int pass = 0; pass < 3; ++pass) {
+    uint32_t* h = hist + pass * 2048;
+    uint32_t sum = 0;
+    bool uniform = false;  // all keys share this digit: the pass would be a plain copy
+    for (int b = 0; b < 2048; ++b) {
+      uniform = uniform || h[b] == total;
+      const uint32_t c = h[b];
+      h[b] = sum;
+      sum += c;
+    }
+    if (uniform) continue;
+    const int shift = 32 + 11 * pass;
+    for (size_t i = 0; i < total; ++i) {
+      const uint64_t e = pairs_[i];
+      pairs_tmp_[h[(e >> shift) & 2047]++] = e;
+    }
+    pairs_.swap(pairs_tmp_);
+  }
+  particles.resize(total);
+  const bool patch = soft_override >= 0;
+  for (size_t i = 0; i < total; ++i) {
+    const uint64_t e = pairs_[i];
+    particles[i] = v.particles[uint32_t(e) & uint32_t(kClearBit - 1)];
+    if (patch || (e & kClearBit)) set_soft(particles[i], soft_override, (e & kClearBit) != 0);
+  }
+}
+
+void ParticleBatch::prepare_by_cluster(const RenderView& v, const ViewProjection& vp, const ModelCoverBoxes& model_boxes,
+                                       const ParticleBatchOptions& options) {
+  visible = culled_offscreen = over_draw_limit = sorted = soft_shaded = 0;
+  any_soft = any_contrast = false;
+  runs.clear();
+  overdraw = OverdrawStats{};
+  areas.clear();
+  boxes_.clear();
+  const glm::vec3 forward = -glm::vec3(glm::transpose(vp.view)[2]);
+  const glm::mat3 to_view(vp.view);
+  const float near = float(v.camera.near_plane);
+  const float tx = 1.0f / vp.proj[0][0], ty = 1.0f / vp.proj[1][1];
+  occluders_.gather(v, model_boxes, to_view, tx, ty);
+  const glm::vec3 planes[4] = {glm::normalize(glm::vec3(1, 0, tx)), glm::normalize(glm::vec3(-1, 0, tx)),
+                               glm::normalize(glm::vec3(0, 1, ty)), glm::normalize(glm::vec3(0, -1, ty))};
+  gather_stretches(v, forward);
+  // Cull whole stretches by their bounding sphere and decide their soft flag once. A stretch
+  // kept as a whole may hold particles the per-particle path drops: they are off screen or
+  // dark, so the GPU clips them or blends zero, and the picture is the same.
+  const bool override_soft = options.soft_override >= 0;
+  const uint32_t override_bit = override_soft ? method_bit(uint8_t(options.soft_override)) : 0;
+  kept_.clear();
+  size_t total = 0;
+  uint32_t methods_drawn = 0;
+  any_ordered_ = false;
+  for (Stretch& s : stretches_) {
+    const glm::vec3 c = to_view * s.centre;
+    const bool outside = glm::dot(planes[0], c) > s.radius || glm::dot(planes[1], c) > s.radius ||
+                         glm::dot(planes[2], c) > s.radius || glm::dot(planes[3], c) > s.radius;
+    if (!s.lit || !(-c.z > -s.radius) || outside) {
+      if (s.lit && outside) culled_offscreen += int(s.count);
+      continue;
+    }
+    const uint32_t methods = override_soft ? override_bit : s.methods;
+    s.clear = false;
+    if (methods & ~1u) {
+      // Density extent pushes furthest towards the camera: the bound of every method.
+      s.clear = !occluders_.reach_can_matter(sphere_footprint(c, s.radius, near), s.extent, s.extent, near);
+    }
+    if (!s.clear) methods_drawn |= methods;
+    s.depth = glm::dot(forward, s.centre);
+    any_ordered_ = any_ordered_ || s.ordered;
+    kept_.push_back(uint32_t(&s - stretches_.data()));
+    total += s.count;
+  }
+  if (any_ordered_ && options.sorting == RenderSettings::Sorting::Cluster)
+    std::stable_sort(kept_.begin(), kept_.end(),
+                     [&](uint32_t a, uint32_t b) { return stretches_[a].depth > stretches_[b].depth; });
+  const bool full_sort = any_ordered_ && options.sorting == RenderSettings::Sorting::Full;
+  if (full_sort) gather_sorted(v, total, options.soft_override);
+  else gather_in_order(v, total, options.soft_override);
+  for (uint32_t k : kept_) {  // the soft-shaded count, by stretch
+    const Stretch& s = stretches_[k];
+    if (s.clear) continue;
+    if (override_soft) soft_shaded += options.soft_override != 0 ? int(s.count) : 0;
+    else soft_shaded += int(s.soft_count);
+  }
+  visible = int(particles.size());
+  coverage.reset(options.width, options.height);
+  depth_reads.reset(options.width, options.height);
+  if (particles.empty()) return;
+  coverage.add_whole_screen();
+  if (any_ordered_ && options.sorting != RenderSettings::Sorting::Off) sorted = int(particles.size());
+  if (particles.size() > options.max_particles) {
+    over_draw_limit = int(particles.size() - options.max_particles);
+    particles.erase(particles.begin(), particles.begin() + std::ptrdiff_t(particles.size() - options.max_particles));
+  }
+  // One draw: the soft programs give a clear or hard particle exactly 1, and the contrast and
+  // density-extent variants apply their curve per particle (particle.frag), so the most general
+  // variant the batch needs draws every particle as its own program would.
+  ParticleRun run;
+  run.count = uint32_t(particles.size());
+  run.soft = (methods_drawn & ~1u) != 0;
+  run.contrast = (methods_drawn & method_bit(uint8_t(SoftEdge::Contrast))) != 0;
+  run.density_extent = (methods_drawn & method_bit(uint8_t(SoftEdge::DensityExtent))) != 0;
+  runs.push_back(run);
+  any_soft = run.soft;
+  any_contrast = run.contrast;
+  if (any_soft && options.depth_tiles) depth_reads.add_whole_screen();
+}
+
+}  // namespace arc
