@@ -38,6 +38,10 @@ struct GameOptions {
   int substeps = 1;
   double cull_distance = 20000.0;  // particle clusters farther from the camera are not animated or drawn
   std::string root_dir = ".";  // where assets/ lives (files named in levels are relative to it)
+  // The briefing's choice for the player's ship: a class name ("" = the level's) and a loadout
+  // "PRIMARY+SECONDARY" ("beam+torpedo"; "" = the class's own weapons). Replays record both.
+  std::string ship;
+  std::string loadout;
   bool operator==(const GameOptions&) const = default;
 };
 
