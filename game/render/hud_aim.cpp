@@ -243,7 +243,7 @@ void subsystem_cue(const World& w, const Ship& me, const Projector& pr, double a
   const double full = size_t(part) < t.cls->turrets.size() ? t.cls->turrets[size_t(part)].hull
                                                              : t.cls->subsystems[size_t(part) - t.cls->turrets.size()].hull;
   centred_text(h, px.x, px.y - r - 14.0, 1.0, kHudYellow,
-               fmt("%s %.0f%%", part_name(*t.cls, size_t(part)), 100.0 * std::max(0.0, t.parts[size_t(part)].hull) / full));
+               std::string(part_name(*t.cls, size_t(part))) + fmt(" %.0f%%", 100.0 * std::max(0.0, t.parts[size_t(part)].hull) / full));
 }
 
 }  // namespace arc
