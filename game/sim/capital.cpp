@@ -22,6 +22,8 @@ constexpr uint64_t kBreakupStream = 0x627265616B000000ull;
 constexpr double kFlakShellSpeed = 700.0;  // m/s: how far ahead a flak turret leads its target
 constexpr double kStallRate = 0.35;        // 1/s: how fast a ship with dead engines loses speed
 constexpr int8_t kCruiseThrottle = 64;     // about half
+constexpr int64_t kBoltTicks = 15;         // how long a beam turret's bolt shows
+constexpr double kFlakBurstScale = 2.5;    // of the hull sparks effect
 
 bool is_turret(const ShipClassDef& c, size_t i) { return i < c.turrets.size(); }
 
@@ -50,7 +52,6 @@ void destroy_part(World& w, Ship& t, size_t i) {
   p.scale = std::max(0.5, part_radius(c, i) / 6.0);
   p.priority = 2;
   spawn_fx(w, w.fx.ship_explosion, p);
-  spawn_fx(w, w.fx.capital_debris, p);
   if (!is_turret(c, i) && c.subsystems[i - c.turrets.size()].kind == SubsystemKind::ShieldGenerator &&
       shield_generators_down(t))
     t.shield = 0;
@@ -73,15 +74,16 @@ ShipId pick_target(const World& w, const Ship& s, const TurretDef& t, const glm:
   return best;
 }
 
-void fire_beam_turret(World& w, Ship& s, const TurretDef& t, const glm::dvec3& mount, const glm::dvec3& dir) {
+void fire_beam_turret(World& w, Ship& s, PartState& ps, const TurretDef& t, const glm::dvec3& mount,
+                      const glm::dvec3& dir) {
   const glm::dvec3 end = mount + dir * t.range;
   const BeamHit hit = trace_beam(w, s.id, {mount, end});
   const double reach = hit.ship ? hit.distance : t.range;
   SpawnParams p;
   p.position = mount;
   p.orientation = glm::quatLookAt(dir, glm::dvec3(0, 1, 0.001));
-  const EffectHandle bolt = spawn_fx(w, w.fx.turret_bolt, p);
-  for (ClusterHandle ch : bolt.clusters) w.particles->cut_lightning(ch, reach);
+  ps.bolt = spawn_fx(w, w.fx.lightning_beam, p);
+  for (ClusterHandle ch : ps.bolt.clusters) w.particles->cut_lightning(ch, reach);
   if (!hit.ship) return;
   Ship& target = w.ship(hit.ship);
   SpawnParams sp;
@@ -98,8 +100,9 @@ void fire_flak_turret(World& w, Ship& s, const TurretDef& t, const glm::dvec3& m
   const glm::dvec3 burst = mount + dir * along;
   SpawnParams p;
   p.position = burst;
+  p.scale = kFlakBurstScale;
   p.priority = 0;
-  spawn_fx(w, w.fx.flak_burst, p);
+  spawn_fx(w, w.fx.hull_sparks, p);
   for (Ship& o : w.ships) {
     if (!o.alive || !w.hostile(s, o)) continue;
     const double d = safe_len(o.position - burst) - o.cls->collision_radius;
@@ -155,6 +158,11 @@ void fire_turrets(World& w, Ship& s) {
   const ShipClassDef& c = *s.cls;
   for (size_t i = 0; i < c.turrets.size(); ++i) {
     PartState& ps = s.parts[i];
+    // A bolt shows for a moment, then goes (its turret destroyed, at once).
+    if (!ps.bolt.clusters.empty() && (ps.hull <= 0 || w.tick - ps.fired_tick >= kBoltTicks)) {
+      w.particles->destroy(ps.bolt);
+      ps.bolt = {};
+    }
     if (ps.hull <= 0 || w.tick < ps.ready_tick) continue;
     const TurretDef& t = c.turrets[i];
     const glm::dvec3 mount = part_position(s, i);
@@ -167,7 +175,7 @@ void fire_turrets(World& w, Ship& s) {
     const Rng r{w.seed, kTurretStream + (uint64_t(s.id.index()) << 8) + i, uint64_t(w.tick)};
     const glm::dvec3 dir = safe_norm(safe_norm(at - mount, forward_of(s.orientation)) + r.unit_vector(0) * t.spread,
                                      forward_of(s.orientation));
-    if (t.kind == TurretKind::Beam) fire_beam_turret(w, s, t, mount, dir);
+    if (t.kind == TurretKind::Beam) fire_beam_turret(w, s, ps, t, mount, dir);
     else fire_flak_turret(w, s, t, mount, dir, distance, r);
     ps.fired_tick = w.tick;
     ps.ready_tick = w.tick + std::max<int64_t>(1, seconds_to_ticks(w, t.cooldown));
@@ -216,6 +224,8 @@ void cycle_target_part(World& w, Ship& s) {
 }
 
 bool start_breakup(World& w, Ship& s) {
+  for (PartState& p : s.parts)
+    if (!p.bolt.clusters.empty()) w.particles->destroy(p.bolt), p.bolt = {};
   if (s.cls->breakup.stages <= 0) return false;
   BreakUp b;
   b.ship = s.id;
@@ -227,8 +237,8 @@ bool start_breakup(World& w, Ship& s) {
   return true;
 }
 
-// Long: each wreck drifts, then its stages and final blast are spawned in one place, so the
-// break-up's timing reads top to bottom.
+// Each wreck drifts and turns; its stages and final blast are spawned here, so the break-up's
+// timing reads top to bottom.
 void update_breakups(World& w) {
   for (BreakUp& b : w.breakups) {
     const Ship& s = w.ship(b.ship);
@@ -257,7 +267,6 @@ void update_breakups(World& w) {
       p.scale = s.cls->collision_radius / 14.0 * rs.range(6, 0.7, 1.2);
       p.priority = 2;
       spawn_fx(w, w.fx.ship_explosion, p);
-      spawn_fx(w, w.fx.capital_debris, p);
       w.explosions.push_back({p.position, w.tick, s.cls->collision_radius * 2.0});
     }
     if (age >= total) {
@@ -267,7 +276,6 @@ void update_breakups(World& w) {
       p.scale = d.final_scale;
       p.priority = 2;
       spawn_fx(w, w.fx.ship_explosion, p);
-      spawn_fx(w, w.fx.capital_debris, p);
       w.explosions.push_back({b.position, w.tick, s.cls->collision_radius * 6.0});
       b.stage = -1;  // done
     }

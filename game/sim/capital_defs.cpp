@@ -32,7 +32,7 @@ TurretDef parse_turret(JsonObject& o, std::set<std::string>& names) {
   if (len < 1e-3) o.fail_key("facing", "'" + o.key_path("facing") + "' must point somewhere (not [0, 0, 0])");
   t.facing = f / len;
   t.arc = o.number("arc", 90.0, 1.0, 180.0);
-  t.range = o.number("range", t.kind == TurretKind::Flak ? 700.0 : 900.0, 1.0, 1.0e5);
+  t.range = o.number("range", t.kind == TurretKind::Flak ? 700.0 : 750.0, 1.0, 1.0e5);
   t.damage = o.number("damage", t.kind == TurretKind::Flak ? 12.0 : 20.0, 0.0, kHuge);
   t.cooldown = o.number("cooldown", t.kind == TurretKind::Flak ? 0.5 : 1.5, 1.0 / 60.0, 600.0);
   t.spread = o.number("spread", t.kind == TurretKind::Flak ? 0.04 : 0.01, 0.0, 1.0);

@@ -46,9 +46,6 @@ GameEffects resolve_game_effects(const EffectLibrary& library, const LevelDef& l
   fx.missile_trail = library.id("missile_trail");
   fx.plasma_bolt = library.id("plasma_bolt");
   fx.flare = library.id("flare");
-  fx.turret_bolt = library.id("turret_bolt");
-  fx.flak_burst = library.id("flak_burst");
-  fx.capital_debris = library.id("capital_debris");
   for (const EffectSpawnDef& e : level.effects) fx.level.push_back(library.id(e.effect));
   return fx;
 }

@@ -23,7 +23,7 @@ struct LevelDef;
 
 struct GameEffects {
   EffectId lightning_beam, shield_sphere, shield_hit, hull_sparks, ship_explosion, engine_exhaust, missile_trail,
-      plasma_bolt, flare, turret_bolt, flak_burst, capital_debris;
+      plasma_bolt, flare;
   std::vector<EffectId> level;  // one per LevelDef::effects entry
 };
 

@@ -145,12 +145,14 @@ void visit_fields(S& s, V&& v) {
 }
 
 // A capital ship's turret or subsystem (ShipClassDef::turrets, then ::subsystems): its hull, and
-// for a turret the tick it may fire next, the ship it aims at and the tick it last fired.
+// for a turret the tick it may fire next, the ship it aims at, the tick it last fired and the
+// bolt of a beam turret while it shows.
 struct PartState {
   double hull = 0;
   int64_t ready_tick = 0;
   ShipId aim;
   int64_t fired_tick = -1;
+  EffectHandle bolt;
 };
 
 template <fields::MaybeConst<PartState> P, class V>
@@ -159,6 +161,7 @@ void visit_fields(P& p, V&& v) {
   v("ready_tick", p.ready_tick, fields::saved, state_hash<1>);
   v("aim", p.aim, ship_ref, state_hash<2>);
   v("fired_tick", p.fired_tick, fields::saved, state_hash<3>);
+  v("bolt", p.bolt, fields::saved, presentation_hash<0>);
 }
 
 // Shots that hit as a share of shots fired; 0 before the first shot.
