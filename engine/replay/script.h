@@ -40,7 +40,7 @@ constexpr int kAxisCount = 6;
 enum Button : uint16_t { kFirePrimary = 1 << 0, kFireSecondary = 1 << 1, kAfterburner = 1 << 2, kFlightAssist = 1 << 3 };
 enum class ScriptCommand : uint8_t {
   TargetNext = 1, TargetNearest, TargetNextHostile, SwitchWeapon, CameraToggle, Pause, Resume, CameraPadlock,
-  Countermeasure, OrderAttack, OrderCover, OrderFormUp, OrderEngage
+  Countermeasure, OrderAttack, OrderCover, OrderFormUp, OrderEngage, TargetSubsystem
 };
 
 const char* axis_name(Axis a);
@@ -102,6 +102,9 @@ struct Header {
   std::optional<uint64_t> seed;     // absent: the level's own
   std::optional<int> tick_rate;     // absent: the level's own; present: must equal it
   std::optional<std::string> difficulty;  // "easy" | "normal" | "hard"; absent: the level's
+  // The briefing's choice: the player's ship class and loadout ("beam+torpedo"); "": the level's.
+  std::string ship;
+  std::string loadout;
   std::string build;                // informational: the build that wrote the file
   int snapshot_width = 640, snapshot_height = 360;
   // Settings that change the simulation (--quality / --set); absent: the replay's own.

@@ -132,12 +132,12 @@ E choose(LineParser& lp, const Token& t, const std::string& what, const std::arr
 
 constexpr std::array<Button, 4> kButtons{kFirePrimary, kFireSecondary, kAfterburner, kFlightAssist};
 constexpr std::array<Axis, kAxisCount> kAxes{Axis::Pitch, Axis::Yaw, Axis::Roll, Axis::Throttle, Axis::StrafeX, Axis::StrafeY};
-constexpr std::array<ScriptCommand, 13> kCommands{
+constexpr std::array<ScriptCommand, 14> kCommands{
     ScriptCommand::TargetNext,     ScriptCommand::TargetNearest, ScriptCommand::TargetNextHostile,
     ScriptCommand::SwitchWeapon,   ScriptCommand::CameraToggle,  ScriptCommand::Pause,
     ScriptCommand::Resume,         ScriptCommand::CameraPadlock, ScriptCommand::Countermeasure,
     ScriptCommand::OrderAttack,    ScriptCommand::OrderCover,    ScriptCommand::OrderFormUp,
-    ScriptCommand::OrderEngage};
+    ScriptCommand::OrderEngage,    ScriptCommand::TargetSubsystem};
 
 bool valid_name(const std::string& s) {
   return !s.empty() && s.size() <= 64 && std::all_of(s.begin(), s.end(), [](char c) {
@@ -238,6 +238,16 @@ void parse_header_line(LineParser& lp, Header& h, std::vector<std::string>& seen
     if (t.text != "easy" && t.text != "normal" && t.text != "hard")
       lp.fail(t, "difficulty must be easy, normal or hard, got '" + t.text + "'");
     h.difficulty = t.text;
+  } else if (key.text == "ship") {
+    const Token& t = lp.take("ship class name");
+    if (!valid_name(t.text)) lp.fail(t, "ship class must be 1 to 64 of A-Z a-z 0-9 _ -, got '" + t.text + "'");
+    h.ship = t.text;
+  } else if (key.text == "loadout") {
+    const Token& t = lp.take("loadout (PRIMARY+SECONDARY, e.g. beam+torpedo)");
+    const size_t plus = t.text.find('+');
+    if (plus == std::string::npos || !valid_name(t.text.substr(0, plus)) || !valid_name(t.text.substr(plus + 1)))
+      lp.fail(t, "loadout must be PRIMARY+SECONDARY (e.g. beam+torpedo), got '" + t.text + "'");
+    h.loadout = t.text;
   } else if (key.text == "build") {
     h.build = lp.take("build id").text;
   } else if (key.text == "snapshot_size") {
@@ -260,7 +270,7 @@ void parse_header_line(LineParser& lp, Header& h, std::vector<std::string>& seen
     h.snapshots_like = t.text;
   } else {
     lp.fail(key, "unknown header key '" + key.text +
-                     "'; allowed: level, seed, tick_rate, difficulty, build, snapshot_size, particle_budget, "
+                     "'; allowed: level, seed, tick_rate, difficulty, ship, loadout, build, snapshot_size, particle_budget, "
                      "lightning_interval, substeps, quality, set, mod, tolerance, snapshots_like, or a tick-stamped line");
   }
   lp.done(key.text);

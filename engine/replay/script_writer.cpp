@@ -47,6 +47,7 @@ const char* command_name(ScriptCommand c) {
     case ScriptCommand::OrderCover: return "order_cover";
     case ScriptCommand::OrderFormUp: return "order_form_up";
     case ScriptCommand::OrderEngage: return "order_engage";
+    case ScriptCommand::TargetSubsystem: return "target_subsystem";
   }
   return "?";
 }
@@ -147,7 +148,7 @@ bool Header::same_content(const Header& o) const {
   const std::optional<std::string> preset = quality ? std::optional(quality->preset) : std::nullopt;
   const std::optional<std::string> other_preset = o.quality ? std::optional(o.quality->preset) : std::nullopt;
   return version == o.version && level == o.level && seed == o.seed && tick_rate == o.tick_rate &&
-         difficulty == o.difficulty && build == o.build && snapshot_width == o.snapshot_width &&
+         difficulty == o.difficulty && ship == o.ship && loadout == o.loadout && build == o.build && snapshot_width == o.snapshot_width &&
          snapshot_height == o.snapshot_height && particle_budget == o.particle_budget &&
          lightning_interval == o.lightning_interval && substeps == o.substeps && preset == other_preset &&
          same_settings(settings, o.settings) && mods == o.mods && tolerance == o.tolerance &&
@@ -180,6 +181,8 @@ std::string header_text(const Header& h) {
   if (h.seed) s += "seed " + std::to_string(*h.seed) + "\n";
   if (h.tick_rate) s += "tick_rate " + std::to_string(*h.tick_rate) + "\n";
   if (h.difficulty) s += "difficulty " + *h.difficulty + "\n";
+  if (!h.ship.empty()) s += "ship " + h.ship + "\n";
+  if (!h.loadout.empty()) s += "loadout " + h.loadout + "\n";
   if (!h.build.empty()) s += "build " + quoted(h.build) + "\n";
   if (h.snapshot_width != Header{}.snapshot_width || h.snapshot_height != Header{}.snapshot_height)
     s += "snapshot_size " + std::to_string(h.snapshot_width) + " " + std::to_string(h.snapshot_height) + "\n";

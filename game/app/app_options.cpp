@@ -112,6 +112,9 @@ void define_options(CLI::App& app, AppOptions& o, CommandLineText& t) {
   app.add_option("--set", t.sets, "override one setting, key=value (repeatable; see --list-settings)");
   app.add_flag("--list-settings", t.list_settings, "list every setting: value, allowed range, what it does and its cost");
   app.add_option("--difficulty", t.difficulty, "AI difficulty: easy, normal or hard (default: the level's)");
+  app.add_option("--ship", o.game.ship, "the player's ship class (a file stem of assets/ships; default: the level's)");
+  app.add_option("--loadout", o.game.loadout,
+                 "the player's weapons, PRIMARY+SECONDARY: beam or plasma, then plasma, missile or torpedo (e.g. beam+torpedo)");
   app.add_option("--seed", t.seed, "override the level's random seed")->check(CLI::Range(int64_t(0), int64_t(4294967295)));
   app.add_option("--bindings", o.bindings_path,
                  "key and gamepad bindings file; a missing file is created with the defaults to edit");
@@ -154,6 +157,7 @@ void resolve_preview_options(const CLI::App& app, AppOptions& o) {
 void refuse_empty_values(const CLI::App& app) {
   static const std::map<std::string, std::string> allowed = {
       {"--quality", "low, medium, high or reference"}, {"--difficulty", "easy, normal or hard"},
+      {"--ship", "a ship class name"}, {"--loadout", "PRIMARY+SECONDARY"},
       {"--backdrop", "space, wall or a model of assets/models"}, {"--size", "WIDTHxHEIGHT"},
       {"--set", "key=value"}, {"--data", "a folder"}, {"--mod", "a folder"}, {"--out", "a folder"}};
   for (const CLI::Option* opt : app.get_options()) {
@@ -187,6 +191,8 @@ void refuse_contradictions(const CLI::App& app, const AppOptions& o) {
       {"--ticks", !replay, "not with --replay: the script decides how many ticks"},
       {"--seed", !replay, "not with --replay: the script decides the seed"},
       {"--difficulty", !replay, "not with --replay: the script decides the difficulty"},
+      {"--ship", !replay, "not with --replay: the script names the ship"},
+      {"--loadout", !replay, "not with --replay: the script names the loadout"},
       {"--size", !replay, "not with --replay: the script decides the snapshot size"},
       {"--ticks", headless_run || serialization, "only with --headless, --demo or --serialization-test"},
       {"--summary", headless_run, "only with --headless or --demo"},

@@ -95,6 +95,7 @@ static Bindings bindings_from(const std::shared_ptr<const JsonDoc>& doc) {
     b.order_cover = key(k, "order_cover");
     b.order_form_up = key(k, "order_form_up");
     b.order_engage = key(k, "order_engage");
+    b.target_subsystem = key(k, "target_subsystem");
     b.comms = key(k, "comms");
     b.pause = key(k, "pause");
     b.screenshot = key(k, "screenshot");
@@ -193,6 +194,7 @@ void LiveInput::queue_commands_and_actions(const InputState& s) {
   command(presses(b_.order_cover, -1), Command::OrderCover);
   command(presses(b_.order_form_up, -1), Command::OrderFormUp);
   command(presses(b_.order_engage, -1), Command::OrderEngage);
+  command(presses(b_.target_subsystem, -1), Command::TargetSubsystem);
   const bool closed_by_pause = comms_keys(s);
   action(presses(b_.camera, b_.pad_camera), AppAction::ToggleCamera);
   action(presses(b_.camera_padlock, -1), AppAction::TogglePadlock);

@@ -37,6 +37,7 @@ struct Bindings {
   int target_next = -1, target_nearest = -1, target_next_hostile = -1, switch_weapon = -1;
   int camera = -1, camera_padlock = -1, pause = -1, screenshot = -1, fps = -1;
   int countermeasure = -1, order_attack = -1, order_cover = -1, order_form_up = -1, order_engage = -1;
+  int target_subsystem = -1;
   int comms = -1;  // opens the comms menu: 1..4 give the wing orders, the key again or Escape closes it
   bool mouse_enabled = true;
   MouseMode mouse_mode = MouseMode::Relative;

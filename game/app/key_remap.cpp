@@ -19,6 +19,7 @@ int* slot(Bindings& b, const std::string& id) {
       {"countermeasure", &Bindings::countermeasure}, {"order_attack", &Bindings::order_attack},
       {"order_cover", &Bindings::order_cover},     {"order_form_up", &Bindings::order_form_up},
       {"order_engage", &Bindings::order_engage}, {"comms", &Bindings::comms},
+      {"target_subsystem", &Bindings::target_subsystem},
       {"pause", &Bindings::pause},
       {"screenshot", &Bindings::screenshot},       {"fps", &Bindings::fps}};
   static const std::map<std::string, std::pair<KeyAxis Bindings::*, bool>> axes = {
@@ -73,6 +74,7 @@ const std::vector<RemapAction>& remap_actions() {
       {"strafe_right", "Strafe right"},     {"strafe_down", "Strafe down"},
       {"strafe_up", "Strafe up"},           {"target_next", "Target next"},
       {"target_nearest", "Target nearest"}, {"target_next_hostile", "Target next hostile"},
+      {"target_subsystem", "Target subsystem"},
       {"camera", "Camera"},                 {"camera_padlock", "Padlock view"},
       {"countermeasure", "Countermeasure"}, {"order_attack", "Wing: attack my target"},
       {"order_cover", "Wing: cover me"},    {"order_form_up", "Wing: form up"},

@@ -129,7 +129,7 @@ std::vector<Menu::Item> Menu::items() const {
       v.push_back(Item::Back);
       return v;
     }
-    case MenuScreen::Briefing: return {Item::Launch, Item::Difficulty, Item::Back};
+    case MenuScreen::Briefing: return briefing_items();
     case MenuScreen::Settings:
     case MenuScreen::Graphics:
     case MenuScreen::Sound:
@@ -188,6 +188,8 @@ std::string Menu::item_label(Item item, int index) const {
     case Item::Effect: return listed()[size_t(index)]->title;
     case Item::Difficulty: return std::string("Difficulty: < ") + difficulty_name(difficulty_) + " >";
     case Item::Launch: return "Launch";
+    case Item::Ship:
+    case Item::Loadout: return choice_label(item);
     case Item::Back: return "Back";
     case Item::Retry: return "Retry";
     case Item::Next: return "Next mission: " + next_mission(catalog_, chosen_)->title;
@@ -206,6 +208,7 @@ void Menu::fill_briefing_page(MenuPage& p) const {
   p.subtitle = "Objective: " + m->objective;
   p.paragraph = m->chapter.empty() ? m->briefing : m->chapter + " " + m->briefing;
   p.lines.push_back(std::string("Difficulty: ") + difficulty_name(difficulty_) + "   (Left/Right changes it)");
+  fill_choice_lines(p);
   p.lines.push_back(std::string("Best (") + difficulty_name(difficulty_) + "): " + best_text(m->path));
 }
 
@@ -331,6 +334,7 @@ std::vector<MenuRequest> Menu::accept(Item item, int index) {
       }
       chosen_ = listed()[size_t(index)]->path;
       go(MenuScreen::Briefing);
+      reset_choice();
       return {};
     case Item::Effect: {
       const std::string level = listed()[size_t(index)]->path;
@@ -339,11 +343,11 @@ std::vector<MenuRequest> Menu::accept(Item item, int index) {
     }
     case Item::Launch:
       go(MenuScreen::Closed);
-      return {{K::Launch, chosen_, difficulty_}};
+      return {launch_request(chosen_)};
     case Item::Back: return back();
     case Item::Retry:
       go(MenuScreen::Closed);
-      return {{K::Launch, chosen_, difficulty_}};
+      return {launch_request(chosen_)};
     case Item::Next: {
       const std::string level = next_mission(catalog_, chosen_)->path;
       go(MenuScreen::Closed);
@@ -366,6 +370,8 @@ std::vector<MenuRequest> Menu::adjust(Item item, int step) {
     case Item::Mission:
     case Item::Launch:
     case Item::Difficulty: difficulty_ = Difficulty((int(difficulty_) + step + 3) % 3); return {};
+    case Item::Ship:
+    case Item::Loadout: adjust_choice(item, step); return {};
     case Item::PauseDifficulty:
       return {{K::SetDifficulty, "", Difficulty((int(pause_.next) + step + 3) % 3)}};
     case Item::Volume: return {{K::StepVolume, "", Difficulty::Normal, step}};

@@ -84,6 +84,7 @@ struct MenuRequest {
   Kind kind;
   std::string level;      // Launch
   Difficulty difficulty;  // Launch, SetDifficulty (for the next restart)
+  std::string ship, loadout;  // Launch: the briefing's choice ("": the level's own)
   int steps;              // StepVolume: tenths of full volume, + louder
 };
 
@@ -133,6 +134,11 @@ class Menu {
   Difficulty difficulty() const { return difficulty_; }
   // The level whose briefing is on screen ("" on any other screen): what Launch would start.
   std::string briefing_level() const { return screen_ == MenuScreen::Briefing ? chosen_ : ""; }
+  // The ships the player may fly (the campaign's unlocks); empty: every ship a level offers.
+  void set_unlocked_ships(std::vector<std::string> ships) { unlocked_ships_ = std::move(ships); }
+  // The briefing's ship and loadout ("" where the level offers no choice).
+  std::string chosen_ship() const;
+  std::string chosen_loadout() const;
 
  private:
   enum class Item;
@@ -150,6 +156,16 @@ class Menu {
   void fill_briefing_page(MenuPage& p) const;
   std::string pause_label(Item item) const;
   std::vector<MenuRequest> pause_accept(Item item);
+  // menu_loadout.cpp: the briefing's ship and loadout choice.
+  std::vector<Item> briefing_items() const;
+  std::vector<ShipChoice> offered_ships() const;
+  void reset_choice();
+  std::string choice_label(Item item) const;
+  void adjust_choice(Item item, int step);
+  void fill_choice_lines(MenuPage& p) const;
+  MenuRequest launch_request(const std::string& level) const;
+  std::vector<std::string> unlocked_ships_;
+  int ship_choice_ = 0, loadout_choice_ = 0;
 
   std::vector<MissionInfo> catalog_;
   UserFiles files_;

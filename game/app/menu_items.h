@@ -1,4 +1,4 @@
-// game/app/menu_items.h — the menu's row kinds, shared by menu.cpp and menu_settings.cpp only.
+// game/app/menu_items.h — the menu's row kinds, shared by menu.cpp, menu_settings.cpp and menu_loadout.cpp only.
 #pragma once
 #include "game/app/menu.h"
 
@@ -7,6 +7,7 @@ namespace arc {
 enum class Menu::Item {
   Play, Effects, Settings, Quit,                                   // main
   Mission, Effect, Difficulty, Launch, Back,                       // lists and briefing
+  Ship, Loadout,                                                   // the briefing's choice
   Graphics, Sound, Controls, Advanced, ResetProgress,              // the settings screen
   Quality, Scale, Fullscreen, Vsync, Fov,                          // graphics
   MasterVolume, EffectsVolume, Mute,                               // sound

@@ -35,10 +35,12 @@ struct MenuRun {
     for (int i = 0; i < ticks && !stop_requested(); ++i) game->step(InputFrame{});
   }
 
-  void load(const std::string& level, Difficulty d) {
+  void load(const std::string& level, Difficulty d, const std::string& ship = "", const std::string& loadout = "") {
     GameOptions g = o.game;
     g.difficulty = d;
     g.difficulty_override = true;
+    g.ship = ship;
+    g.loadout = loadout;
     game = std::make_unique<Game>(Game::load_level(level, g));
     if (renderer) renderer->load_level(*game);
   }
@@ -62,7 +64,7 @@ struct MenuRun {
 
   // A launched level is fought without input until decided; the results open over it.
   void fight(const MenuRequest& launch) {
-    load(launch.level, launch.difficulty);
+    load(launch.level, launch.difficulty, launch.ship, launch.loadout);
     const int64_t limit = o.ticks > 0 ? o.ticks : 7200;
     for (int64_t t = 0; t < limit && game->world().outcome == Outcome::Undecided && !stop_requested(); ++t)
       game->step(InputFrame{});

@@ -23,7 +23,8 @@ std::vector<MissionInfo> load_mission_catalog(const std::string& levels_dir, con
       if (out[i].category == m.category && out[i].order == m.order && out[i].mod == mod)
         throw InputError(m.order_where + ": 'order' " + std::to_string(m.order) + " is already taken by " +
                          out[i].path + " (" + where[i] + "); allowed: an order no other level of its category has");
-    out.push_back({f, m.title, m.briefing, m.objective, m.order, m.category, mod});
+    out.push_back({f, m.title, m.briefing, m.objective, m.order, m.category, mod, ship_choices(L, root_dir),
+                   L.loadout.suggested_ship, L.loadout.present ? loadout_text(L.loadout.suggested) : ""});
     where.push_back(m.order_where);
   }
   // The game's own missions first, then each mod's apart, in the order the mods were laid.
@@ -37,6 +38,19 @@ std::vector<MissionInfo> load_mission_catalog(const std::string& levels_dir, con
     if (a.mod != b.mod) return mod_rank(a.mod) < mod_rank(b.mod);
     return a.category != b.category ? a.category < b.category : a.order < b.order;
   });
+  return out;
+}
+
+std::vector<ShipChoice> ship_choices(const LevelDef& L, const std::string& root_dir) {
+  std::vector<ShipChoice> out;
+  for (const std::string& name : L.loadout.ships) {
+    const ShipClassDef c = load_ship_class(data_file(root_dir, "assets/ships/" + name + ".json"), name, root_dir);
+    ShipChoice choice{name, {}};
+    for (WeaponKind p : L.loadout.weapons)
+      for (WeaponKind s : L.loadout.weapons)
+        if (loadout_problem(c, {p, s}).empty()) choice.loadouts.push_back(loadout_text({p, s}));
+    if (!choice.loadouts.empty()) out.push_back(std::move(choice));
+  }
   return out;
 }
 

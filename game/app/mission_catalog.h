@@ -17,6 +17,12 @@
 
 namespace arc {
 
+// A ship the briefing offers and the loadouts ("beam+torpedo") it can fly with the level's weapons.
+struct ShipChoice {
+  std::string name;
+  std::vector<std::string> loadouts;
+};
+
 struct MissionInfo {
   std::string path;  // the level file, as --level takes it
   std::string title, briefing, objective;
@@ -25,7 +31,13 @@ struct MissionInfo {
   std::string mod;   // the mod folder's name the level comes from ("" for the game's own)
   int campaign = 0;  // its place in the campaign (game/app/campaign.h), 1 first; 0: not in it
   std::string chapter;  // the campaign's line before its briefing ("" outside the campaign)
+  // The level's "loadout" block: the ships offered (empty: no choice) and the suggestion.
+  std::vector<ShipChoice> ships;
+  std::string suggested_ship, suggested_loadout;
 };
+
+// The ships and loadouts a level's "loadout" block offers (none without one).
+std::vector<ShipChoice> ship_choices(const LevelDef& L, const std::string& root_dir);
 
 std::vector<MissionInfo> load_mission_catalog(const std::string& levels_dir, const std::string& root_dir);
 // The mission after `path` in order (category Mission only), or nullptr after the last.

@@ -29,7 +29,8 @@ static_assert(uint8_t(replay::ScriptCommand::TargetNext) == uint8_t(Command::Tar
               uint8_t(replay::ScriptCommand::OrderAttack) == uint8_t(Command::OrderAttack) &&
               uint8_t(replay::ScriptCommand::OrderCover) == uint8_t(Command::OrderCover) &&
               uint8_t(replay::ScriptCommand::OrderFormUp) == uint8_t(Command::OrderFormUp) &&
-              uint8_t(replay::ScriptCommand::OrderEngage) == uint8_t(Command::OrderEngage));
+              uint8_t(replay::ScriptCommand::OrderEngage) == uint8_t(Command::OrderEngage) &&
+              uint8_t(replay::ScriptCommand::TargetSubsystem) == uint8_t(Command::TargetSubsystem));
 
 InputFrame to_input_frame(const replay::InputState& s) {
   InputFrame f;
@@ -107,6 +108,8 @@ GameOptions script_game_options(const replay::Script& s, const Settings& setting
     o.seed_override = true;
     o.seed = *s.header.seed;
   }
+  o.ship = s.header.ship;
+  o.loadout = s.header.loadout;
   if (s.header.difficulty) {
     o.difficulty_override = true;
     const std::string& d = *s.header.difficulty;

@@ -104,6 +104,8 @@ SessionRecorder::SessionRecorder(const std::string& path, const std::string& lev
   tick_rate_ = static_cast<uint64_t>(std::lround(1.0 / w.dt));
   h.tick_rate = static_cast<int>(tick_rate_);
   h.difficulty = difficulty_name(static_cast<Difficulty>(w.difficulty));
+  h.ship = w.options.ship;
+  h.loadout = w.options.loadout;
   h.build = build_id;
   for (const ModLayer& m : data_layers().mods()) h.mods.push_back({m.name, m.hash});  // replays refuse other data
   // The settings that change the simulation travel with the recording, so a session played

@@ -133,6 +133,8 @@ void WindowSession::prepare_launch() {
   GameOptions o = game_options_;
   o.difficulty = menu_->difficulty();
   o.difficulty_override = true;
+  o.ship = menu_->chosen_ship();
+  o.loadout = menu_->chosen_loadout();
   if (prepared_ && prepared_->level == level && prepared_->options == o) return;
   if (prepared_) retired_.push_back(std::move(prepared_->game));  // not waited for here
   auto seed = std::make_shared<PreparedLaunch::Seed>();
@@ -168,10 +170,13 @@ std::unique_ptr<Game> WindowSession::take_prepared(const std::string& level) {
   }
 }
 
-void WindowSession::launch(const std::string& level, Difficulty difficulty) {
+void WindowSession::launch(const std::string& level, Difficulty difficulty, const std::string& ship,
+                           const std::string& loadout) {
   end_recording("launch of another level");
   game_options_.difficulty = difficulty;
   game_options_.difficulty_override = true;
+  game_options_.ship = ship;
+  game_options_.loadout = loadout;
   std::unique_ptr<Game> fresh = take_prepared(level);
   if (!fresh) fresh = std::make_unique<Game>(Game::load_level(level, game_options_, std::move(spare_store_)));
   load_models_for(*fresh);
@@ -243,7 +248,7 @@ void WindowSession::carry_out(const std::vector<MenuRequest>& requests) {
   for (const MenuRequest& r : requests) {
     try {
       switch (r.kind) {
-        case K::Launch: launch(r.level, r.difficulty); break;
+        case K::Launch: launch(r.level, r.difficulty, r.ship, r.loadout); break;
         case K::Quit: window_->request_close(); break;
         case K::SaveSettings:
           save_settings(user_.dir, menu_->settings());

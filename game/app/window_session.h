@@ -75,7 +75,8 @@ class WindowSession {
   void warm_prepared_launch();
   std::unique_ptr<Game> take_prepared(const std::string& level);
   void set_flight_scale();
-  void launch(const std::string& level, Difficulty difficulty);
+  // `ship` and `loadout`: the briefing's choice for the player ("": the level's own).
+  void launch(const std::string& level, Difficulty difficulty, const std::string& ship = "", const std::string& loadout = "");
   void restart();
   std::string reload_level();
   void back_to_main_menu();

@@ -11,6 +11,7 @@
 #include "game/render/hud_combat.h"
 #include "game/render/hud_draw.h"
 #include "game/sim/beams.h"
+#include "game/sim/capital.h"
 #include "game/sim/geometry.h"
 #include "game/sim/seekers.h"
 #include "game/sim/world.h"
@@ -203,6 +204,8 @@ AimCues aim_cues(const World& w, const Ship& me, const Projector& pr, double alp
   return cues;
 }
 
+void subsystem_cue(const World& w, const Ship& me, const Projector& pr, double alpha, HudLayer& h);
+
 void layout_aim_cues(const World& w, const Ship& me, const Projector& pr, double alpha, double canvas_w,
                      double canvas_h, const HudRect& arrow_area, HudLayer& h) {
   if (w.paused) return;  // the pause menu stands in the middle of the screen
@@ -220,6 +223,27 @@ void layout_aim_cues(const World& w, const Ship& me, const Projector& pr, double
   bracket_readout(h, w.ship(me.target), c.centre, c.half_size, c.distance, col);
   if (c.plasma_lead) plasma_lead(h, c.lead);
   if (c.missile_cue) missile_cue(h, c.centre, c.half_size, c.missile_ready, c.lock);
+  subsystem_cue(w, me, pr, alpha, h);
+}
+
+// The subsystem the player aims at on a capital ship: its own small yellow brackets, its name
+// and what is left of its hull above them.
+void subsystem_cue(const World& w, const Ship& me, const Projector& pr, double alpha, HudLayer& h) {
+  const int part = target_part(w, me);
+  if (part < 0) return;
+  const Ship& t = w.ship(me.target);
+  const glm::dvec3 local = glm::inverse(t.orientation) * (part_position(t, size_t(part)) - t.position);
+  const glm::dquat q = glm::normalize(glm::slerp(t.prev_orientation, t.orientation, alpha));
+  const glm::dvec3 at = lerp_pos(t.prev_position, t.position, alpha) + q * local;
+  glm::dvec2 px;
+  double depth = 0;
+  if (!pr.project(at, px, &depth) || depth <= 0) return;
+  const double r = std::max(part_radius(*t.cls, size_t(part)) * pr.focal / depth, 8.0);
+  brackets(h, px, r, kHudYellow, 2.0f);
+  const double full = size_t(part) < t.cls->turrets.size() ? t.cls->turrets[size_t(part)].hull
+                                                             : t.cls->subsystems[size_t(part) - t.cls->turrets.size()].hull;
+  centred_text(h, px.x, px.y - r - 14.0, 1.0, kHudYellow,
+               std::string(part_name(*t.cls, size_t(part))) + fmt(" %.0f%%", 100.0 * std::max(0.0, t.parts[size_t(part)].hull) / full));
 }
 
 }  // namespace arc

@@ -230,7 +230,10 @@ void hud_own(const Ship& me, int height, HudLayer& h) {
 // The selected weapons, the flares left and the kills at the bottom right.
 void hud_weapon(const Ship& me, int width, int height, HudLayer& h) {
   const double k = height_scale(height), s = text_scale(1.2, height), row = weapon_row(height);
-  const std::string weapon = std::string("beam + ") + (me.secondary == SecondaryWeapon::Plasma ? "PLASMA" : "MISSILES");
+  const std::string weapon = std::string(me.cls->primary_plasma ? "plasma + " : "beam + ") +
+                             (me.secondary == SecondaryWeapon::Plasma    ? "PLASMA"
+                              : me.secondary == SecondaryWeapon::Torpedo ? "TORPEDO"
+                                                                          : "MISSILES");
   const std::string kills = (me.cls->countermeasures.count > 0 ? "flares " + std::to_string(me.seeker.flares) + "  " : "") +
                             "kills " + std::to_string(me.kills);
   const double wide = double(std::max(weapon.size(), kills.size())) * kGlyphAdvance * s;

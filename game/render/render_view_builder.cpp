@@ -91,6 +91,21 @@ void build_render_view(const World& w, std::span<const ModelId> models, double a
     }
     out.meshes.push_back(m);
   }
+  // A capital ship breaking up: its wreck drifts and turns, darkened and lit by its blasts.
+  for (const BreakUp& b : w.breakups) {
+    const Ship& s = w.ship(b.ship);
+    MeshInstance m;
+    m.model = model_of(models, s.model);
+    m.position = lerp_pos(b.prev_position, b.position, alpha);
+    m.orientation = glm::normalize(glm::slerp(b.prev_orientation, b.orientation, alpha));
+    m.emissive_boost = 0.0f;
+    m.team_color = ship_team_color(w, s);
+    for (const ExplosionEvent& e : w.explosions) {
+      const double age = double(w.tick - e.tick) * w.dt;
+      m.flash += glm::vec3(1.0f, 0.55f, 0.2f) * float(1.5 * std::max(0.0, 1.0 - age / flash_s));
+    }
+    out.meshes.push_back(m);
+  }
   for (const Prop& p : w.props) {
     MeshInstance m;
     m.model = model_of(models, p.model);

@@ -109,9 +109,9 @@ void SoundEventTracker::projectile_events(const World& w, std::vector<SoundEvent
     const uint64_t owner = kProjectileOwner + p.serial;
     const bool fresh = !std::binary_search(projectiles_.begin(), projectiles_.end(), p.serial);
     if (fresh && primed_)
-      out.push_back(event(p.kind == SecondaryWeapon::Missile ? SoundKind::MissileLaunch : SoundKind::PlasmaShot,
+      out.push_back(event(p.kind != SecondaryWeapon::Plasma ? SoundKind::MissileLaunch : SoundKind::PlasmaShot,
                           p.position, p.velocity, owner));
-    if (p.kind == SecondaryWeapon::Missile) out.push_back(event(SoundKind::MissileFlight, p.position, p.velocity, owner));
+    if (p.kind != SecondaryWeapon::Plasma) out.push_back(event(SoundKind::MissileFlight, p.position, p.velocity, owner));
   }
   std::sort(now.begin(), now.end());
   projectiles_ = std::move(now);

@@ -4,9 +4,11 @@
 
 #include <algorithm>
 
+#include "game/sim/capital.h"
 #include "game/sim/damage.h"
 #include "game/sim/effects.h"
 #include "game/sim/geometry.h"
+#include "game/sim/projectiles.h"
 #include "game/sim/world.h"
 
 namespace arc {
@@ -63,6 +65,11 @@ BeamHit trace_beam(const World& w, ShipId shooter, const std::vector<glm::dvec3>
       if (segment_sphere(a, b, s.position, outer) < 0) continue;
       const bool shield_up = s.shield > 0;
       double t = segment_sphere(a, b, s.position, shield_up ? s.cls->shield_radius : s.cls->collision_radius);
+      // A capital ship's turrets and subsystems stand off its hull sphere: they stop beams too.
+      if (!shield_up && !s.parts.empty()) {
+        const double tp = segment_parts(s, a, b);
+        if (tp >= 0 && (t < 0 || tp < t)) t = tp;
+      }
       if (t >= 0 && t < best_t) {
         best_t = t;
         best.ship = s.id;
@@ -88,6 +95,7 @@ void stop_beam(World& w, Ship& s) {
 }
 
 void update_beam_trigger(World& w, Ship& s) {
+  if (s.cls->primary_plasma) return fire_primary_plasma(w, s);
   const BeamDef& b = s.cls->beam;
   const bool want = (s.controls.buttons & kFirePrimary) && s.energy >= b.energy_per_second * w.dt;
   if (!want) {

@@ -2,6 +2,7 @@
 // player's target (next, nearest hostile, next hostile), secondary weapon, flares and wing orders.
 #include "game/sim/commands.h"
 
+#include "game/sim/capital.h"
 #include "game/sim/seekers.h"
 #include "game/sim/wing.h"
 #include "game/sim/world.h"
@@ -49,21 +50,24 @@ void apply_commands(World& w, const std::vector<Command>& commands) {
       w.camera_mode = w.camera_mode == CameraMode::Padlock ? CameraMode::Chase : CameraMode::Padlock;
     if (!w.player || !w.ship(w.player).alive) continue;
     Ship& p = w.ship(w.player);
+    const ShipId before = p.target;
     switch (c) {
       case Command::TargetNext: p.target = next_target(w, p.id, p.target, false); break;
       case Command::TargetNearest: p.target = nearest_hostile(w, p.id); break;
       case Command::Countermeasure: drop_flare(w, p); break;
       case Command::TargetNextHostile: p.target = next_target(w, p.id, p.target, true); break;
       case Command::SwitchWeapon:
-        if (p.cls->missile.present && p.cls->plasma.present)
+        if (p.cls->missile.present && p.cls->plasma.present && !p.cls->primary_plasma)
           p.secondary = p.secondary == SecondaryWeapon::Missile ? SecondaryWeapon::Plasma : SecondaryWeapon::Missile;
         break;
       case Command::OrderAttack:
       case Command::OrderCover:
       case Command::OrderFormUp:
       case Command::OrderEngage: order_wing(w, c); break;
+      case Command::TargetSubsystem: cycle_target_part(w, p); break;
       default: break;
     }
+    if (p.target != before) p.target_part.clear();
   }
 }
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "game/sim/beams.h"
+#include "game/sim/capital.h"
 #include "game/sim/effects.h"
 #include "game/sim/geometry.h"
 #include "game/sim/shields.h"
@@ -22,13 +23,15 @@ void kill_ship(World& w, Ship& s) {
   w.particles->destroy_owner(s.particle_owner);
   s.shield_fx = {};
   s.exhaust_fx.clear();
-  SpawnParams p;
-  p.position = s.position;
-  p.velocity = s.velocity;
-  p.scale = s.cls->collision_radius / 8.0;
-  p.priority = 2;
-  spawn_fx(w, w.fx.ship_explosion, p);
-  w.explosions.push_back({s.position, w.tick, s.cls->collision_radius * 6.0});
+  if (!start_breakup(w, s)) {
+    SpawnParams p;
+    p.position = s.position;
+    p.velocity = s.velocity;
+    p.scale = s.cls->collision_radius / 8.0;
+    p.priority = 2;
+    spawn_fx(w, w.fx.ship_explosion, p);
+    w.explosions.push_back({s.position, w.tick, s.cls->collision_radius * 6.0});
+  }
   if (s.last_attacker && s.last_attacker != s.id) w.ship(s.last_attacker).kills++;
   if (!w.level.splash) return;
   for (Ship& o : w.ships) {
@@ -42,7 +45,7 @@ void kill_ship(World& w, Ship& s) {
 
 }  // namespace
 
-void apply_damage(World& w, Ship& t, double amount, const glm::dvec3& point, ShipId attacker) {
+void apply_damage(World& w, Ship& t, double amount, const glm::dvec3& point, ShipId attacker, bool parts) {
   if (!t.alive || amount <= 0) return;
   t.last_hit_tick = w.tick;
   if (attacker) t.last_attacker = attacker;
@@ -52,6 +55,7 @@ void apply_damage(World& w, Ship& t, double amount, const glm::dvec3& point, Shi
   double to_shield = std::min(t.shield, amount);
   t.shield -= to_shield;
   t.hull -= amount - to_shield;
+  if (parts && !t.parts.empty()) damage_parts(w, t, point, amount - to_shield, attacker);
   if (to_shield > 0 && !t.shield_fx.clusters.empty()) {
     if (t.shield_flash_tick != w.tick)
       for (ClusterHandle ch : t.shield_fx.clusters) w.particles->flash(ch, point, kFlashSeconds);

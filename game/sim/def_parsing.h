@@ -39,6 +39,10 @@ inline JsonObject root_of(const std::shared_ptr<const JsonDoc>& doc) {
 
 inline glm::dvec3 orientation(JsonObject& o) { return o.vec3("orientation", glm::dvec3(0.0), -3600.0, 3600.0); }
 
+// A ship class's optional "turrets", "subsystems" and "breakup" blocks (capital_defs.cpp).
+void parse_capital(JsonObject& r, ShipClassDef& c);
+// A level's optional "loadout" block (loadout.cpp), after its ships are loaded.
+void parse_loadout_choice(JsonObject& r, LevelDef& L, const std::string& root_dir);
 // The optional "mission" block of a level (game/sim/mission_defs.cpp).
 void parse_mission(JsonObject& r, LevelDef& L);
 // A file a data file names (`what`: "model"), found as given when absolute, else through the data

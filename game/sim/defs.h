@@ -61,6 +61,53 @@ struct CountermeasureDef {
   double decoy_chance = 0.7;  // 0..1
 };
 
+// Capital ships (game/sim/capital.h). A turret is a mount on the hull that aims and fires on its
+// own at hostiles inside its arc: a beam turret strikes along a straight bolt, a flak turret
+// bursts a shell near its target and hurts every hostile inside the burst. Each turret is also a
+// subsystem with hull of its own; destroyed, it stops firing.
+enum class TurretKind : uint8_t { Beam = 0, Flak = 1 };
+struct TurretDef {
+  std::string name;
+  TurretKind kind = TurretKind::Beam;
+  glm::dvec3 position{0.0};      // ship-local
+  glm::dvec3 facing{0, 1, 0};    // ship-local unit vector: the middle of its arc
+  double arc = 90.0;             // degrees off `facing` it can aim
+  double range = 800.0;          // metres
+  double damage = 20.0;          // per bolt or per shell burst
+  double cooldown = 1.5;         // seconds between shots
+  double spread = 0.02;          // radians of aim scatter
+  double burst_radius = 25.0;    // flak: metres around the burst point
+  double hull = 150.0;
+  double radius = 8.0;           // its hit sphere
+};
+// Engines, shield generators and other parts a pilot can target: each a hit sphere with hull.
+// Every engine destroyed stops the ship; every shield generator destroyed drops its shield.
+enum class SubsystemKind : uint8_t { Engine = 0, ShieldGenerator = 1, Other = 2 };
+struct SubsystemDef {
+  std::string name;
+  SubsystemKind kind = SubsystemKind::Other;
+  glm::dvec3 position{0.0};
+  double radius = 10.0;
+  double hull = 300.0;
+};
+// How a capital ship dies: `stages` blasts at points along its hull over `seconds`, its wreck
+// drifting and turning, then the final one `final_scale` times a fighter's explosion.
+struct BreakupDef {
+  int stages = 0;           // 0: one explosion, as fighters
+  double seconds = 4.0;
+  double final_scale = 8.0;
+  double spin = 6.0;        // degrees per second the wreck turns
+};
+// A loadout: the weapon behind each trigger. Weapons: beam, plasma, missile, torpedo.
+enum class WeaponKind : uint8_t { Beam = 0, Plasma = 1, Missile = 2, Torpedo = 3 };
+constexpr WeaponKind last_enumerator(WeaponKind) { return WeaponKind::Torpedo; }
+const char* weapon_name(WeaponKind k);
+struct Loadout {
+  WeaponKind primary = WeaponKind::Beam;
+  WeaponKind secondary = WeaponKind::Missile;
+  bool operator==(const Loadout&) const = default;
+};
+
 struct ShipClassDef {
   std::string name;      // file stem: "viper"
   std::string path;      // the file it came from
@@ -85,14 +132,26 @@ struct ShipClassDef {
   BeamDef beam;
   ProjectileWeaponDef missile;
   ProjectileWeaponDef plasma;
+  // Torpedo: a slow homing warhead that harms only capital ships (and their subsystems).
+  ProjectileWeaponDef torpedo;
   CountermeasureDef countermeasures;
   std::vector<glm::dvec3> exhausts;  // engine exhaust points, ship-local
+  std::vector<TurretDef> turrets;        // capital ships only
+  std::vector<SubsystemDef> subsystems;  // capital ships only
+  BreakupDef breakup;
+  // Set by a loadout (apply_loadout): the primary trigger fires plasma instead of the beam.
+  bool primary_plasma = false;
+  bool capital() const { return !turrets.empty() || !subsystems.empty(); }
+  // Parts a pilot can target: the turrets, then the subsystems.
+  size_t part_count() const { return turrets.size() + subsystems.size(); }
+  bool has(WeaponKind k) const;
 };
 
 // Gunner: holds still and fires every weapon straight ahead in bursts (the effect gallery).
 // Drone: a training target that flies slow circles and fires only when a training step tells it.
-enum class AiKind : uint8_t { None = 0, Fighter = 1, Gunner = 2, Drone = 3 };
-constexpr AiKind last_enumerator(AiKind) { return AiKind::Drone; }
+// Capital: cruises ahead at a steady throttle; its turrets fight on their own.
+enum class AiKind : uint8_t { None = 0, Fighter = 1, Gunner = 2, Drone = 3, Capital = 4 };
+constexpr AiKind last_enumerator(AiKind) { return AiKind::Capital; }
 
 struct ShipSpawnDef {
   std::string name;
@@ -183,6 +242,16 @@ struct MissionDef {
   MissionCategory category = MissionCategory::Mission;
 };
 
+// A level's optional "loadout" block (game/sim/loadout.cpp): what the briefing offers the player,
+// the ship classes and weapons allowed, and the choice it suggests. Menu data: not simulated.
+struct LoadoutChoiceDef {
+  bool present = false;
+  std::vector<std::string> ships;   // class names (assets/ships/NAME.json)
+  std::vector<WeaponKind> weapons;  // every weapon allowed in either bank
+  std::string suggested_ship;
+  Loadout suggested;
+};
+
 // The optional "training" block (game/sim/training_defs.cpp): steps that each wait for the player
 // to do one thing. The prompt's {action} placeholders name remappable key actions; the HUD
 // fills them from the live bindings.
@@ -235,11 +304,22 @@ struct LevelDef {
   std::map<std::string, glm::dvec3> team_colors;
   AiDifficultyTable ai;  // the AI pilots at each difficulty
   MissionDef mission;    // "mission": present only in levels the menu lists
+  LoadoutChoiceDef loadout;  // "loadout": the briefing's ship and weapon choice
   TrainingDef training;  // "training": steps for the player, empty in other levels
   EventsDef events;      // "objectives" and "events" (event_defs.cpp), empty in other levels
 };
 
 class EffectLibrary;
+
+// "beam+torpedo": the primary trigger's weapon, then the secondary's. Returns false and says why
+// (what is allowed) for anything else.
+bool parse_loadout(const std::string& text, Loadout& out, std::string& why);
+std::string loadout_text(const Loadout& l);
+// Why `l` cannot be flown on class `c` ("" when it can): the primary is the beam or plasma, the
+// secondary plasma, missile or torpedo, the two differ, and the class carries both.
+std::string loadout_problem(const ShipClassDef& c, const Loadout& l);
+// The class as the loadout arms it: the weapons it does not name removed.
+ShipClassDef apply_loadout(const ShipClassDef& c, const Loadout& l);
 
 // assets/settings/ai.json below `root_dir`: every difficulty and key is required.
 AiDifficultyTable load_ai_difficulties(const std::string& root_dir);

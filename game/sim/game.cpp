@@ -13,6 +13,7 @@
 #include "core/hash.h"
 #include "game/sim/effects.h"
 #include "game/sim/level_start.h"
+#include "game/sim/loadout.h"
 #include "game/sim/serialize.h"
 #include "game/sim/simulation.h"
 #include "game/sim/world.h"
@@ -54,7 +55,9 @@ Game Game::load_level(const std::string& level_path, const GameOptions& options)
 Game Game::load_level(const std::string& level_path, const GameOptions& options, std::shared_ptr<ParticleStore> store) {
   Game g;
   std::shared_ptr<const EffectLibrary> fx = load_effect_library(options.root_dir);
-  init_world(*g.world_, load_level_def(level_path, options.root_dir, fx.get()), fx, options, std::move(store));
+  LevelDef level = load_level_def(level_path, options.root_dir, fx.get());
+  apply_player_choice(level, options.ship, options.loadout, options.root_dir);
+  init_world(*g.world_, std::move(level), fx, options, std::move(store));
   return g;
 }
 

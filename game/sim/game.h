@@ -40,6 +40,10 @@ struct GameOptions {
   double cull_distance = 20000.0;  // particle clusters farther from the camera are not animated or drawn
   bool autopilot = false;  // the fighter AI flies the player's ship (sim.autopilot)
   std::string root_dir = ".";  // where assets/ lives (files named in levels are relative to it)
+  // The briefing's choice for the player's ship: a class name ("" = the level's) and a loadout
+  // "PRIMARY+SECONDARY" ("beam+torpedo"; "" = the class's own weapons). Replays record both.
+  std::string ship;
+  std::string loadout;
   bool operator==(const GameOptions&) const = default;
 };
 

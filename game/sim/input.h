@@ -34,6 +34,7 @@ enum class Command : uint8_t {
   OrderCover,      //   cover the player (engage whoever attacks them),
   OrderFormUp,     //   form up on the player,
   OrderEngage,     //   engage at will
+  TargetSubsystem,  // the next turret or subsystem of the target, then the whole ship again
 };
 
 struct InputFrame {

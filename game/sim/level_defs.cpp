@@ -195,8 +195,12 @@ ShipSpawnDef defs_internal::parse_ship_entry(JsonObject& s, LevelDef& L, const s
   d.team = s.require_string("team");
   d.player = s.boolean("player", false);
   d.wing = s.boolean("wing", false);
-  std::string ai = s.choice("ai", d.player ? "none" : "fighter", {"none", "fighter", "gunner", "drone"});
-  d.ai = ai == "none" ? AiKind::None : ai == "fighter" ? AiKind::Fighter : ai == "gunner" ? AiKind::Gunner : AiKind::Drone;
+  std::string ai = s.choice("ai", d.player ? "none" : "fighter", {"none", "fighter", "gunner", "drone", "capital"});
+  d.ai = ai == "none"      ? AiKind::None
+         : ai == "fighter" ? AiKind::Fighter
+         : ai == "gunner"  ? AiKind::Gunner
+         : ai == "drone"   ? AiKind::Drone
+                           : AiKind::Capital;
   d.position = s.vec3("position", glm::dvec3(0.0), -kSpace, kSpace);
   d.orientation_deg = orientation(s);
   d.velocity = s.vec3("velocity", glm::dvec3(0.0), -1.0e5, 1.0e5);
@@ -229,6 +233,7 @@ LevelDef parse_level_doc(std::shared_ptr<const JsonDoc> doc, const std::string& 
   parse_camera(r, L);
   parse_team_colors(r, L);
   parse_mission(r, L);
+  parse_loadout_choice(r, L, root_dir);
   parse_training(r, L);
   parse_events(r, L);
   check_training(r, L);

@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "game/sim/camera_rig.h"
+#include "game/sim/capital.h"
 #include "game/sim/commands.h"
 #include "game/sim/effects.h"
 #include "game/sim/geometry.h"
@@ -56,6 +57,9 @@ void add_ship(World& w, const ShipSpawnDef& d, bool waiting) {
   // training step calls it (training.cpp).
   s.alive = !waiting && !d.inactive;
   if (!s.cls->missile.present && s.cls->plasma.present) s.secondary = SecondaryWeapon::Plasma;
+  if (!s.cls->missile.present && !(s.cls->plasma.present && !s.cls->primary_plasma) && s.cls->torpedo.present)
+    s.secondary = SecondaryWeapon::Torpedo;
+  init_parts(s);
   if (d.player) w.player = s.id;
   // The autopilot setting hands the player's ship to the fighter AI (replays of whole missions).
   if (d.player && w.options.autopilot && s.ai == AiKind::None) s.ai = AiKind::Fighter;

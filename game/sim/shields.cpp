@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "game/sim/capital.h"
 #include "game/sim/effects.h"
 #include "game/sim/world.h"
 
@@ -30,7 +31,10 @@ void update_shields_and_energy(World& w) {
     const ShipClassDef& c = *s.cls;
     s.energy = std::min(c.energy, s.energy + c.energy_regen * w.dt);
     const bool regen_allowed = w.tick - s.last_hit_tick >= seconds_to_ticks(w, c.shield_regen_delay);
-    const bool recharging = regen_allowed && s.shield < c.shield;
+    // A capital ship whose shield generators are all destroyed has no shield left to raise.
+    const bool generator_down = !s.parts.empty() && shield_generators_down(s);
+    if (generator_down) s.shield = 0;
+    const bool recharging = regen_allowed && !generator_down && s.shield < c.shield;
     if (recharging) s.shield = std::min(c.shield, s.shield + c.shield_regen * w.dt);
     if (s.shield_fx.clusters.empty()) continue;
     const int quarters = static_cast<int>(std::ceil(4.0 * s.shield / c.shield));

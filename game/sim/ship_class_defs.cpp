@@ -30,13 +30,13 @@ void defs_internal::require_named_file(const JsonValue& v, const std::string& na
 
 namespace {
 
-ProjectileWeaponDef projectile_weapon(JsonObject& o, bool homing) {
+ProjectileWeaponDef projectile_weapon(JsonObject& o, bool homing, bool torpedo = false) {
   ProjectileWeaponDef w;
   w.present = true;
   w.hardpoints = points(o, "hardpoints", 100.0);
   if (w.hardpoints.empty()) o.fail_key("hardpoints", "'" + o.key_path("hardpoints") + "' must list at least one [x, y, z]");
-  w.speed = o.number("speed", homing ? 220.0 : 450.0, 1.0, 5000.0);
-  w.damage = o.number("damage", homing ? 45.0 : 18.0, 0.0, kHuge);
+  w.speed = o.number("speed", torpedo ? 120.0 : homing ? 220.0 : 450.0, 1.0, 5000.0);
+  w.damage = o.number("damage", torpedo ? 400.0 : homing ? 45.0 : 18.0, 0.0, kHuge);
   w.energy = o.number("energy", homing ? 15.0 : 6.0, 0.0, kHuge);
   w.cooldown = o.number("cooldown", homing ? 2.0 : 0.25, 1.0 / 240.0, 600.0);
   w.lifetime = o.number("lifetime", homing ? 8.0 : 3.0, 0.05, 600.0);
@@ -98,6 +98,10 @@ ShipClassDef parse_ship_class_doc(const std::shared_ptr<const JsonDoc>& doc, con
     JsonObject o = p->object();
     c.plasma = projectile_weapon(o, false);
   }
+  if (auto t = r.get("torpedo")) {
+    JsonObject o = t->object();
+    c.torpedo = projectile_weapon(o, true, true);
+  }
   if (auto cm = r.get("countermeasures")) {
     JsonObject o = cm->object();
     c.countermeasures.count = static_cast<int>(o.integer("count", 8, 0, 100));
@@ -106,7 +110,8 @@ ShipClassDef parse_ship_class_doc(const std::shared_ptr<const JsonDoc>& doc, con
     c.countermeasures.decoy_chance = o.number("decoy_chance", 0.7, 0.0, 1.0);
     o.finish();
   }
-  c.exhausts = points(r, "exhausts", 100.0, kMaxShipExhausts);
+  c.exhausts = points(r, "exhausts", 1000.0, kMaxShipExhausts);
+  parse_capital(r, c);
   r.finish();
   if (!root_dir.empty()) require_named_file(model, c.model, root_dir, "model");  // what the file names, once it is whole
   return c;

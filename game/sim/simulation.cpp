@@ -5,6 +5,7 @@
 #include "game/sim/ai.h"
 #include "game/sim/beams.h"
 #include "game/sim/camera_rig.h"
+#include "game/sim/capital.h"
 #include "game/sim/collisions.h"
 #include "game/sim/commands.h"
 #include "game/sim/damage.h"
@@ -40,8 +41,10 @@ void step_world(World& w, const InputFrame& input, const std::vector<Command>& c
     else if (s.ai == AiKind::Fighter) drive_ai(w, s), defend_against_missiles(w, s);
     else if (s.ai == AiKind::Gunner) drive_gunner(w, s);
     else if (s.ai == AiKind::Drone) drive_drone(w, s);
+    else if (s.ai == AiKind::Capital) drive_capital(w, s);
     else s.controls = InputFrame{};
     fly_ship(w, s);
+    if (!s.parts.empty()) stall_dead_engines(w, s);
   }
   collide_ships(w);
   update_locks(w);
@@ -50,6 +53,9 @@ void step_world(World& w, const InputFrame& input, const std::vector<Command>& c
     update_beam_trigger(w, s);
     fire_secondary(w, s);
   }
+  // After every fighter's trigger, in id order: turret hits land before the deaths are resolved.
+  for (Ship& s : w.ships)
+    if (s.alive && !s.cls->turrets.empty()) fire_turrets(w, s);
   update_flares(w);
   move_projectiles(w);
   publish_owner_transforms(w);
@@ -66,6 +72,7 @@ void step_world(World& w, const InputFrame& input, const std::vector<Command>& c
   resolve_beams(w);
   hit_projectiles(w);
   resolve_deaths(w);
+  if (!w.breakups.empty()) update_breakups(w);
   update_shields_and_energy(w);
   update_training(w, commands);
   update_outcome(w);

@@ -40,7 +40,7 @@ constexpr CommandName kCommands[] = {
     {"camera", Command::CameraToggle},          {"camera_padlock", Command::CameraPadlock},
     {"countermeasure", Command::Countermeasure}, {"order_attack", Command::OrderAttack},
     {"order_cover", Command::OrderCover},       {"order_form_up", Command::OrderFormUp},
-    {"order_engage", Command::OrderEngage},
+    {"order_engage", Command::OrderEngage}, {"target_subsystem", Command::TargetSubsystem},
 };
 
 const ShipSpawnDef* find_ship(const LevelDef& L, const std::string& name) {

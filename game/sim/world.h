@@ -37,7 +37,7 @@ class EffectLibrary;
 // The nose direction of an orientation: ship-local −Z.
 inline glm::dvec3 forward_of(const glm::dquat& q) { return q * glm::dvec3(0, 0, -1); }
 
-enum class SecondaryWeapon : uint8_t { Missile = 0, Plasma = 1 };
+enum class SecondaryWeapon : uint8_t { Missile = 0, Plasma = 1, Torpedo = 2 };
 enum class AiMode : uint8_t { Attack = 0, Evade = 1, BreakOff = 2 };
 // Padlock: the chase camera turned to keep the player's target in view (camera_rig.h).
 enum class CameraMode : uint8_t { Chase = 0, Cockpit = 1, Fixed = 2, Padlock = 3 };
@@ -48,7 +48,7 @@ enum class WingOrder : uint8_t { EngageAtWill = 0, Attack = 1, Cover = 2, FormUp
 // Radio: a line an event gives a named speaker ("Speaker: text").
 enum class MessageKind : uint8_t { Wing = 0, Friendly = 1, Hostile = 2, Radio = 3 };
 // The last value of each enum: a snapshot's byte beyond it is an error.
-constexpr SecondaryWeapon last_enumerator(SecondaryWeapon) { return SecondaryWeapon::Plasma; }
+constexpr SecondaryWeapon last_enumerator(SecondaryWeapon) { return SecondaryWeapon::Torpedo; }
 constexpr AiMode last_enumerator(AiMode) { return AiMode::BreakOff; }
 constexpr CameraMode last_enumerator(CameraMode) { return CameraMode::Padlock; }
 constexpr Outcome last_enumerator(Outcome) { return Outcome::TeamWon; }
@@ -145,6 +145,26 @@ void visit_fields(S& s, V&& v) {
   v("flare_ready_tick", s.flare_ready_tick, fields::saved, state_hash<3>);
 }
 
+// A capital ship's turret or subsystem (ShipClassDef::turrets, then ::subsystems): its hull, and
+// for a turret the tick it may fire next, the ship it aims at, the tick it last fired and the
+// bolt of a beam turret while it shows.
+struct PartState {
+  double hull = 0;
+  int64_t ready_tick = 0;
+  ShipId aim;
+  int64_t fired_tick = -1;
+  EffectHandle bolt;
+};
+
+template <fields::MaybeConst<PartState> P, class V>
+void visit_fields(P& p, V&& v) {
+  v("hull", p.hull, fields::saved, state_hash<0>);
+  v("ready_tick", p.ready_tick, fields::saved, state_hash<1>);
+  v("aim", p.aim, ship_ref, state_hash<2>);
+  v("fired_tick", p.fired_tick, fields::saved, state_hash<3>);
+  v("bolt", p.bolt, fields::saved, presentation_hash<0>);
+}
+
 // Shots that hit as a share of shots fired; 0 before the first shot.
 inline double accuracy(int64_t hits, int64_t shots) { return shots > 0 ? double(hits) / double(shots) : 0.0; }
 
@@ -193,6 +213,12 @@ struct Ship {
   AiState ai_state;
   CombatStats stats;
   SeekerState seeker;
+  // Capital ships: one entry per turret and subsystem (empty for fighters, so their hashes stay).
+  std::vector<PartState> parts;
+  // The part of `target` this ship aims at: none or one entry (an index into its parts).
+  std::vector<int32_t> target_part;
+  // Primary trigger firing plasma (a loadout): its cooldown, in one entry; empty otherwise.
+  std::vector<double> primary_cooldown;
 };
 
 // A wave's ship before its wave arrives: not alive, never killed (game/sim/waves.h).
@@ -244,6 +270,9 @@ void visit_fields(S& s, V&& v) {
   v("ai_state", s.ai_state, fields::saved, state_hash<21>);
   v("stats", s.stats, fields::saved, state_hash<23>);
   v("seeker", s.seeker, fields::saved, state_hash<24>);
+  v("parts", s.parts, fields::saved, state_hash<25>);
+  v("target_part", s.target_part, fields::saved, state_hash<26>);
+  v("primary_cooldown", s.primary_cooldown, fields::saved, state_hash<27>);
   v("model", s.model, fields::not_saved, fields::unhashed);  // the class's model
 }
 
@@ -258,6 +287,7 @@ struct Projectile {
   int64_t expire_tick = 0;
   EffectHandle trail;
   uint32_t decoy = 0;       // serial of the flare it chases instead of its target (0: none)
+  std::vector<int32_t> part;  // torpedoes: the target's part it homes on (none or one entry)
 };
 
 // Damage, turn rate and hit radius come from the weapon's definition at the shot: unhashed.
@@ -277,6 +307,7 @@ void visit_fields(P& p, V&& v) {
   v("expire_tick", p.expire_tick, fields::saved, state_hash<6>);
   v("trail", p.trail, fields::saved, presentation_hash<1>);
   v("decoy", p.decoy, fields::saved, state_hash<8>);
+  v("part", p.part, fields::saved, state_hash<9>);
 }
 
 // A flare dropped against missiles: it drifts behind its ship, burns for its lifetime and
@@ -407,6 +438,30 @@ void visit_fields(M& m, V&& v) {
   v("text", m.text, fields::saved, presentation_hash<2>);
 }
 
+// A capital ship breaking up (game/sim/capital.h): its wreck drifts and turns from the tick it
+// died; `stage` blasts have gone off, the final one ends it.
+struct BreakUp {
+  ShipId ship;
+  int64_t start_tick = 0;
+  int32_t stage = 0;
+  glm::dvec3 position{0.0}, velocity{0.0};
+  glm::dquat orientation{1, 0, 0, 0};
+  glm::dvec3 prev_position{0.0};
+  glm::dquat prev_orientation{1, 0, 0, 0};
+};
+
+template <fields::MaybeConst<BreakUp> B, class V>
+void visit_fields(B& b, V&& v) {
+  v("ship", b.ship, ship_ref, state_hash<0>);
+  v("start_tick", b.start_tick, fields::saved, state_hash<1>);
+  v("stage", b.stage, fields::saved, state_hash<2>);
+  v("position", b.position, fields::saved, state_hash<3>);
+  v("velocity", b.velocity, fields::saved, state_hash<4>);
+  v("orientation", b.orientation, fields::saved, state_hash<5>);
+  v("prev_position", b.prev_position, fields::saved, presentation_hash<0>);
+  v("prev_orientation", b.prev_orientation, fields::saved, presentation_hash<1>);
+}
+
 }  // namespace arc
 
 #include "game/sim/mission_state.h"  // NOLINT: needs the hash words and reference tags above
@@ -449,6 +504,7 @@ class World {
   std::vector<SimMessage> messages;     // newest last, at most kMaxMessages
   // Present only in levels with "objectives" or "events" (game/sim/mission_events.h).
   std::optional<MissionProgress> mission;
+  std::vector<BreakUp> breakups;        // capital ships breaking up (empty: none)
 
   Ship& ship(ShipId id) { return ships[id.index()]; }
   const Ship& ship(ShipId id) const { return ships[id.index()]; }
@@ -492,6 +548,7 @@ void visit_fields(W& w, V&& v) {
   v("waves", w.waves, fields::checked, state_hash<13>);
   v("messages", w.messages, fields::saved, presentation_hash<8>);
   v("mission", w.mission, fields::saved, state_hash<15>);  // only in levels with events or objectives
+  v("breakups", w.breakups, fields::saved, state_hash<16>, presentation_hash<9>);
   v("team_names", w.team_names, fields::not_saved, fields::unhashed);    // from the level
   v("model_paths", w.model_paths, fields::not_saved, fields::unhashed);  // from the level
   v("effects", w.effects, fields::not_saved, fields::unhashed);          // the shared library

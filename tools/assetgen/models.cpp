@@ -142,6 +142,65 @@ void warden(const std::string& models_dir, const std::string& textures_dir) {
   write_ship(mb, look, models_dir, textures_dir);
 }
 
+// A capital ship's turret: a squat drum on the hull at `base` (its top facing `up`, ±Y or ±X),
+// and twin barrels pointing forward (−Z) from it.
+void turret(MeshBuilder& mb, glm::dvec3 base, glm::dvec3 up, double r, bool flak) {
+  Solid drum = loft({circle_z(-r * 0.9, r, 8, 0, 0), circle_z(r * 0.9, r, 8, 0, 0)}, {kTrim}, kHull, kHull);
+  const double barrel = flak ? 0.45 : 0.7, len = flak ? r * 2.2 : r * 3.2;
+  Solid guns = loft({circle_z(-len, barrel, 6, -r * 0.4, r * 0.6), circle_z(0.0, barrel * 1.3, 6, -r * 0.4, r * 0.6)},
+                    {kTrim}, kGlow, kTrim);
+  Solid guns2 = loft({circle_z(-len, barrel, 6, r * 0.4, r * 0.6), circle_z(0.0, barrel * 1.3, 6, r * 0.4, r * 0.6)},
+                     {kTrim}, kGlow, kTrim);
+  // The drum is built around +Z: turn it so its axis is `up`, then lift it onto the hull.
+  auto place = [&](Solid s, bool drum_axis) {
+    for (Tri& t : s.tris)
+      for (glm::dvec3* p : {&t.a, &t.b, &t.c}) {
+        glm::dvec3 q = *p;
+        if (drum_axis) q = glm::dvec3(q.x, q.z, -q.y);  // +Z axis to +Y
+        if (up.y < -0.5) q = glm::dvec3(q.x, -q.y, q.z);
+        if (std::fabs(up.x) > 0.5) q = glm::dvec3(up.x * q.y, -up.x * q.x, q.z);
+        *p = base + q;
+      }
+    return outward(s);
+  };
+  mb.add(place(drum, true));
+  mb.add(place(guns, false));
+  mb.add(place(guns2, false));
+}
+
+// Corvette: a capital ship, ~200 m from nose (z = −100) to nozzles (z = 100). A long chined
+// hull, a bridge tower aft, a shield generator dome amidships, twin engines at x = ±11, z = 100,
+// and four turrets where assets/ships/corvette.json mounts them.
+void corvette(const std::string& models_dir, const std::string& textures_dir) {
+  MeshBuilder mb;
+  mb.add(loft({ring_z(-100, 2.0, 1.5, 8, 0, -1.0, 3.0), ring_z(-85, 9.0, 6.0, 8, 0, -0.5, 3.0),
+               ring_z(-50, 16.0, 10.0, 8, 0, 0.0, 3.5), ring_z(10, 20.0, 12.0, 8, 0, 0.0, 3.5),
+               ring_z(60, 20.0, 12.0, 8, 0, 0.0, 3.5), ring_z(85, 17.0, 10.0, 8, 0, 0.0, 3.0)},
+              {kTrim, kHull, kHull, kHull, kTrim}, kTrim, kTrim));
+  // Bridge tower with a glowing window band.
+  mb.add(loft({ring_z(30, 6.0, 3.0, 8, 0, 13.0, 4.0), ring_z(34, 8.0, 5.0, 8, 0, 16.0, 4.0),
+               ring_z(44, 8.0, 5.0, 8, 0, 17.0, 4.0), ring_z(46, 8.0, 5.0, 8, 0, 17.0, 4.0),
+               ring_z(58, 7.0, 4.0, 8, 0, 15.0, 4.0)},
+              {kHull, kGlow, kHull, kHull}, kHull, kHull));
+  // Shield generator: a glowing dome on a collar amidships.
+  mb.add(loft({ring_z(-6, 0.5, 0.5, 10, 0, 14.0), ring_z(-4, 5.5, 3.0, 10, 0, 14.0), ring_z(0, 7.0, 5.0, 10, 0, 15.0),
+               ring_z(4, 5.5, 3.0, 10, 0, 14.0), ring_z(6, 0.5, 0.5, 10, 0, 14.0)},
+              {kGlow, kGlow, kGlow, kGlow}, kGlow, kGlow));
+  // Flanking armour belts with the team's stripe, and a keel.
+  add_both_sides(mb, box({18.0, -4.0, -40.0}, {22.0, 4.0, 50.0}, kTeamStripe));
+  mb.add(box({-3.0, -16.0, -60.0}, {3.0, -10.0, 60.0}, kTrim));
+  add_both_sides(mb, fin(6.0, 10.0, 24.0, 62.0, 22.0, 78.0, 10.0, 1.4, kTeamStripe));
+  add_both_sides(mb, engine(11.0, 0.0, 70.0, 100.0, 8.0, 10));
+  turret(mb, {0, 11.5, -55}, {0, 1, 0}, 4.0, false);
+  turret(mb, {0, -11.5, -25}, {0, -1, 0}, 4.0, false);
+  turret(mb, {21.5, 0, 15}, {1, 0, 0}, 3.5, true);
+  turret(mb, {-21.5, 0, 15}, {-1, 0, 0}, 3.5, true);
+  running_lights(mb, 22.5, 0.0, 50.0, 1.2);
+  const ClassLook look{"corvette", {0.5f, 0.53f, 0.58f, 1.0f}, {1.0f, 0.6f, 0.3f},
+                       {.seed = 14, .rows = 10, .plates_per_row = 4, .hatch_share = 0.3}, 24.0};
+  write_ship(mb, look, models_dir, textures_dir);
+}
+
 // Dart: interceptor, ~13 m. Long needle, forward-swept fins, one big engine at z = 6.
 void dart(const std::string& models_dir, const std::string& textures_dir) {
   MeshBuilder mb;
@@ -250,9 +309,10 @@ int write_models(const std::string& dir, const std::string& textures_dir) {
   viper(dir, textures_dir);
   warden(dir, textures_dir);
   dart(dir, textures_dir);
+  corvette(dir, textures_dir);
   wall(dir);
   asteroid(dir);
-  return 8;
+  return 10;
 }
 
 }  // namespace arc::assetgen

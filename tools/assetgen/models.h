@@ -1,4 +1,4 @@
-// tools/assetgen/models.h — the generated models: three ship hulls, an armour wall, an asteroid.
+// tools/assetgen/models.h — the generated models: three fighter hulls, a corvette, an armour wall, an asteroid.
 // Convention: forward −Z, up +Y, right +X, metres, origin at the centre of mass.
 #pragma once
 #include <string>

@@ -68,6 +68,8 @@ TEST(StateFields, HashWordsOfEachPassAreNumberedWithoutGapsOrClashes) {
   CameraRig camera;
   TrainingProgress training;
   World world;
+  PartState part;
+  BreakUp breakup;
   for (int pass : {kStateHashPass, kPresentationHashPass}) {
     SCOPED_TRACE("pass " + std::to_string(pass));
     EXPECT_EQ(check_hash_words(hash_slots(ai, pass)), "");
@@ -78,8 +80,12 @@ TEST(StateFields, HashWordsOfEachPassAreNumberedWithoutGapsOrClashes) {
     EXPECT_EQ(check_hash_words(hash_slots(camera, pass)), "");
     EXPECT_EQ(check_hash_words(hash_slots(training, pass)), "");
     EXPECT_EQ(check_hash_words(hash_slots(world, pass)), "");
+    EXPECT_EQ(check_hash_words(hash_slots(part, pass)), "");
+    EXPECT_EQ(check_hash_words(hash_slots(breakup, pass)), "");
   }
-  EXPECT_EQ(hash_slots(ship, kStateHashPass).size(), 25u);  // word 22: its particle owner, 23: its combat stats, 24: its lock and flares
+  // Word 22: its particle owner, 23: its combat stats, 24: its lock and flares, 25: a capital
+  // ship's parts, 26: the part it aims at, 27: a plasma primary's cooldown.
+  EXPECT_EQ(hash_slots(ship, kStateHashPass).size(), 28u);
   EXPECT_EQ(hash_slots(ship, kPresentationHashPass).size(), 11u);
 }
 
