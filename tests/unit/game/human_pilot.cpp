@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <cstdlib>
 #include <glm/geometric.hpp>
 
 #include "assets/model.h"
@@ -51,6 +52,8 @@ HumanPilot::HumanPilot(const World& w, const std::string& root_dir, uint64_t see
       bindings_(load_bindings(data_file(root_dir, "assets/settings/bindings.json"))),
       input_(bindings_) {
   if (!w.player) throw std::invalid_argument(w.level.path + ": the test pilot needs a level with a player ship");
+  if (std::getenv("PILOT_NO_EVADE")) skill_.evades = false;  // SCRATCH
+  if (std::getenv("PILOT_NO_ORDERS")) skill_.orders = false;  // SCRATCH
   rules_ = load_hud_rules(data_file(root_dir, "assets/settings/hud.json"));
   const Rng rng{seed_, kReactionStream, 0};
   reaction_s_ = rng.range(0, skill_.reaction_min_s, skill_.reaction_max_s);
@@ -82,6 +85,16 @@ Sight HumanPilot::look(const World& w) const {
   if (!s.flying) return s;
   const Ship& me = w.ship(w.player);
   s.energy = me.cls->energy > 0 ? me.energy / me.cls->energy : 0.0;
+  s.shield = me.cls->shield > 0 ? me.shield / me.cls->shield : 0.0;
+  s.hull = me.hull / me.cls->hull;
+  for (const ThreatCue& a : pic.threats.attackers) {
+    if (a.strength <= s.attack) continue;
+    s.attack = a.strength;
+    s.attack_dir = a.dir;
+    s.attacker_in_view = a.in_view;
+  }
+  s.missile_m = pic.threats.missile_m;
+  if (!pic.threats.missiles.empty()) s.missile_dir = pic.threats.missiles.front();
   s.set_throttle = input_.set_throttle();
   s.crosshair = pic.aim.crosshair;
   s.beam_ring = pic.aim.beam_ring_lit;
@@ -189,8 +202,43 @@ void HumanPilot::choose_keys(const World& w, const Sight& seen) {
   if (set < wanted - 0.03) hold(b.throttle.positive);
   if (set > wanted + 0.03) hold(b.throttle.negative);
   if (seen.target && seen.on_screen && d > 1500 && seen.energy > 0.5) hold(b.afterburner);
-  if (seen.missile_near && w.tick - last_flare_ >= seconds_to_ticks(w, 1.5))
+  const bool missile_close = seen.missile_near || (seen.missile_m >= 0 && seen.missile_m < 500);
+  if (missile_close && w.tick - last_flare_ >= seconds_to_ticks(w, 1.5))
     tap(b.countermeasure), last_flare_ = w.tick;
+}
+
+// A break turn: hard across a missile's path, or toward an attacker out of view (turning into
+// the attack spoils its aim and brings it round to the nose), on the afterburner; the nearest
+// hostile targeted (R) when the radar shows one nearer than the target.
+void HumanPilot::start_break(const World& w, const Sight& seen) {
+  if (!skill_.evades || w.tick < break_until_ || w.tick - last_break_ < seconds_to_ticks(w, 3.0)) return;
+  const bool missile = seen.missile_m >= 0 && seen.missile_m < 700;
+  const bool hunted = seen.attack > 0.5 && !seen.attacker_in_view && seen.shield < 0.6;
+  if (!missile && !hunted) return;
+  if (missile) {
+    // Across the missile's line, on the side the nose already leans.
+    const glm::dvec2 side(-seen.missile_dir.y, seen.missile_dir.x);
+    break_dir_ = unit_or(side, {1, 0});
+  } else {
+    break_dir_ = unit_or(seen.attack_dir, {1, 0});
+  }
+  last_break_ = w.tick;
+  break_until_ = w.tick + seconds_to_ticks(w, missile ? 1.2 : 1.5);
+  const bool nearer = seen.hostile_blip && (seen.target_blip < 0 || glm::length(seen.nearest_hostile) < 0.7 * seen.target_blip);
+  if (hunted && nearer) tap(bindings_.target_nearest), last_target_key_ = w.tick;
+}
+
+// F5 (attack my target) once the pilot closes on a new target; F6 (cover me) while hunted.
+void HumanPilot::order_wing(const World& w, const Sight& seen) {
+  if (!skill_.orders || w.tick - last_order_ < seconds_to_ticks(w, 2.0)) return;
+  const Ship& me = w.ship(w.player);  // the target panel names the target
+  const uint32_t target = me.target ? uint32_t(me.target.index()) + 1 : 0;
+  const bool hunted = seen.attack > 0.5 && !seen.attacker_in_view && seen.shield < 0.4;
+  if (hunted && w.tick - last_order_ > seconds_to_ticks(w, 8.0)) {
+    tap(bindings_.order_cover), last_order_ = w.tick, ordered_target_ = 0;
+  } else if (target && target != ordered_target_ && seen.on_screen && seen.distance < 1500) {
+    tap(bindings_.order_attack), last_order_ = w.tick, ordered_target_ = target;
+  }
 }
 
 // The beam while the crosshair is on the target in range (or the beam ring lit); a missile
@@ -215,10 +263,14 @@ void HumanPilot::act(const World& w, InputFrame& in, std::vector<Command>& comma
   if (seen.flying && now().flying) {
     // Behind the own hull the target is not seen, but its brackets are drawn over the hull:
     // the hand still pulls toward them (fire() holds).
-    if (seen.target && seen.on_screen) move = track(w, seen);
+    start_break(w, seen);
+    if (w.tick < break_until_) move = sweep_toward(break_dir_) * skill_.hand_speed;
+    else if (seen.target && seen.on_screen) move = track(w, seen);
     else if (seen.target && !seen.on_screen) move = sweep_toward(seen.arrow);
     else if (!seen.target && seen.hostile_blip) move = sweep_toward(radar_direction(seen));
     choose_keys(w, seen);
+    order_wing(w, seen);
+    if (w.tick < break_until_ && seen.energy > 0.15) hold(bindings_.afterburner);
     fire(w, seen);
   }
   moves_.push_back(move);

@@ -174,3 +174,52 @@ TEST(HumanPilot, DISABLED_Report) {
 
 }  // namespace
 }  // namespace arc
+namespace arc {
+namespace {
+// Scratch: deaths per seed.
+TEST(HumanPilot, DISABLED_Trace) {
+  const char* level = std::getenv("PILOT_LEVEL");
+  const int d = std::getenv("PILOT_DIFF") ? std::atoi(std::getenv("PILOT_DIFF")) : 1;
+  const int seeds = std::getenv("PILOT_SEEDS") ? std::atoi(std::getenv("PILOT_SEEDS")) : 6;
+  for (int s = 1; s <= seeds; ++s) {
+    GameOptions o;
+    o.root_dir = data_root();
+    o.difficulty_override = true;
+    o.difficulty = static_cast<Difficulty>(d);
+    o.seed_override = true;
+    o.seed = uint64_t(s);
+    Game g = Game::load_level(data_root() + "/" + (level ? level : "levels/skirmish.json"), o);
+    const World& w = g.world();
+    HumanPilot pilot(w, data_root(), uint64_t(s));
+    std::vector<bool> dead(w.ships.size(), false);
+    InputFrame in;
+    std::vector<Command> keys;
+    std::string line;
+    while (w.outcome == Outcome::Undecided && w.ship(w.player).alive && w.tick < 240 * 60) {
+      pilot.act(w, in, keys);
+      g.step(in, keys);
+      if (std::getenv("PILOT_VERBOSE") && s == 1 && w.tick % 120 == 0) {
+        std::printf("t=%.0f", double(w.tick) * w.dt);
+        for (const Ship& e : w.ships) {
+          if (!e.alive) continue;
+          std::printf(" | %s tgt=%s d=%.0f m=%d sh=%.0f hu=%.0f", e.name.c_str(), e.target ? w.ship(e.target).name.c_str() : "-",
+                      e.target ? glm::length(w.ship(e.target).position - e.position) : 0.0, int(e.ai_state.mode), e.shield, e.hull);
+        }
+        std::printf("\n");
+      }
+      for (size_t i = 0; i < w.ships.size(); ++i) {
+        const Ship& e = w.ships[i];
+        if (!e.alive && e.death_tick >= 0 && !dead[i]) {
+          dead[i] = true;
+          char b[160];
+          std::snprintf(b, sizeof b, " %.0f:%s<-%s", double(w.tick) * w.dt, e.name.c_str(),
+                        e.last_attacker ? w.ship(e.last_attacker).name.c_str() : "?");
+          line += b;
+        }
+      }
+    }
+    std::printf("seed %d %s%s\n", s, w.outcome == Outcome::Victory ? "WON" : "lost", line.c_str());
+  }
+}
+}  // namespace
+}  // namespace arc
