@@ -211,21 +211,20 @@ void HumanPilot::choose_keys(const World& w, const Sight& seen) {
 // the attack spoils its aim and brings it round to the nose), on the afterburner; the nearest
 // hostile targeted (R) when the radar shows one nearer than the target.
 void HumanPilot::start_break(const World& w, const Sight& seen) {
-  if (!skill_.evades || w.tick < break_until_ || w.tick - last_break_ < seconds_to_ticks(w, 3.0)) return;
-  const bool missile = seen.missile_m >= 0 && seen.missile_m < 700;
+  if (!skill_.evades || w.tick < break_until_) return;
+  // Hunted from out of view: R for the nearest hostile when the radar shows one nearer than
+  // the target, to turn on the attacker.
   const bool hunted = seen.attack > 0.5 && !seen.attacker_in_view && seen.shield < 0.6;
-  if (!missile && !hunted) return;
-  if (missile) {
-    // Across the missile's line, on the side the nose already leans.
-    const glm::dvec2 side(-seen.missile_dir.y, seen.missile_dir.x);
-    break_dir_ = unit_or(side, {1, 0});
-  } else {
-    break_dir_ = unit_or(seen.attack_dir, {1, 0});
-  }
-  last_break_ = w.tick;
-  break_until_ = w.tick + seconds_to_ticks(w, missile ? 1.2 : 1.5);
   const bool nearer = seen.hostile_blip && (seen.target_blip < 0 || glm::length(seen.nearest_hostile) < 0.7 * seen.target_blip);
-  if (hunted && nearer) tap(bindings_.target_nearest), last_target_key_ = w.tick;
+  if (!std::getenv("PILOT_NO_HUNT_R") && hunted && nearer && w.tick - last_target_key_ > seconds_to_ticks(w, 2.0))
+    tap(bindings_.target_nearest), last_target_key_ = w.tick;
+  const bool missile = seen.missile_m >= 0 && seen.missile_m < 600;
+  const bool hard_pressed = std::getenv("PILOT_BREAK_HUNTED") && hunted && seen.shield < 0.2;  // SCRATCH
+  if ((!missile && !hard_pressed) || w.tick - last_break_ < seconds_to_ticks(w, 3.0)) return;
+  // Across the missile's line (or toward the attacker, spoiling its aim), on the afterburner.
+  break_dir_ = missile ? unit_or({-seen.missile_dir.y, seen.missile_dir.x}, {1, 0}) : unit_or(seen.attack_dir, {1, 0});
+  last_break_ = w.tick;
+  break_until_ = w.tick + seconds_to_ticks(w, 1.0);
 }
 
 // F5 (attack my target) once the pilot closes on a new target; F6 (cover me) while hunted.
