@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-#include <cstdlib>
 #include <glm/geometric.hpp>
 
 #include "assets/model.h"
@@ -52,8 +51,6 @@ HumanPilot::HumanPilot(const World& w, const std::string& root_dir, uint64_t see
       bindings_(load_bindings(data_file(root_dir, "assets/settings/bindings.json"))),
       input_(bindings_) {
   if (!w.player) throw std::invalid_argument(w.level.path + ": the test pilot needs a level with a player ship");
-  if (std::getenv("PILOT_NO_EVADE")) skill_.evades = false;  // SCRATCH
-  if (std::getenv("PILOT_NO_ORDERS")) skill_.orders = false;  // SCRATCH
   rules_ = load_hud_rules(data_file(root_dir, "assets/settings/hud.json"));
   const Rng rng{seed_, kReactionStream, 0};
   reaction_s_ = rng.range(0, skill_.reaction_min_s, skill_.reaction_max_s);
@@ -207,22 +204,12 @@ void HumanPilot::choose_keys(const World& w, const Sight& seen) {
     tap(b.countermeasure), last_flare_ = w.tick;
 }
 
-// A break turn: hard across a missile's path, or toward an attacker out of view (turning into
-// the attack spoils its aim and brings it round to the nose), on the afterburner; the nearest
-// hostile targeted (R) when the radar shows one nearer than the target.
+// A break turn when the missile warning reads under 600 m: hard across the missile's line (its
+// marker's direction turned a quarter) for a second on the afterburner, so it overshoots.
 void HumanPilot::start_break(const World& w, const Sight& seen) {
-  if (!skill_.evades || w.tick < break_until_) return;
-  // Hunted from out of view: R for the nearest hostile when the radar shows one nearer than
-  // the target, to turn on the attacker.
-  const bool hunted = seen.attack > 0.5 && !seen.attacker_in_view && seen.shield < 0.6;
-  const bool nearer = seen.hostile_blip && (seen.target_blip < 0 || glm::length(seen.nearest_hostile) < 0.7 * seen.target_blip);
-  if (!std::getenv("PILOT_NO_HUNT_R") && hunted && nearer && w.tick - last_target_key_ > seconds_to_ticks(w, 2.0))
-    tap(bindings_.target_nearest), last_target_key_ = w.tick;
-  const bool missile = seen.missile_m >= 0 && seen.missile_m < 600;
-  const bool hard_pressed = std::getenv("PILOT_BREAK_HUNTED") && hunted && seen.shield < 0.2;  // SCRATCH
-  if ((!missile && !hard_pressed) || w.tick - last_break_ < seconds_to_ticks(w, 3.0)) return;
-  // Across the missile's line (or toward the attacker, spoiling its aim), on the afterburner.
-  break_dir_ = missile ? unit_or({-seen.missile_dir.y, seen.missile_dir.x}, {1, 0}) : unit_or(seen.attack_dir, {1, 0});
+  if (!skill_.evades || w.tick < break_until_ || w.tick - last_break_ < seconds_to_ticks(w, 3.0)) return;
+  if (seen.missile_m < 0 || seen.missile_m >= 600) return;
+  break_dir_ = unit_or({-seen.missile_dir.y, seen.missile_dir.x}, {1, 0});
   last_break_ = w.tick;
   break_until_ = w.tick + seconds_to_ticks(w, 1.0);
 }

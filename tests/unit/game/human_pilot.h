@@ -11,6 +11,9 @@
 // the default bindings, so the mouse's 0.12°/px, a flick's carry, the quantisation, the set
 // throttle and the target keys are the player's own. What it knows of its own hand's recent
 // moves stands in for the feel of the mouse (the moves it made since what it sees now).
+// Like a player it drops a flare and breaks across a missile's line when the missile warning
+// reads near, and orders its wing: F5 (attack my target) as it closes on each new target, F6
+// (cover me) when the damage cue shows an attacker out of view and its shield is low.
 //
 //   HumanPilot pilot(game.world(), arc::data_root(), /*seed=*/3);
 //   InputFrame in;
@@ -42,7 +45,7 @@ struct HumanSkill {
   double hand_time_s = 0.15;        // a move closes the error it means with this time constant
   double hand_speed = 1.2;          // the fastest hand, in multiples of the ship's full turn rate
   bool fires = true;                // false: never presses a fire button
-  bool evades = true;               // breaks away from missiles and attackers
+  bool evades = true;               // breaks across a missile's line when the warning is near
   bool orders = true;               // gives the wing orders (F5 attack my target, F6 cover me)
   int width = 1280, height = 720;   // the window it looks at
 };

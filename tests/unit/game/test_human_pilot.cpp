@@ -1,6 +1,6 @@
 // The human-like test pilot (human_pilot.h, mission_flight.h): it reads the HUD as drawn, acts
 // through LiveInput, and its figures on the duel, the skirmish and the arena at normal stay
-// within wide bounds, while a pilot that never fires wins nothing. The bounds leave room for
+// within bounds around a player's targets, while a pilot that never fires wins nothing. The bounds leave room for
 // tuning the fight; the full table over more seeds is `arcfire-bench --scene test_pilot`, and per
 // seed here:
 //
@@ -122,10 +122,12 @@ TEST(HumanPilot, FiguresOnTheDuelSkirmishAndArenaStayWithinWideBounds) {
     int difficulty, seeds;
     double lowest_win, highest_win;
   };
+  // At normal a player who sees only the screen wins the skirmish about half the time and the
+  // arena a little less often (the targets are 40–70 % and 30–60 %; a few seeds are noisy).
   const Case cases[] = {{"duel", 0, 3, 0.5, 1.0},
-                        {"duel", 1, 6, 0.0, 0.95},
-                        {"skirmish", 1, 3, 0.0, 0.9},
-                        {"arena", 1, 3, 0.0, 0.9}};
+                        {"duel", 1, 8, 0.15, 0.85},
+                        {"skirmish", 1, 10, 0.3, 0.8},
+                        {"arena", 1, 10, 0.2, 0.7}};
   for (const Case& c : cases) {
     const MissionFigures f =
         mission_figures(data_root(), data_root() + "/levels/" + c.level + ".json", c.difficulty, c.seeds);
@@ -134,7 +136,7 @@ TEST(HumanPilot, FiguresOnTheDuelSkirmishAndArenaStayWithinWideBounds) {
     EXPECT_GE(f.win_rate, c.lowest_win) << what;
     EXPECT_LE(f.win_rate, c.highest_win) << what;
     EXPECT_GT(f.on_screen_share, 0.3) << what;
-    // The arena's melee hides the target behind the own hull on 2–7 % of the near-nose ticks
+    // The melees hide the target behind the own hull on 2–6 % of the near-nose ticks
     // (docs/pilot.md); the bound catches a camera that hides it far more often.
     EXPECT_LT(f.hidden_share, 0.08) << what;
     EXPECT_GT(f.damage_dealt, 150.0) << what;
@@ -172,54 +174,5 @@ TEST(HumanPilot, DISABLED_Report) {
   }
 }
 
-}  // namespace
-}  // namespace arc
-namespace arc {
-namespace {
-// Scratch: deaths per seed.
-TEST(HumanPilot, DISABLED_Trace) {
-  const char* level = std::getenv("PILOT_LEVEL");
-  const int d = std::getenv("PILOT_DIFF") ? std::atoi(std::getenv("PILOT_DIFF")) : 1;
-  const int seeds = std::getenv("PILOT_SEEDS") ? std::atoi(std::getenv("PILOT_SEEDS")) : 6;
-  for (int s = 1; s <= seeds; ++s) {
-    GameOptions o;
-    o.root_dir = data_root();
-    o.difficulty_override = true;
-    o.difficulty = static_cast<Difficulty>(d);
-    o.seed_override = true;
-    o.seed = uint64_t(s);
-    Game g = Game::load_level(data_root() + "/" + (level ? level : "levels/skirmish.json"), o);
-    const World& w = g.world();
-    HumanPilot pilot(w, data_root(), uint64_t(s));
-    std::vector<bool> dead(w.ships.size(), false);
-    InputFrame in;
-    std::vector<Command> keys;
-    std::string line;
-    while (w.outcome == Outcome::Undecided && w.ship(w.player).alive && w.tick < 240 * 60) {
-      pilot.act(w, in, keys);
-      g.step(in, keys);
-      if (std::getenv("PILOT_VERBOSE") && s == 1 && w.tick % 120 == 0) {
-        std::printf("t=%.0f", double(w.tick) * w.dt);
-        for (const Ship& e : w.ships) {
-          if (!e.alive) continue;
-          std::printf(" | %s tgt=%s d=%.0f m=%d sh=%.0f hu=%.0f", e.name.c_str(), e.target ? w.ship(e.target).name.c_str() : "-",
-                      e.target ? glm::length(w.ship(e.target).position - e.position) : 0.0, int(e.ai_state.mode), e.shield, e.hull);
-        }
-        std::printf("\n");
-      }
-      for (size_t i = 0; i < w.ships.size(); ++i) {
-        const Ship& e = w.ships[i];
-        if (!e.alive && e.death_tick >= 0 && !dead[i]) {
-          dead[i] = true;
-          char b[160];
-          std::snprintf(b, sizeof b, " %.0f:%s<-%s", double(w.tick) * w.dt, e.name.c_str(),
-                        e.last_attacker ? w.ship(e.last_attacker).name.c_str() : "?");
-          line += b;
-        }
-      }
-    }
-    std::printf("seed %d %s%s\n", s, w.outcome == Outcome::Victory ? "WON" : "lost", line.c_str());
-  }
-}
 }  // namespace
 }  // namespace arc
