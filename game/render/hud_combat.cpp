@@ -90,50 +90,57 @@ void edge_glow(HudLayer& h, glm::dvec2 c, glm::dvec2 dir, double canvas_w, doubl
   }
 }
 
-void damage_directions(const World& w, const Ship& me, const Projector& pr, const HudRules& rules, double alpha,
-                       double canvas_w, double canvas_h, HudLayer& h) {
+void damage_directions(const ThreatCues& t, glm::dvec2 c, double canvas_w, double canvas_h, HudLayer& h) {
+  for (const ThreatCue& a : t.attackers) {
+    // An attacker in view has its own marks; the ring points to the ones out of view.
+    if (!a.in_view) ring_wedge(h, c, 0.17 * canvas_h, a.dir, faded(kDamageRed, a.strength));
+    edge_glow(h, c, a.dir, canvas_w, canvas_h, a.strength);
+  }
+}
+
+void missile_warning(const World& w, const ThreatCues& t, glm::dvec2 c, double canvas_h, HudLayer& h) {
+  for (const glm::dvec2& dir : t.missiles) {
+    const double r = 0.17 * canvas_h + 22.0;
+    const glm::dvec2 at = c + dir * r, side(-dir.y, dir.x);
+    line(h, at.x + side.x * 8.0 - dir.x * 8.0, at.y + side.y * 8.0 - dir.y * 8.0, at.x, at.y, kHudYellow, 3.0f);
+    line(h, at.x - side.x * 8.0 - dir.x * 8.0, at.y - side.y * 8.0 - dir.y * 8.0, at.x, at.y, kHudYellow, 3.0f);
+  }
+  if (t.missile_m < 0) return;
+  const bool lit = int64_t(double(w.tick) * w.dt * 6.0) % 2 == 0;  // three blinks a second
+  centred_text(h, c.x, c.y - 0.25 * canvas_h, 1.6, lit ? kHudYellow : faded(kHudYellow, 0.35),
+               "MISSILE " + fmt("%.0f m", t.missile_m));
+}
+
+}  // namespace
+
+ThreatCues threat_cues(const World& w, const Ship& me, const Projector& pr, const HudRules& rules, double alpha,
+                       double canvas_w, double canvas_h) {
+  ThreatCues t;
   std::vector<double> strength(w.ships.size(), 0.0);  // per attacking ship
   const double since_hit = seconds_since(w, me.last_hit_tick);
   if (me.last_attacker && me.last_attacker != me.id && since_hit < rules.damage_seconds)
     strength[me.last_attacker.index()] = 1.0 - since_hit / rules.damage_seconds;
   for (const Ship& s : w.ships)
     if (s.alive && s.beam_firing && s.beam_target == me.id && w.hostile(me, s)) strength[s.id.index()] = 1.0;
-  const glm::dvec2 c(pr.cx, pr.cy);
   for (const Ship& s : w.ships) {
-    glm::dvec2 dir;
-    const double k = strength[s.id.index()];
+    ThreatCue a;
+    a.strength = strength[s.id.index()];
     const glm::dvec3 at = drawn_position(s, alpha);
-    if (k <= 0.0 || !screen_direction(pr, at, dir)) continue;
-    // An attacker in view has its own marks; the ring points to the ones out of view.
+    if (a.strength <= 0.0 || !screen_direction(pr, at, a.dir)) continue;
     glm::dvec2 px;
-    const bool in_view = pr.project(at, px) && px.x >= 0 && px.x <= canvas_w && px.y >= 0 && px.y <= canvas_h;
-    if (!in_view) ring_wedge(h, c, 0.17 * canvas_h, dir, faded(kDamageRed, k));
-    edge_glow(h, c, dir, canvas_w, canvas_h, k);
+    a.in_view = pr.project(at, px) && px.x >= 0 && px.x <= canvas_w && px.y >= 0 && px.y <= canvas_h;
+    t.attackers.push_back(a);
   }
-}
-
-void missile_warning(const World& w, const Ship& me, const Projector& pr, double canvas_h, HudLayer& h) {
-  double nearest = -1;
-  const glm::dvec2 c(pr.cx, pr.cy);
   for (const Projectile& p : w.projectiles) {
     // A missile chasing a flare no longer threatens.
     if (p.target != me.id || p.kind != SecondaryWeapon::Missile || p.decoy != 0) continue;
     const double d = glm::length(p.position - me.position);
-    nearest = nearest < 0 ? d : std::min(nearest, d);
+    t.missile_m = t.missile_m < 0 ? d : std::min(t.missile_m, d);
     glm::dvec2 dir;
-    if (!screen_direction(pr, p.position, dir)) continue;
-    const double r = 0.17 * canvas_h + 22.0;
-    const glm::dvec2 at = c + dir * r, side(-dir.y, dir.x);
-    line(h, at.x + side.x * 8.0 - dir.x * 8.0, at.y + side.y * 8.0 - dir.y * 8.0, at.x, at.y, kHudYellow, 3.0f);
-    line(h, at.x - side.x * 8.0 - dir.x * 8.0, at.y - side.y * 8.0 - dir.y * 8.0, at.x, at.y, kHudYellow, 3.0f);
+    if (screen_direction(pr, p.position, dir)) t.missiles.push_back(dir);
   }
-  if (nearest < 0) return;
-  const bool lit = int64_t(double(w.tick) * w.dt * 6.0) % 2 == 0;  // three blinks a second
-  centred_text(h, c.x, c.y - 0.25 * canvas_h, 1.6, lit ? kHudYellow : faded(kHudYellow, 0.35),
-               "MISSILE " + fmt("%.0f m", nearest));
+  return t;
 }
-
-}  // namespace
 
 void layout_range_cue(HudLayer& h, glm::dvec2 c, double r, bool in_range, const glm::vec4& col) {
   // Above the brackets: the crosshair sits on the target while aiming, its arms reach 14 below.
@@ -149,8 +156,10 @@ void layout_combat_cues(const World& w, const Ship& me, const Projector& pr, con
                         double canvas_w, double canvas_h, HudLayer& h) {
   glm::dvec2 crosshair(pr.cx, pr.cy);
   pr.project(crosshair_point(me, alpha), crosshair);
-  damage_directions(w, me, pr, rules, alpha, canvas_w, canvas_h, h);
-  missile_warning(w, me, pr, canvas_h, h);
+  const ThreatCues threats = threat_cues(w, me, pr, rules, alpha, canvas_w, canvas_h);
+  const glm::dvec2 centre(pr.cx, pr.cy);
+  damage_directions(threats, centre, canvas_w, canvas_h, h);
+  missile_warning(w, threats, centre, canvas_h, h);
   hit_markers(w, me, rules, crosshair, h);
 }
 

@@ -15,6 +15,9 @@
 //                   newest first, under the objective, each for kill_feed_seconds.
 // Sizes are in canvas units (hud_draw.h).
 #pragma once
+#include <vector>
+#include <glm/vec2.hpp>
+
 #include "game/render/hud_rules.h"
 #include "game/render/screen_projection.h"
 #include "gfx/render_view.h"
@@ -23,6 +26,22 @@ namespace arc {
 
 class World;
 struct Ship;
+
+// The warnings layout_combat_cues draws for `me`, as screen directions from the centre (+y
+// down): each attacker's (strength 1 while its beam is on `me`, fading after its last hit; in
+// view or not), and the missiles homing on `me` with the nearest one's distance (-1: none).
+struct ThreatCue {
+  glm::dvec2 dir{0.0};
+  double strength = 0;
+  bool in_view = false;
+};
+struct ThreatCues {
+  std::vector<ThreatCue> attackers;
+  double missile_m = -1;
+  std::vector<glm::dvec2> missiles;
+};
+ThreatCues threat_cues(const World& w, const Ship& me, const Projector& pr, const HudRules& rules, double alpha,
+                       double canvas_w, double canvas_h);
 
 // Above the target's brackets (centre c, half-size r): "IN RANGE" when the target is within the
 // beam's range (the brackets are drawn bolder then); the distance is under the brackets

@@ -388,6 +388,7 @@ HudPicture hud_picture(const World& w, const CameraView& cam, const HudState& st
   pic.aim = aim_cues(w, me, Projector::of(cam, width, height), alpha, width, height, arrows);
   pic.radar = radar_rect(width, height);
   pic.radar_blips = radar_blips(w, me, state.rules, width, height);
+  pic.threats = threat_cues(w, me, Projector::of(cam, width, height), state.rules, alpha, width, height);
   // To window pixels, as scale_hud() scales the drawn layer.
   const double k = pic.scale;
   pic.aim.crosshair *= k;

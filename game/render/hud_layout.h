@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "game/render/hud_aim.h"
+#include "game/render/hud_combat.h"
 #include "game/render/hud_radar.h"
 #include "game/render/hud_rules.h"
 #include "gfx/render_view.h"
@@ -90,6 +91,7 @@ struct HudPicture {
   AimCues aim;
   HudRect radar{0, 0, 0, 0};
   std::vector<RadarBlip> radar_blips;
+  ThreatCues threats;  // the damage wedges and the missile warning
 };
 HudPicture hud_picture(const World& world, const CameraView& camera, const HudState& state, double alpha, int width,
                        int height);

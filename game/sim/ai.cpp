@@ -71,7 +71,7 @@ bool on_players_tail(const Ship& s, const Ship& t, const glm::dvec3& rel, double
 // the pilot breaks off to the side and gives the player a firing window (AI-versus-AI fights
 // need no such mercy). Returns whether it broke off.
 bool break_off_players_tail(const World& w, Ship& s, const Ship& t, const glm::dvec3& rel, double dist, const Rng& rng) {
-  const AiDifficultyDef& tune = ai_difficulty(w);
+  const AiDifficultyDef& tune = ai_difficulty(w, s);
   AiState& ai = s.ai_state;
   if (!on_players_tail(s, t, rel, dist)) {
     ai.tail_since = -1;
@@ -87,7 +87,7 @@ bool break_off_players_tail(const World& w, Ship& s, const Ship& t, const glm::d
 }
 
 void think(World& w, Ship& s) {
-  const AiDifficultyDef& tune = ai_difficulty(w);
+  const AiDifficultyDef& tune = ai_difficulty(w, s);
   AiState& ai = s.ai_state;
   const Rng rng{w.seed, kAiStream + static_cast<uint64_t>(s.id.index()), static_cast<uint64_t>(w.tick)};
   ai.next_think = w.tick + std::max<int64_t>(1, seconds_to_ticks(w, tune.reaction_s));
@@ -173,9 +173,14 @@ const AiDifficultyDef& ai_difficulty(const World& w) {
   return w.level.ai[static_cast<size_t>(std::clamp(w.difficulty, 0, 2))];
 }
 
+const AiDifficultyDef& ai_difficulty(const World& w, const Ship& s) {
+  const bool ally = w.player && w.ship(w.player).id != s.id && !w.hostile(w.ship(w.player), s);
+  return ally && w.level.ai.allies ? *w.level.ai.allies : ai_difficulty(w);
+}
+
 void drive_ai(World& w, Ship& s) {
   if (w.tick >= s.ai_state.next_think) think(w, s);
-  const AiDifficultyDef& tune = ai_difficulty(w);
+  const AiDifficultyDef& tune = ai_difficulty(w, s);
   AiState& ai = s.ai_state;
   InputFrame c;
   if (const Wingman* m = wingman_of(w, s.id); m && fly_formation(w, s, *m, c)) {

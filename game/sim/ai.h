@@ -6,6 +6,9 @@ namespace arc {
 
 // The World's difficulty row of its level's AI table (assets/settings/ai.json).
 const AiDifficultyDef& ai_difficulty(const World& w);
+// How `s` flies: the player's own side by the table's "allies" row where it has one (the
+// difficulty sets the enemy's skill, not the wing's), every other ship by ai_difficulty(w).
+const AiDifficultyDef& ai_difficulty(const World& w, const Ship& s);
 
 // Stick commands that turn the nose toward a world direction, damped by the current turn rate;
 // the stick goes no further than `stick_limit` (calmer pilots turn more gently).

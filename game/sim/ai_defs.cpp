@@ -13,10 +13,11 @@ AiDifficultyTable load_ai_difficulties(const std::string& root_dir) {
   auto doc = JsonDoc::load_file(data_file(root_dir, "assets/settings/ai.json"));
   JsonObject root(doc, "", &doc->root());
   AiDifficultyTable table;
-  const char* names[] = {"easy", "normal", "hard"};
-  for (size_t i = 0; i < table.size(); ++i) {
+  const char* names[] = {"easy", "normal", "hard", "allies"};
+  for (size_t i = 0; i < 4; ++i) {
+    if (i == 3 && !root.has("allies")) break;
     JsonObject o = root.require_object(names[i]);
-    AiDifficultyDef& d = table[i];
+    AiDifficultyDef& d = i < 3 ? table[i] : table.allies.emplace();
     d.aim_error = o.require_number("aim_error_deg", 0.0, 45.0) * kDeg;
     d.reaction_s = o.require_number("reaction_s", 0.0, 10.0);
     d.aggression = o.require_number("aggression", 0.0, 1.0);

@@ -104,7 +104,7 @@ double target_weight(const World& w, const Ship& chooser, const Ship& candidate)
     hunters += o.alive && o.id != chooser.id && o.team == chooser.team && o.ai_state.target == candidate.id ? 1 : 0;
   bool wingman = false;
   for (const Wingman& m : w.wing) wingman = wingman || m.ship == candidate.id;
-  return (candidate.player ? 1.5 : wingman ? 1.25 : 1.0) * (1.0 + 0.6 * hunters);
+  return (candidate.player ? 2.0 : wingman ? 1.25 : 1.0) * (1.0 + 0.6 * hunters);
 }
 
 bool fly_formation(const World& w, const Ship& s, const Wingman& m, InputFrame& c) {

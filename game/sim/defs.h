@@ -12,6 +12,7 @@
 //   LevelDef level = load_level_def("levels/duel.json", ".");   // also loads the ship classes
 #pragma once
 #include <array>
+#include <optional>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -227,7 +228,14 @@ struct AiDifficultyDef {
   double tail_limit_s = 0;  // seconds on a player's tail before it breaks off; 0 = never
   double tail_break_s = 0;  // how long that break-off lasts
 };
-using AiDifficultyTable = std::array<AiDifficultyDef, 3>;  // easy, normal, hard
+// Easy, normal and hard fly the player's enemies; the optional "allies" row flies the player's
+// own side at every difficulty (without it, allies fly the difficulty's row too).
+struct AiDifficultyTable {
+  std::array<AiDifficultyDef, 3> rows;
+  std::optional<AiDifficultyDef> allies;
+  AiDifficultyDef& operator[](size_t i) { return rows[i]; }
+  const AiDifficultyDef& operator[](size_t i) const { return rows[i]; }
+};
 
 // The optional "mission" block: how the menu lists a level and the briefing before it starts.
 // Menu data only: not simulated, not hashed.

@@ -146,7 +146,7 @@ void defend_against_missiles(World& w, Ship& s) {
     if (!nearest || d < best) nearest = &p, best = d;
   }
   if (!nearest) return;
-  const AiDifficultyDef& tune = ai_difficulty(w);
+  const AiDifficultyDef& tune = ai_difficulty(w, s);
   const double notice = 250.0 + 350.0 * tune.aggression;  // metres: calmer pilots see it later
   if (best > notice) return;
   // Noticing takes the pilot's reaction time on average.

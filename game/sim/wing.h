@@ -36,7 +36,7 @@ ShipId wing_target(const World& w, const Ship& s, const Wingman& m, ShipId fallb
 // tail, or alone among several hostiles. Sets the AI's break-off toward the player.
 bool wing_withdraw(World& w, Ship& s, const Rng& rng);
 // How much farther a hostile counts when an AI pilot picks its target, in levels where the
-// player leads a wing (1 elsewhere): the player by half as much again, and every ship by 0.6
+// player leads a wing (1 elsewhere): the player twice as far, and every ship by 0.6
 // for each pilot of the chooser's side already on it, so the wing meets the enemy first and
 // fights spread instead of a pack hunting one ship.
 double target_weight(const World& w, const Ship& chooser, const Ship& candidate);

@@ -82,6 +82,16 @@ Sight HumanPilot::look(const World& w) const {
   if (!s.flying) return s;
   const Ship& me = w.ship(w.player);
   s.energy = me.cls->energy > 0 ? me.energy / me.cls->energy : 0.0;
+  s.shield = me.cls->shield > 0 ? me.shield / me.cls->shield : 0.0;
+  s.hull = me.hull / me.cls->hull;
+  for (const ThreatCue& a : pic.threats.attackers) {
+    if (a.strength <= s.attack) continue;
+    s.attack = a.strength;
+    s.attack_dir = a.dir;
+    s.attacker_in_view = a.in_view;
+  }
+  s.missile_m = pic.threats.missile_m;
+  if (!pic.threats.missiles.empty()) s.missile_dir = pic.threats.missiles.front();
   s.set_throttle = input_.set_throttle();
   s.crosshair = pic.aim.crosshair;
   s.beam_ring = pic.aim.beam_ring_lit;
@@ -189,8 +199,32 @@ void HumanPilot::choose_keys(const World& w, const Sight& seen) {
   if (set < wanted - 0.03) hold(b.throttle.positive);
   if (set > wanted + 0.03) hold(b.throttle.negative);
   if (seen.target && seen.on_screen && d > 1500 && seen.energy > 0.5) hold(b.afterburner);
-  if (seen.missile_near && w.tick - last_flare_ >= seconds_to_ticks(w, 1.5))
+  const bool missile_close = seen.missile_near || (seen.missile_m >= 0 && seen.missile_m < 500);
+  if (missile_close && w.tick - last_flare_ >= seconds_to_ticks(w, 1.5))
     tap(b.countermeasure), last_flare_ = w.tick;
+}
+
+// A break turn when the missile warning reads under 600 m: hard across the missile's line (its
+// marker's direction turned a quarter) for a second on the afterburner, so it overshoots.
+void HumanPilot::start_break(const World& w, const Sight& seen) {
+  if (!skill_.evades || w.tick < break_until_ || w.tick - last_break_ < seconds_to_ticks(w, 3.0)) return;
+  if (seen.missile_m < 0 || seen.missile_m >= 600) return;
+  break_dir_ = unit_or({-seen.missile_dir.y, seen.missile_dir.x}, {1, 0});
+  last_break_ = w.tick;
+  break_until_ = w.tick + seconds_to_ticks(w, 1.0);
+}
+
+// F5 (attack my target) once the pilot closes on a new target; F6 (cover me) while hunted.
+void HumanPilot::order_wing(const World& w, const Sight& seen) {
+  if (!skill_.orders || w.tick - last_order_ < seconds_to_ticks(w, 2.0)) return;
+  const Ship& me = w.ship(w.player);  // the target panel names the target
+  const uint32_t target = me.target ? uint32_t(me.target.index()) + 1 : 0;
+  const bool hunted = seen.attack > 0.5 && !seen.attacker_in_view && seen.shield < 0.4;
+  if (hunted && w.tick - last_order_ > seconds_to_ticks(w, 8.0)) {
+    tap(bindings_.order_cover), last_order_ = w.tick, ordered_target_ = 0;
+  } else if (target && target != ordered_target_ && seen.on_screen && seen.distance < 1500) {
+    tap(bindings_.order_attack), last_order_ = w.tick, ordered_target_ = target;
+  }
 }
 
 // The beam while the crosshair is on the target in range (or the beam ring lit); a missile
@@ -215,10 +249,14 @@ void HumanPilot::act(const World& w, InputFrame& in, std::vector<Command>& comma
   if (seen.flying && now().flying) {
     // Behind the own hull the target is not seen, but its brackets are drawn over the hull:
     // the hand still pulls toward them (fire() holds).
-    if (seen.target && seen.on_screen) move = track(w, seen);
+    start_break(w, seen);
+    if (w.tick < break_until_) move = sweep_toward(break_dir_) * skill_.hand_speed;
+    else if (seen.target && seen.on_screen) move = track(w, seen);
     else if (seen.target && !seen.on_screen) move = sweep_toward(seen.arrow);
     else if (!seen.target && seen.hostile_blip) move = sweep_toward(radar_direction(seen));
     choose_keys(w, seen);
+    order_wing(w, seen);
+    if (w.tick < break_until_ && seen.energy > 0.15) hold(bindings_.afterburner);
     fire(w, seen);
   }
   moves_.push_back(move);

@@ -11,6 +11,9 @@
 // the default bindings, so the mouse's 0.12°/px, a flick's carry, the quantisation, the set
 // throttle and the target keys are the player's own. What it knows of its own hand's recent
 // moves stands in for the feel of the mouse (the moves it made since what it sees now).
+// Like a player it drops a flare and breaks across a missile's line when the missile warning
+// reads near, and orders its wing: F5 (attack my target) as it closes on each new target, F6
+// (cover me) when the damage cue shows an attacker out of view and its shield is low.
 //
 //   HumanPilot pilot(game.world(), arc::data_root(), /*seed=*/3);
 //   InputFrame in;
@@ -42,6 +45,8 @@ struct HumanSkill {
   double hand_time_s = 0.15;        // a move closes the error it means with this time constant
   double hand_speed = 1.2;          // the fastest hand, in multiples of the ship's full turn rate
   bool fires = true;                // false: never presses a fire button
+  bool evades = true;               // breaks across a missile's line when the warning is near
+  bool orders = true;               // gives the wing orders (F5 attack my target, F6 cover me)
   int width = 1280, height = 720;   // the window it looks at
 };
 
@@ -68,6 +73,15 @@ struct Sight {
   double nearest_hostile_rise = 0;
   double target_blip = -1;      // the target dot's distance from the centre; -1 without one
   bool missile_near = false;    // a missile's dot inside the half-range ring
+  // The damage cue: the strongest attacker's direction on screen (+y down) and strength, and
+  // whether it is in view; the missile warning: the nearest missile's distance (-1: none) and
+  // its marker's direction.
+  double attack = 0;
+  glm::dvec2 attack_dir{0.0};
+  bool attacker_in_view = false;
+  double missile_m = -1;
+  glm::dvec2 missile_dir{0.0};
+  double shield = 0, hull = 0;  // the own SHIELD and HULL bars, 0..1
   double energy = 0;            // the own energy bar, 0..1
   double set_throttle = 0;      // the THR bar
 };
@@ -88,6 +102,8 @@ class HumanPilot {
   glm::dvec2 track(const World& w, const Sight& seen);
   glm::dvec2 sweep_toward(glm::dvec2 screen_dir) const;
   void choose_keys(const World& w, const Sight& seen);
+  void start_break(const World& w, const Sight& seen);
+  void order_wing(const World& w, const Sight& seen);
   void fire(const World& w, const Sight& seen);
   void tap(int code);
   void hold(int code);
@@ -109,6 +125,10 @@ class HumanPilot {
   glm::dvec2 wander_{0.0};
   int64_t last_target_key_ = -1000000, last_missile_ = -1000000, last_flare_ = -1000000;
   int64_t off_screen_since_ = -1;
+  int64_t break_until_ = -1, last_break_ = -1000000;  // a break turn lasts until break_until_
+  glm::dvec2 break_dir_{1, 0};                         // the screen direction it pulls toward
+  uint32_t ordered_target_ = 0;                        // the target an attack order named (index + 1)
+  int64_t last_order_ = -1000000;
 };
 
 }  // namespace arc

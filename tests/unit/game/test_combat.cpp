@@ -341,6 +341,30 @@ TEST(Ai, BreaksOffThePlayersTailOnEasyAndNormal) {
   EXPECT_GT(ai[1].tail_limit_s, 0.0);
 }
 
+// The difficulty sets the enemy's skill: the player's wing and friends fly ai.json's "allies"
+// row at every difficulty, the enemy the difficulty's row.
+TEST(Ai, AlliesFlyTheirOwnRowAtEveryDifficulty) {
+  const AiDifficultyTable ai = load_ai_difficulties(arc::data_root());
+  ASSERT_TRUE(ai.allies.has_value());
+  for (int d = 0; d < 3; ++d) {
+    GameOptions o;
+    o.root_dir = arc::data_root();
+    o.difficulty_override = true;
+    o.difficulty = static_cast<Difficulty>(d);
+    Game g = Game::load_level(arc::data_root() + "/levels/skirmish.json", o);
+    const World& w = g.world();
+    int allies = 0, enemies = 0;
+    for (const Ship& s : w.ships) {
+      if (s.player) continue;
+      const bool ally = !w.hostile(w.ship(w.player), s);
+      (ally ? allies : enemies)++;
+      EXPECT_EQ(ai_difficulty(w, s).aim_error, ally ? ai.allies->aim_error : ai[size_t(d)].aim_error) << s.name << " " << d;
+    }
+    EXPECT_GT(allies, 0);
+    EXPECT_GT(enemies, 0);
+  }
+}
+
 TEST(Ai, HarderDifficultyAimsTighterAndReactsFaster) {
   const AiDifficultyTable ai = load_ai_difficulties(arc::data_root());
   EXPECT_GT(ai[0].aim_error, ai[1].aim_error);

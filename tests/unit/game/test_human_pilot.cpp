@@ -1,6 +1,6 @@
 // The human-like test pilot (human_pilot.h, mission_flight.h): it reads the HUD as drawn, acts
 // through LiveInput, and its figures on the duel, the skirmish and the arena at normal stay
-// within wide bounds, while a pilot that never fires wins nothing. The bounds leave room for
+// within bounds around a player's targets, while a pilot that never fires wins nothing. The bounds leave room for
 // tuning the fight; the full table over more seeds is `arcfire-bench --scene test_pilot`, and per
 // seed here:
 //
@@ -122,10 +122,12 @@ TEST(HumanPilot, FiguresOnTheDuelSkirmishAndArenaStayWithinWideBounds) {
     int difficulty, seeds;
     double lowest_win, highest_win;
   };
+  // At normal a player who sees only the screen wins the skirmish about half the time and the
+  // arena a little less often (the targets are 40–70 % and 30–60 %; a few seeds are noisy).
   const Case cases[] = {{"duel", 0, 3, 0.5, 1.0},
-                        {"duel", 1, 6, 0.0, 0.95},
-                        {"skirmish", 1, 3, 0.0, 0.9},
-                        {"arena", 1, 3, 0.0, 0.9}};
+                        {"duel", 1, 8, 0.15, 0.85},
+                        {"skirmish", 1, 10, 0.3, 0.8},
+                        {"arena", 1, 10, 0.2, 0.7}};
   for (const Case& c : cases) {
     const MissionFigures f =
         mission_figures(data_root(), data_root() + "/levels/" + c.level + ".json", c.difficulty, c.seeds);
@@ -134,7 +136,7 @@ TEST(HumanPilot, FiguresOnTheDuelSkirmishAndArenaStayWithinWideBounds) {
     EXPECT_GE(f.win_rate, c.lowest_win) << what;
     EXPECT_LE(f.win_rate, c.highest_win) << what;
     EXPECT_GT(f.on_screen_share, 0.3) << what;
-    // The arena's melee hides the target behind the own hull on 2–7 % of the near-nose ticks
+    // The melees hide the target behind the own hull on 2–6 % of the near-nose ticks
     // (docs/pilot.md); the bound catches a camera that hides it far more often.
     EXPECT_LT(f.hidden_share, 0.08) << what;
     EXPECT_GT(f.damage_dealt, 150.0) << what;
