@@ -406,6 +406,19 @@ void visit_fields(M& m, V&& v) {
   v("text", m.text, fields::saved, presentation_hash<2>);
 }
 
+// A network match's slot (LevelDef::slots): its ship, and whether a pilot flies it (else the
+// AI does). Set by Game::set_pilots; not in snapshots (the match sets it again after a restore).
+struct PilotSlot {
+  ShipId ship;
+  bool piloted = false;
+};
+
+template <fields::MaybeConst<PilotSlot> P, class V>
+void visit_fields(P& p, V&& v) {
+  v("ship", p.ship, fields::not_saved, state_hash<0>);
+  v("piloted", p.piloted, fields::not_saved, state_hash<1>);
+}
+
 class World {
  public:
   LevelDef level;
@@ -440,6 +453,7 @@ class World {
   std::vector<Wingman> wing;            // the player's wingmen, in level order (empty: no wing)
   std::vector<WaveState> waves;         // one per LevelDef::waves entry; their ships wait, not alive
   std::vector<SimMessage> messages;     // newest last, at most kMaxMessages
+  std::vector<PilotSlot> pilots;        // network matches only (empty: the one player's input)
 
   Ship& ship(ShipId id) { return ships[id.index()]; }
   const Ship& ship(ShipId id) const { return ships[id.index()]; }
@@ -482,6 +496,7 @@ void visit_fields(W& w, V&& v) {
   v("wing", w.wing, fields::saved, state_hash<12>);
   v("waves", w.waves, fields::checked, state_hash<13>);
   v("messages", w.messages, fields::saved, presentation_hash<8>);
+  v("pilots", w.pilots, fields::not_saved, state_hash<21>);  // empty outside network matches
   v("team_names", w.team_names, fields::not_saved, fields::unhashed);    // from the level
   v("model_paths", w.model_paths, fields::not_saved, fields::unhashed);  // from the level
   v("effects", w.effects, fields::not_saved, fields::unhashed);          // the shared library
