@@ -122,6 +122,7 @@ void put(Out& o, const Welcome& p) {
   o.u8(p.slot), o.u8(p.slot_count), o.u8(p.input_delay), o.u8(p.piloted_mask), o.u64(p.seed), o.u32(p.start_tick);
   o.u8(uint8_t(p.names.size()));
   for (const std::string& n : p.names) o.str(n, kMaxNameBytes);
+  o.str(p.level, kMaxTextBytes);
 }
 void put(Out& o, const Reject& p) { o.str(p.reason, kMaxTextBytes); }
 void put(Out& o, const Inputs& p) {
@@ -163,6 +164,7 @@ Packet get_packet(In& in, PacketType type) {
       const int n = in.u8("name count");
       if (n != p.slot_count) in.fail("a name for each slot");
       for (int i = 0; i < n && in.ok(); ++i) p.names.push_back(in.str(kMaxNameBytes, "name"));
+      p.level = in.str(kMaxTextBytes, "level");
       return p;
     }
     case PacketType::Reject: return Reject{in.str(kMaxTextBytes, "reason")};

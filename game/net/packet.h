@@ -45,7 +45,8 @@ struct Hello {
   bool operator==(const Hello&) const = default;
 };
 
-// The host's answer: the pilot's slot and the match it joins (which starts at once).
+// The host's word to a pilot: first on connecting (start_tick 0: the level to check and load),
+// then again when the host launches the match (start_tick 1), with every slot's pilot.
 struct Welcome {
   uint8_t slot = 0;
   uint8_t slot_count = 1;
@@ -54,6 +55,7 @@ struct Welcome {
   uint64_t seed = 0;
   uint32_t start_tick = 0;
   std::vector<std::string> names;  // one per slot ("" for the AI)
+  std::string level;               // as the host names it, relative to the data root
   bool operator==(const Welcome&) const = default;
 };
 

@@ -13,7 +13,6 @@ RollbackSession::RollbackSession(Game game, RollbackConfig config) : game_(std::
   cfg_.max_prediction = std::clamp(cfg_.max_prediction, 1, 60);
   if (cfg_.piloted.empty()) cfg_.piloted.assign(size_t(cfg_.slots), true);
   cfg_.piloted.resize(size_t(cfg_.slots), false);
-  cfg_.piloted[size_t(cfg_.local_slot)] = true;
   known_.resize(size_t(cfg_.slots));
   used_.resize(size_t(cfg_.slots));
   drop_from_.assign(size_t(cfg_.slots), kNever);

@@ -1,24 +1,17 @@
 // tests/unit/net/net_match_harness.cpp — run_match: peers, the star topology and the clock.
 #include "net_match_harness.h"
 
-#include "core/rng.h"
+#include "game/net/scripted_pilot.h"
 
 namespace arc::nettest {
 
-SlotInput scripted_input(int slot, int64_t t) {
-  const uint64_t r = key_hash(77, uint64_t(slot), uint64_t(t / 12), 0);
-  SlotInput in;
-  in.input.pitch = int8_t(int(r & 0xff) % 255 - 127);
-  in.input.yaw = int8_t(int((r >> 8) & 0xff) % 255 - 127);
-  in.input.throttle = int8_t(64 + int((r >> 16) & 0x3f));
-  in.input.buttons = uint16_t((r >> 24) & 0x3);
-  if (t % 97 == 0) in.commands.push_back(Command::TargetNextHostile);
-  return in;
-}
+SlotInput scripted_input(int slot, int64_t t) { return scripted_pilot_input(slot, t); }
 
 MatchResult run_match(const MatchSetup& m) {
   std::vector<NetPeer> peers;
-  const Game start = Game::load_level(m.level, GameOptions{});
+  GameOptions options;
+  options.root_dir = m.root;
+  const Game start = Game::load_level(m.level, options);
   for (int p = 0; p < m.peers; ++p) {
     PeerConfig c;
     c.slots = m.peers;

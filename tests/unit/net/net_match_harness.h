@@ -13,6 +13,7 @@ namespace arc::nettest {
 
 struct MatchSetup {
   std::string level = "levels/duel.json";
+  std::string root = ".";  // the data root (GameOptions::root_dir)
   int peers = 2;
   int ticks = 600;
   int input_delay = 0;

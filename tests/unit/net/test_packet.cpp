@@ -31,7 +31,7 @@ TEST(NetPacket, EveryTypeRoundTrips) {
   s.commands = {Command::TargetNext, Command::Countermeasure};
   in.inputs = {s, SlotInput{}};
   in.first_hash_tick = 80, in.hashes = {0x1234567890abcdefull, 7};
-  Welcome w{1, 2, 3, 3, 42, 0, {"host", "pilot"}};
+  Welcome w{1, 2, 3, 3, 42, 0, {"host", "pilot"}, "levels/duel.json"};
   for (const Packet& p : std::vector<Packet>{Hello{1, 2, 3, "Ace"}, w, Reject{"level differs"}, in,
                                              Ping{0, 1, true, 5}, Drop{2, 100}, Desync{1, 5}, Bye{0, 9}}) {
     std::optional<Decoded> d = round(p);
