@@ -71,6 +71,7 @@ void NetPeer::frame(const SlotInput& local, double now_ms) {
     session_.add_local_input(local);
     session_.advance();
   }
+  session_.settle();  // a frame that did not advance still corrects what arrived
   send_inputs(now_ms);
   compare_hashes();
 }

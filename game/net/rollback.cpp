@@ -121,6 +121,12 @@ void RollbackSession::step_one() {
 }
 
 void RollbackSession::advance() {
+  settle();
+  step_one();
+  ++stats_.ticks;
+}
+
+void RollbackSession::settle() {
   if (pending_ != kNever) {
     const int64_t back = pending_ - 1;  // the state before the first wrong tick
     const size_t i = size_t(back) % ring_.size();
@@ -136,8 +142,6 @@ void RollbackSession::advance() {
       ++stats_.resimulated;
     }
   }
-  step_one();
-  ++stats_.ticks;
 }
 
 }  // namespace arc

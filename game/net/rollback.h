@@ -68,7 +68,9 @@ class RollbackSession {
   int64_t received(int slot) const;
   int64_t confirmed() const;  // every slot's input known up to this tick
   // Ticks up to this one were simulated with real inputs only: their hashes are final.
-  int64_t final_tick() const { return std::min(confirmed(), tick_); }
+  // (A real input that differed from its prediction makes its tick and the later ones wait
+  // for the re-simulation.)
+  int64_t final_tick() const { return std::min({confirmed(), tick_, pending_ - 1}); }
   uint64_t hash_at(int64_t t) const { return hashes_.at(size_t(t)); }
 
   // The next tick is inside the prediction window (its local input may still be missing).
@@ -79,6 +81,8 @@ class RollbackSession {
   std::function<void(Game&, int64_t tick)> after_step;
   // Rolls back if a real input differed from its prediction, then steps one tick.
   void advance();
+  // Only the rollback, when one is due: the present state re-simulated with the inputs known.
+  void settle();
 
   // The inputs a slot flew with, tick 1 on (its known ones; for a dropped slot up to the drop).
   const std::vector<SlotInput>& inputs(int slot) const { return known_[size_t(slot)]; }
