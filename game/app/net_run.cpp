@@ -215,7 +215,7 @@ std::string hello_mismatch(const Hello& h, uint64_t build, uint64_t level, uint6
   return "";
 }
 
-// Long: the host's lobby — pilots connect, are checked and take the next slots until all came.
+// The host's lobby: pilots connect, are checked and take the next slots until all came.
 int host_match(const AppOptions& o) {
   Match m;
   m.level_file = o.level;
@@ -284,7 +284,7 @@ int host_match(const AppOptions& o) {
   return play(o, wire, m, true);
 }
 
-// Long: a pilot's way in — connect, learn the level, show the host what it has, wait for the launch.
+// A pilot's way in: connect, learn the level, show the host what it has, wait for the launch.
 int join_match(const AppOptions& o) {
   std::string where = o.net.join;
   int port = o.net.port;

@@ -1,6 +1,8 @@
 // game/net/rollback.cpp — RollbackSession: inputs by tick, prediction, save, restore, re-simulate.
 #include "game/net/rollback.h"
 
+#include <glm/geometric.hpp>
+
 #include "core/error.h"
 #include "game/sim/world.h"
 
@@ -132,6 +134,8 @@ void RollbackSession::settle() {
     const size_t i = size_t(back) % ring_.size();
     if (ring_tick_[i] != back) throw InputError("net: no kept state at tick " + std::to_string(back) + " to roll back to");
     const int64_t present = tick_;
+    std::vector<glm::dvec3> shown;
+    for (const Ship& ship : game_.world().ships) shown.push_back(ship.position);
     game_.copy_state_from(ring_[i]);
     tick_ = back;
     pending_ = kNever;
@@ -141,6 +145,9 @@ void RollbackSession::settle() {
       step_one();
       ++stats_.resimulated;
     }
+    const auto& ships = game_.world().ships;
+    for (size_t k = 0; k < ships.size() && k < shown.size(); ++k)
+      if (ships[k].alive) stats_.max_correction_m = std::max(stats_.max_correction_m, glm::length(ships[k].position - shown[k]));
   }
 }
 

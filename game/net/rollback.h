@@ -41,6 +41,7 @@ struct RollbackStats {
   uint64_t predicted = 0;        // ticks stepped with at least one predicted input
   uint64_t saves = 0;            // states kept
   int max_depth = 0;             // the deepest rollback in ticks
+  double max_correction_m = 0;   // the farthest a ship jumped when a rollback corrected it
 };
 
 class RollbackSession {

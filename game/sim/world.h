@@ -496,7 +496,7 @@ void visit_fields(W& w, V&& v) {
   v("wing", w.wing, fields::saved, state_hash<12>);
   v("waves", w.waves, fields::checked, state_hash<13>);
   v("messages", w.messages, fields::saved, presentation_hash<8>);
-  v("pilots", w.pilots, fields::not_saved, state_hash<21>);  // empty outside network matches
+  v("pilots", w.pilots, fields::not_saved, state_hash<15>);  // empty outside network matches
   v("team_names", w.team_names, fields::not_saved, fields::unhashed);    // from the level
   v("model_paths", w.model_paths, fields::not_saved, fields::unhashed);  // from the level
   v("effects", w.effects, fields::not_saved, fields::unhashed);          // the shared library

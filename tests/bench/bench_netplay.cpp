@@ -6,6 +6,8 @@
 // and 200 ms round trip (±10 % jitter), with 0 and 5 % loss:
 //   net_resim_share_RTT_LOSS   re-simulated ticks as a share of ticks advanced (both peers)
 //   net_bytes_per_s            bytes a peer sends per second at 60 Hz (100 ms, 5 % loss)
+//   net_max_correction_m       the farthest a ship jumped on a rollback there
+#include <algorithm>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -62,8 +64,12 @@ ARCFIRE_SCENE(netplay) {
       char name[64];
       std::snprintf(name, sizeof name, "net_resim_share_%d_%d", int(rtt), int(loss * 100));
       bench::report_metric(name, advanced > 0 ? resim / advanced : 0.0);
-      if (rtt == 100.0 && loss > 0)
+      if (rtt == 100.0 && loss > 0) {
         bench::report_metric("net_bytes_per_s", r.seconds > 0 ? double(r.counters[1].bytes_out) / r.seconds : 0.0);
+        double jump = 0;
+        for (const RollbackStats& s : r.stats) jump = std::max(jump, s.max_correction_m);
+        bench::report_metric("net_max_correction_m", jump);
+      }
     }
   }
 }

@@ -2,6 +2,7 @@
 // and a host peer takes every packet as if a joined pilot (slot 1) sent it.
 #include <cstdlib>
 
+#include "core/data_root.h"
 #include "fuzz_target.h"
 #include "game/net/net_peer.h"
 #include "game/net/packet.h"
@@ -19,8 +20,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     std::fprintf(stderr, "a refusal needs one line saying why\n");
     std::abort();
   }
-  static arc::NetPeer host(arc::Game::load_level("levels/duel.json", arc::GameOptions{}),
-                           arc::PeerConfig{.slots = 2, .local_slot = 0, .host = true});
+  static arc::NetPeer host = [] {
+    arc::GameOptions options;
+    options.root_dir = arc::data_root();
+    return arc::NetPeer(arc::Game::load_level(arc::data_root() + "/levels/duel.json", options),
+                        arc::PeerConfig{.slots = 2, .local_slot = 0, .host = true});
+  }();
   static double now = 0;
   host.receive(1, data, size, now += 1.0);
   host.frame(arc::SlotInput{}, now);

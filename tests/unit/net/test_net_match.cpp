@@ -1,5 +1,7 @@
 // tests/unit/net/test_net_match.cpp — whole matches over the link simulator: identical hashes
 // under latency and loss, no rollback on a perfect link, a forced desync at its tick, drops.
+#include <algorithm>
+
 #include <gtest/gtest.h>
 
 #include "net_match_harness.h"
@@ -32,10 +34,11 @@ TEST(NetMatch, SameHashesUnderLatencyJitterAndLoss) {
   MatchResult r = run_match(m);  // 100 ms between pilots through the host: 4 × 25 ms
   expect_same_hashes(r, 600);
   uint64_t rollbacks = 0, resim = 0;
-  for (const RollbackStats& s : r.stats) rollbacks += s.rollbacks, resim += s.resimulated;
+  double jump = 0;
+  for (const RollbackStats& s : r.stats) rollbacks += s.rollbacks, resim += s.resimulated, jump = std::max(jump, s.max_correction_m);
   EXPECT_GT(rollbacks, 0u);
-  std::printf("[ figures ] rollbacks %llu resimulated %llu lost %llu\n", (unsigned long long)rollbacks,
-              (unsigned long long)resim, (unsigned long long)r.link.lost);
+  std::printf("[ figures ] rollbacks %llu resimulated %llu lost %llu largest correction %.2f m\n", (unsigned long long)rollbacks,
+              (unsigned long long)resim, (unsigned long long)r.link.lost, jump);
 }
 
 TEST(NetMatch, FourPilotsAgree) {
