@@ -138,6 +138,7 @@ void define_options(CLI::App& app, AppOptions& o, CommandLineText& t) {
   app.add_option("--mod", t.mods,
                  "lay a mod folder over the data (repeatable; later mods over earlier ones); a window without "
                  "--mod uses the mods of the player's settings");
+  define_net_options(app, o.net);
 }
 
 void resolve_preview_options(const CLI::App& app, AppOptions& o) {

@@ -7,6 +7,7 @@
 
 #include "core/settings.h"
 #include "game/app/all_settings.h"
+#include "game/app/net_options.h"
 #include "game/app/run_files.h"
 #include "game/sim/game.h"
 
@@ -47,6 +48,7 @@ struct AppOptions {
   bool dev = false;         // --dev: F1 opens the developer panel whatever the player's settings say
   Settings settings = all_settings();
   GameOptions game;
+  NetOptions net;  // network matches (net_run.h)
   RunFiles files;  // the files named on the command line, read and written (no output may be an input)
 };
 

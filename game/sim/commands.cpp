@@ -49,25 +49,40 @@ void apply_commands(World& w, const std::vector<Command>& commands) {
     if (c == Command::CameraPadlock && w.camera_mode != CameraMode::Fixed)
       w.camera_mode = w.camera_mode == CameraMode::Padlock ? CameraMode::Chase : CameraMode::Padlock;
     if (!w.player || !w.ship(w.player).alive) continue;
-    Ship& p = w.ship(w.player);
-    const ShipId before = p.target;
-    switch (c) {
-      case Command::TargetNext: p.target = next_target(w, p.id, p.target, false); break;
-      case Command::TargetNearest: p.target = nearest_hostile(w, p.id); break;
-      case Command::Countermeasure: drop_flare(w, p); break;
-      case Command::TargetNextHostile: p.target = next_target(w, p.id, p.target, true); break;
-      case Command::SwitchWeapon:
-        if (p.cls->missile.present && p.cls->plasma.present && !p.cls->primary_plasma)
-          p.secondary = p.secondary == SecondaryWeapon::Missile ? SecondaryWeapon::Plasma : SecondaryWeapon::Missile;
-        break;
-      case Command::OrderAttack:
-      case Command::OrderCover:
-      case Command::OrderFormUp:
-      case Command::OrderEngage: order_wing(w, c); break;
-      case Command::TargetSubsystem: cycle_target_part(w, p); break;
-      default: break;
-    }
-    if (p.target != before) p.target_part.clear();
+    apply_ship_command(w, w.ship(w.player), c);
+  }
+}
+
+void apply_ship_command(World& w, Ship& p, Command c) {
+  const ShipId before = p.target;
+  switch (c) {
+    case Command::TargetNext: p.target = next_target(w, p.id, p.target, false); break;
+    case Command::TargetNearest: p.target = nearest_hostile(w, p.id); break;
+    case Command::Countermeasure: drop_flare(w, p); break;
+    case Command::TargetNextHostile: p.target = next_target(w, p.id, p.target, true); break;
+    case Command::SwitchWeapon:
+      if (p.cls->missile.present && p.cls->plasma.present && !p.cls->primary_plasma)
+        p.secondary = p.secondary == SecondaryWeapon::Missile ? SecondaryWeapon::Plasma : SecondaryWeapon::Missile;
+      break;
+    case Command::OrderAttack:
+    case Command::OrderCover:
+    case Command::OrderFormUp:
+    case Command::OrderEngage:
+      if (p.id == w.player) order_wing(w, c);  // the wing follows the level's player only
+      break;
+    case Command::TargetSubsystem: cycle_target_part(w, p); break;
+    default: break;
+  }
+  if (p.target != before) p.target_part.clear();
+}
+
+// Pause and the camera stay local to each peer: a slot's commands steer its own ship only.
+void apply_slot_commands(World& w, const std::vector<SlotInput>& slots) {
+  for (size_t i = 0; i < slots.size() && i < w.pilots.size(); ++i) {
+    if (!w.pilots[i].piloted) continue;
+    Ship& s = w.ship(w.pilots[i].ship);
+    for (Command c : slots[i].commands)
+      if (s.alive) apply_ship_command(w, s, c);
   }
 }
 

@@ -53,6 +53,8 @@ void require_named_file(const JsonValue& v, const std::string& named, const std:
 // One entry of "ships" (or of a wave's "ships"), its class loaded into L; `names` holds every
 // ship name already in L, and the entry's is refused if taken, else added (level_defs.cpp).
 ShipSpawnDef parse_ship_entry(JsonObject& s, LevelDef& L, const std::string& root_dir, std::set<std::string>& names);
+// The optional "slots" list, after "ships" (game/sim/slot_defs.cpp).
+void parse_slots(JsonObject& r, LevelDef& L);
 // The optional "waves" list, after "ships" (game/sim/wave_defs.cpp).
 void parse_waves(JsonObject& r, LevelDef& L, const std::string& root_dir);
 // The optional "training" block (game/sim/training_defs.cpp), read after the ships it names,

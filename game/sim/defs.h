@@ -171,6 +171,13 @@ struct ShipSpawnDef {
   std::string group;  // "group": events name the ships that share it together
 };
 
+// A pilot's place in a network match ("slots"): one ship of "ships"; unpiloted slots fly by AI.
+struct SlotDef {
+  std::string ship;
+  std::string team;  // the ship's
+};
+inline constexpr size_t kMaxLevelSlots = 8;
+
 // A reinforcement wave ("waves"): its ships enter the fight at once when the trigger holds,
 // after `after_seconds`, or when `team` has fewer than `below` ships alive. (wave_defs.cpp)
 struct WaveDef {
@@ -300,6 +307,7 @@ struct LevelDef {
   double splash_radius = 60.0;
   double splash_damage = 40.0;
   std::vector<ShipSpawnDef> ships;
+  std::vector<SlotDef> slots;  // empty: the player's ship is the only slot (slot_defs.cpp)
   std::vector<WaveDef> waves;  // their ships follow `ships` in World::ships, waiting until the wave
   std::vector<PropDef> props;
   std::vector<EffectSpawnDef> effects;

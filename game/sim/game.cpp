@@ -44,6 +44,9 @@ Game& Game::operator=(const Game& o) {
   if (this != &o) world_ = std::make_unique<World>(*o.world_);
   return *this;
 }
+void Game::copy_state_from(const Game& o) {
+  if (this != &o) *world_ = *o.world_;
+}
 Game::Game(Game&&) noexcept = default;
 Game& Game::operator=(Game&&) noexcept = default;
 Game::~Game() = default;
@@ -68,6 +71,34 @@ void Game::step(const InputFrame& input, const std::vector<Command>& commands) {
     if (c != Command::None) cmds.push_back(c);
   ++w.steps;
   step_world(w, input, cmds);
+}
+
+static ShipId ship_named(const World& w, const std::string& name) {
+  for (const Ship& s : w.ships)
+    if (s.name == name) return s.id;
+  return {};
+}
+
+size_t Game::slot_count() const {
+  const World& w = *world_;
+  return !w.level.slots.empty() ? w.level.slots.size() : w.player ? 1 : 0;
+}
+
+void Game::set_pilots(const std::vector<bool>& piloted) {
+  World& w = *world_;
+  w.pilots.clear();
+  for (size_t i = 0; i < slot_count(); ++i) {
+    PilotSlot p;
+    p.ship = w.level.slots.empty() ? w.player : ship_named(w, w.level.slots[i].ship);
+    p.piloted = i < piloted.size() && piloted[i];
+    w.pilots.push_back(p);
+  }
+}
+
+void Game::step_slots(const std::vector<SlotInput>& slots) {
+  World& w = *world_;
+  ++w.steps;
+  step_world(w, InputFrame{}, {}, &slots);
 }
 
 uint64_t Game::tick() const { return static_cast<uint64_t>(world_->tick); }

@@ -55,11 +55,20 @@ class Game {
   static Game load_level(const std::string& level_path, const GameOptions& options, std::shared_ptr<ParticleStore> store);
   Game(const Game&);             // deep copy: the serialization test runs a copy beside the original
   Game& operator=(const Game&);
+  // This game becomes a copy of `other` (a copy of it or of its level), reusing its memory: the
+  // rollback's per-tick save and restore (game/net/rollback.h).
+  void copy_state_from(const Game& other);
   Game(Game&&) noexcept;
   Game& operator=(Game&&) noexcept;
   ~Game();
 
   void step(const InputFrame& input, const std::vector<Command>& commands = {});
+  // Network matches: which of the level's slots (LevelDef::slots; without any, the player's ship
+  // alone) a pilot flies; the others fly by AI. Call before the first step_slots.
+  void set_pilots(const std::vector<bool>& piloted);
+  size_t slot_count() const;  // the level's slots (at least 1 where it has a player)
+  // One tick of a network match: one SlotInput per slot (unpiloted slots' are ignored).
+  void step_slots(const std::vector<SlotInput>& slots);
   uint64_t tick() const;
   double tick_seconds() const;
   bool paused() const;

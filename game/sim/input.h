@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <vector>
 
 namespace arc {
 
@@ -43,6 +44,13 @@ struct InputFrame {
   int8_t strafe_x = 0, strafe_y = 0;     // lateral and vertical thrust
   uint16_t buttons = 0;                  // InputButton bits
   bool operator==(const InputFrame&) const = default;
+};
+
+// One player slot's tick in a network match: its InputFrame and the commands it issued.
+struct SlotInput {
+  InputFrame input;
+  std::vector<Command> commands;
+  bool operator==(const SlotInput&) const = default;
 };
 
 inline int8_t quantise_axis(double v) {

@@ -227,6 +227,7 @@ LevelDef parse_level_doc(std::shared_ptr<const JsonDoc> doc, const std::string& 
   L.objective = r.require_string("objective");
   parse_rules(r, L);
   parse_ships(r, L, root_dir);
+  parse_slots(r, L);
   parse_waves(r, L, root_dir);
   parse_props(r, L, root_dir);
   parse_effects(r, L, fx, root_dir);

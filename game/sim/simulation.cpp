@@ -23,8 +23,24 @@
 
 namespace arc {
 
-void step_world(World& w, const InputFrame& input, const std::vector<Command>& commands) {
+namespace {
+
+// Slot index + 1 of every ship a pilot flies (0: none); empty outside network matches.
+std::vector<uint8_t> piloted_ships(const World& w, const std::vector<SlotInput>* slots) {
+  std::vector<uint8_t> out;
+  if (!slots) return out;
+  out.assign(w.ships.size(), 0);
+  for (size_t i = 0; i < w.pilots.size() && i < slots->size(); ++i)
+    if (w.pilots[i].piloted) out[w.pilots[i].ship.index()] = uint8_t(i + 1);
+  return out;
+}
+
+}  // namespace
+
+void step_world(World& w, const InputFrame& input, const std::vector<Command>& commands,
+                const std::vector<SlotInput>* slots) {
   apply_commands(w, commands);
+  if (slots && !w.paused) apply_slot_commands(w, *slots);
   if (w.paused) return;
   ++w.tick;
   for (Ship& s : w.ships) {
@@ -34,9 +50,13 @@ void step_world(World& w, const InputFrame& input, const std::vector<Command>& c
   if (!w.waves.empty()) update_waves(w);
   if (w.mission) update_events(w);
   if (!w.wing.empty()) update_wing_orders(w);
+  const std::vector<uint8_t> pilot_of = piloted_ships(w, slots);
   for (Ship& s : w.ships) {
     if (!s.alive) continue;
-    if (s.id == w.player && s.ai == AiKind::None) s.controls = input;
+    const int slot = pilot_of.empty() ? 0 : pilot_of[s.id.index()];
+    if (slot > 0) s.controls = (*slots)[slot - 1].input;
+    else if (slots && s.ai == AiKind::None) drive_ai(w, s), defend_against_missiles(w, s);  // a slot nobody flies
+    else if (s.id == w.player && s.ai == AiKind::None) s.controls = input;
     else if (w.mission && fly_order(w, s)) {}  // an event's route or hold order
     else if (s.ai == AiKind::Fighter) drive_ai(w, s), defend_against_missiles(w, s);
     else if (s.ai == AiKind::Gunner) drive_gunner(w, s);

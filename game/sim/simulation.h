@@ -16,6 +16,9 @@ namespace arc {
 
 class World;
 
-void step_world(World& w, const InputFrame& input, const std::vector<Command>& commands);
+// With `slots` (network matches: one per World::pilots), each piloted slot's ship takes its
+// slot's input and commands, an unpiloted one flies by AI, and `input` is not used.
+void step_world(World& w, const InputFrame& input, const std::vector<Command>& commands,
+                const std::vector<SlotInput>* slots = nullptr);
 
 }  // namespace arc

@@ -462,6 +462,19 @@ void visit_fields(B& b, V&& v) {
   v("prev_orientation", b.prev_orientation, fields::saved, presentation_hash<1>);
 }
 
+// A network match's slot (LevelDef::slots): its ship, and whether a pilot flies it (else the
+// AI does). Set by Game::set_pilots; not in snapshots (the match sets it again after a restore).
+struct PilotSlot {
+  ShipId ship;
+  bool piloted = false;
+};
+
+template <fields::MaybeConst<PilotSlot> P, class V>
+void visit_fields(P& p, V&& v) {
+  v("ship", p.ship, fields::not_saved, state_hash<0>);
+  v("piloted", p.piloted, fields::not_saved, state_hash<1>);
+}
+
 }  // namespace arc
 
 #include "game/sim/mission_state.h"  // NOLINT: needs the hash words and reference tags above
@@ -505,6 +518,7 @@ class World {
   // Present only in levels with "objectives" or "events" (game/sim/mission_events.h).
   std::optional<MissionProgress> mission;
   std::vector<BreakUp> breakups;        // capital ships breaking up (empty: none)
+  std::vector<PilotSlot> pilots;        // network matches only (empty: the one player's input)
 
   Ship& ship(ShipId id) { return ships[id.index()]; }
   const Ship& ship(ShipId id) const { return ships[id.index()]; }
@@ -549,6 +563,7 @@ void visit_fields(W& w, V&& v) {
   v("messages", w.messages, fields::saved, presentation_hash<8>);
   v("mission", w.mission, fields::saved, state_hash<15>);  // only in levels with events or objectives
   v("breakups", w.breakups, fields::saved, state_hash<16>, presentation_hash<9>);
+  v("pilots", w.pilots, fields::not_saved, state_hash<17>);  // empty outside network matches
   v("team_names", w.team_names, fields::not_saved, fields::unhashed);    // from the level
   v("model_paths", w.model_paths, fields::not_saved, fields::unhashed);  // from the level
   v("effects", w.effects, fields::not_saved, fields::unhashed);          // the shared library
