@@ -60,8 +60,9 @@ void Menu::fill_quick_page(MenuPage& p) const {
   p.subtitle = "Left/Right: change   Enter on Launch: fight";
   const int blue = 1 + quick_.wingmen + (quick_.capital != "none" && quick_.capital_friendly ? 1 : 0);
   const int red = quick_.enemies + (quick_.capital != "none" && !quick_.capital_friendly ? 1 : 0);
-  p.lines.push_back("Blue: you and " + std::to_string(blue - 1) + " more   Red: " + std::to_string(red) +
-                    (red == 1 ? " ship" : " ships") + "   Destroy every enemy");
+  const std::string allies = blue == 1 ? "you alone" : "you and " + std::to_string(blue - 1) + (blue == 2 ? " ally" : " allies");
+  p.lines.push_back("Blue: " + allies + "   Red: " + std::to_string(red) + (red == 1 ? " ship" : " ships") +
+                    "   Destroy every enemy");
 }
 
 // Enter on a value row steps it on, as Right does.
