@@ -74,7 +74,7 @@ std::vector<MenuRequest> Menu::quick_accept(Item item) {
     launch.generated = text;
     difficulty_ = quick_.difficulty;
     go(MenuScreen::Closed);
-    return {launch};
+    return {{MenuRequest::Kind::SaveQuickBattle}, launch};
   } catch (const InputError& e) {
     message_ = e.what();
     return {};

@@ -41,12 +41,14 @@ int count_team(const LevelDef& l, const std::string& team, const std::string& cl
 }
 
 TEST(QuickBattle, HeaderExample) {
-  QuickClasses classes = quick_classes(kRoot);
-  QuickSetup s;
+  QuickClasses classes = quick_classes(".");
+  QuickSetup s;                 // a Viper and a wingman against four Darts, few asteroids
   s.enemies = 6;
-  const std::string text = quick_level_json(s, classes);
-  LevelDef def = parse_level_def(text, "quick.json", kRoot);
+  const std::string text = quick_level_json(s, classes);        // InputError for a bad setup
+  LevelDef def = parse_level_def(text, "quick.json", ".");      // the ordinary loader
   EXPECT_EQ(count_team(def, "red", "dart"), 6);
+  EXPECT_EQ(count_team(def, "blue", "viper"), 2);
+  EXPECT_FALSE(def.props.empty());
 }
 
 TEST(QuickBattle, ClassesFromTheDataFightersOnly) {
@@ -198,7 +200,9 @@ TEST(QuickBattle, MenuPageChangesRowsAndLaunchCarriesTheLevel) {
     if (describe_page(m.page()).find("> Launch") != std::string::npos) go = run(m, "accept");
     else run(m, "down");
   }
-  ASSERT_EQ(go.size(), 1u);
+  ASSERT_EQ(go.size(), 2u);  // the setup kept, then the launch
+  EXPECT_EQ(go[0].kind, MenuRequest::Kind::SaveQuickBattle);
+  go.erase(go.begin());
   EXPECT_EQ(go[0].kind, MenuRequest::Kind::Launch);
   EXPECT_TRUE(is_quick_level(go[0].level));
   EXPECT_EQ(go[0].level.rfind(dir.path.string(), 0), 0u);
