@@ -92,6 +92,15 @@ TEST(QuickBattle, LevelHasTheCountsClassesAndAsteroidsAsked) {
 
 TEST(QuickBattle, CapitalShipWhenTheDataHasOne) {
   QuickClasses c = quick_classes(kRoot);
+  // Every capital class the data has loads on either side.
+  for (const std::string& capital : c.capitals)
+    for (bool friendly : {false, true}) {
+      QuickSetup with;
+      with.capital = capital;
+      with.capital_friendly = friendly;
+      const LevelDef l = parse_level_def(quick_level_json(with, c), "quick.json", kRoot);
+      EXPECT_EQ(count_team(l, friendly ? "blue" : "red", capital), 1) << capital;
+    }
   QuickSetup s;
   s.capital = "frigate";
   EXPECT_THROW(quick_level_json(s, c), InputError);  // not in the data
@@ -224,6 +233,28 @@ TEST(QuickBattle, MenuPageChangesRowsAndLaunchCarriesTheLevel) {
   std::vector<MenuRequest> retry = run(m, "accept");
   ASSERT_EQ(retry.size(), 1u);
   EXPECT_EQ(retry[0].level, go[0].level);
+}
+
+TEST(QuickBattle, CapitalRowOnlyWhenTheDataHasACapitalClass) {
+  TempDir dir("capital");
+  Menu m = make_menu(dir.path.string());
+  QuickClasses c = quick_classes(kRoot);
+  c.capitals = {};
+  m.set_quick_battle(c, default_quick_setup(c));
+  run(m, "up up accept");
+  EXPECT_EQ(describe_page(m.page()).find("Capital ship"), std::string::npos);
+  c.capitals = {"corvette"};
+  m.set_quick_battle(c, default_quick_setup(c));
+  run(m, "down down down down down");  // ship, wingmen, wing class, enemies, enemy class, capital
+  EXPECT_NE(describe_page(m.page()).find("> Capital ship: < none >"), std::string::npos) << describe_page(m.page());
+  run(m, "right");
+  EXPECT_NE(describe_page(m.page()).find("> Capital ship: < corvette (enemy) >"), std::string::npos);
+  run(m, "right");
+  EXPECT_NE(describe_page(m.page()).find("> Capital ship: < corvette (yours) >"), std::string::npos);
+  EXPECT_EQ(m.quick_setup().capital, "corvette");
+  EXPECT_TRUE(m.quick_setup().capital_friendly);
+  run(m, "right");
+  EXPECT_EQ(m.quick_setup().capital, "none");
 }
 
 TEST(QuickBattle, RecordingCopyBesideTheScript) {
