@@ -78,6 +78,7 @@ const char* menu_screen_name(MenuScreen s) {
     case MenuScreen::Results: return "results";
     case MenuScreen::Pause: return "pause";
     case MenuScreen::Closed: return "closed";
+    case MenuScreen::QuickBattle: return "quick";
   }
   return "?";
 }
@@ -121,7 +122,11 @@ std::vector<const MissionInfo*> Menu::listed() const {
 
 std::vector<Menu::Item> Menu::items() const {
   switch (screen_) {
-    case MenuScreen::Main: return {Item::Play, Item::Effects, Item::Settings, Item::Quit};
+    case MenuScreen::Main:
+      // Quick battle before Quit: the rows above keep their places.
+      if (has_quick_) return {Item::Play, Item::Effects, Item::Settings, Item::QuickBattle, Item::Quit};
+      return {Item::Play, Item::Effects, Item::Settings, Item::Quit};
+    case MenuScreen::QuickBattle: return quick_items();
     case MenuScreen::Missions:
     case MenuScreen::Effects: {
       std::vector<Item> v(listed().size(), screen_ == MenuScreen::Missions ? Item::Mission : Item::Effect);
@@ -195,6 +200,7 @@ std::string Menu::item_label(Item item, int index) const {
     case Item::Next: return "Next mission: " + next_mission(catalog_, chosen_)->title;
     case Item::ToMenu: return "Menu";
     default: {
+      if (const std::string quick = quick_label(item); !quick.empty()) return quick;
       const std::string pause = pause_label(item);
       return pause.empty() ? settings_label(item, index) : pause;
     }
@@ -217,7 +223,7 @@ void Menu::fill_results_page(MenuPage& p) const {
   const MissionResult& r = last_;
   p.title = r.victory ? "VICTORY" : "DEFEAT";
   p.title_tone = r.victory ? 1 : -1;
-  p.subtitle = (m ? m->title : chosen_) + " (" + difficulty_name(difficulty_) + ")";
+  p.subtitle = (m ? m->title : is_quick_level(chosen_) ? "Quick battle" : chosen_) + " (" + difficulty_name(difficulty_) + ")";
   p.lines = {"Time              " + clock_text(r.seconds),
              "Kills             " + std::to_string(r.kills),
              "Damage dealt      " + number_text("%.0f", r.damage_dealt),
@@ -227,6 +233,7 @@ void Menu::fill_results_page(MenuPage& p) const {
              !last_is_best_ ? "Best so far: " + best_text(chosen_)
              : r.victory    ? "New best!"
                             : "Your best try yet (no win so far)"};
+  if (is_quick_level(chosen_)) p.lines.pop_back();  // a generated battle keeps no best
   if (r.primary_total + r.bonus_total == 0) return;
   // Objectives and the medal go above the best-so-far line.
   const std::string medal = medal_name(mission_medal(r));
@@ -255,6 +262,7 @@ MenuPage Menu::page() const {
     case MenuScreen::Keys:
     case MenuScreen::Advanced: fill_settings_page(p); break;
     case MenuScreen::Results: fill_results_page(p); break;
+    case MenuScreen::QuickBattle: fill_quick_page(p); break;
     case MenuScreen::Pause:
       p.title = pause_.outcome.empty() ? "PAUSED" : pause_.outcome;
       p.title_tone = pause_.outcome_tone;
@@ -354,12 +362,22 @@ std::vector<MenuRequest> Menu::accept(Item item, int index) {
       return {{K::Launch, level, difficulty_}};
     }
     case Item::ToMenu: open_main(); return {};
+    case Item::QuickBattle: go(MenuScreen::QuickBattle); return {};
     case Item::Resume:
     case Item::Restart:
     case Item::PauseDifficulty:
     case Item::PauseSound:
     case Item::Volume:
     case Item::MainMenu: return pause_accept(item);
+    case Item::QuickPlayer:
+    case Item::QuickWingmen:
+    case Item::QuickWing:
+    case Item::QuickEnemies:
+    case Item::QuickEnemy:
+    case Item::QuickCapital:
+    case Item::QuickAsteroids:
+    case Item::QuickDifficulty:
+    case Item::QuickLaunch: return quick_accept(item);
     default: return settings_accept(item);
   }
 }
@@ -375,6 +393,14 @@ std::vector<MenuRequest> Menu::adjust(Item item, int step) {
     case Item::PauseDifficulty:
       return {{K::SetDifficulty, "", Difficulty((int(pause_.next) + step + 3) % 3)}};
     case Item::Volume: return {{K::StepVolume, "", Difficulty::Normal, step}};
+    case Item::QuickPlayer:
+    case Item::QuickWingmen:
+    case Item::QuickWing:
+    case Item::QuickEnemies:
+    case Item::QuickEnemy:
+    case Item::QuickCapital:
+    case Item::QuickAsteroids:
+    case Item::QuickDifficulty: return quick_adjust(item, step);
     default: return settings_adjust(item, step);
   }
 }
@@ -391,6 +417,12 @@ std::vector<MenuRequest> Menu::back() {
       break;
     }
     case MenuScreen::Main: break;
+    case MenuScreen::QuickBattle: {
+      go(MenuScreen::Main);
+      const std::vector<Item> rows = items();
+      selection_ = int(std::find(rows.begin(), rows.end(), Item::QuickBattle) - rows.begin());
+      break;
+    }
     default:
       if (!settings_back()) go(MenuScreen::Main);
       break;
@@ -414,6 +446,8 @@ std::vector<MenuRequest> Menu::show_results(const std::string& level, Difficulty
   difficulty_ = d;
   last_ = r;
   message_.clear();
+  last_is_best_ = false;
+  if (is_quick_level(level)) return {};  // a generated battle keeps no best
   last_is_best_ = record_result(files_.progress, progress_key(level, difficulty_name(d)), r);
   if (!last_is_best_) return {};
   return {{MenuRequest::Kind::SaveProgress}};

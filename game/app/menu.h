@@ -26,6 +26,7 @@
 
 #include "game/app/input_bindings.h"
 #include "game/app/mission_catalog.h"
+#include "game/app/quick_battle.h"
 #include "game/app/user_settings.h"
 #include "game/render/menu_layout.h"
 #include "game/sim/game.h"
@@ -55,7 +56,8 @@ MissionResult mission_result(const World& w);
 enum class MenuScreen {
   Main, Missions, Effects, Briefing,
   Settings, Graphics, Sound, Controls, Keys, Advanced,  // Settings and its pages
-  Results, Pause, Closed
+  Results, Pause, Closed,
+  QuickBattle  // game/app/menu_quick.cpp
 };
 const char* menu_screen_name(MenuScreen s);
 
@@ -77,7 +79,8 @@ PauseState pause_state_of(const World& w);
 struct MenuRequest {
   enum class Kind {
     Launch, Quit, SaveSettings, SaveProgress, ApplyBindings,   // main menu, results
-    Resume, Restart, SetDifficulty, ToggleMute, StepVolume, MainMenu  // pause screen
+    Resume, Restart, SetDifficulty, ToggleMute, StepVolume, MainMenu,  // pause screen
+    SaveQuickBattle  // the quick battle setup changed: Menu::quick_setup() to keep
   };
   MenuRequest(Kind k, std::string level_path = {}, Difficulty d = Difficulty::Normal, int step_count = 0)
       : kind(k), level(std::move(level_path)), difficulty(d), steps(step_count) {}
@@ -86,6 +89,8 @@ struct MenuRequest {
   Difficulty difficulty;  // Launch, SetDifficulty (for the next restart)
   std::string ship, loadout;  // Launch: the briefing's choice ("": the level's own)
   int steps;              // StepVolume: tenths of full volume, + louder
+  // Launch of a quick battle: the level text to write at `level` (made if missing) before it starts.
+  std::string generated;
 };
 
 class Menu {
@@ -132,6 +137,9 @@ class Menu {
   const Progress& progress() const { return files_.progress; }
   const Bindings& bindings() const { return bindings_; }
   Difficulty difficulty() const { return difficulty_; }
+  // Offers "Quick battle" on the main menu with these classes, starting from `setup`.
+  void set_quick_battle(QuickClasses classes, QuickSetup setup);
+  const QuickSetup& quick_setup() const { return quick_; }
   // The level whose briefing is on screen ("" on any other screen): what Launch would start.
   std::string briefing_level() const { return screen_ == MenuScreen::Briefing ? chosen_ : ""; }
   // The ships the player may fly (the campaign's unlocks); empty: every ship a level offers.
@@ -185,6 +193,15 @@ class Menu {
   std::vector<MenuRequest> set_user_value(const std::string& key, const std::string& value);
   std::vector<MenuRequest> step_user_number(const std::string& key, int step, double by);
   bool settings_back();
+  // menu_quick.cpp: the quick battle's setup page.
+  std::vector<Item> quick_items() const;
+  std::string quick_label(Item item) const;
+  void fill_quick_page(MenuPage& p) const;
+  std::vector<MenuRequest> quick_accept(Item item);
+  std::vector<MenuRequest> quick_adjust(Item item, int step);
+  QuickClasses quick_classes_;
+  QuickSetup quick_;
+  bool has_quick_ = false;
   std::string machine_;
   std::string device_preset_, device_why_;  // adopt_device_quality()
   int confirm_ = -1;  // the value row whose change waits for a second Enter (or click)

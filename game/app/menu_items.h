@@ -16,7 +16,9 @@ enum class Menu::Item {
   Action, ResetKeys,                                               // key remapping
   DevPanel, RenderKey, ResetRender,                                // advanced
   Retry, Next, ToMenu,                                             // results
-  Resume, Restart, PauseDifficulty, PauseSound, Volume, MainMenu   // pause (and Quit)
+  Resume, Restart, PauseDifficulty, PauseSound, Volume, MainMenu,  // pause (and Quit)
+  QuickBattle, QuickPlayer, QuickWingmen, QuickWing, QuickEnemies,  // quick battle
+  QuickEnemy, QuickCapital, QuickAsteroids, QuickDifficulty, QuickLaunch
 };
 
 }  // namespace arc

@@ -14,6 +14,7 @@
 #include "core/settings.h"
 #include "game/app/frame_renderer.h"
 #include "game/app/key_remap.h"
+#include "game/app/quick_battle_files.h"
 #include "game/sim/game.h"
 #include "game/sim/world.h"
 #include "platform/stop_request.h"
@@ -76,7 +77,9 @@ struct MenuRun {
 
   void carry_out(const std::vector<MenuRequest>& requests) {
     for (const MenuRequest& r : requests) {
+      if (r.kind == MenuRequest::Kind::Launch && !r.generated.empty()) write_generated_level(r.level, r.generated);
       if (r.kind == MenuRequest::Kind::Launch) fight(r);
+      if (r.kind == MenuRequest::Kind::SaveQuickBattle) save_quick_setup(user_config_dir(), menu.quick_setup());
       if (r.kind == MenuRequest::Kind::SaveSettings) save_settings(user_config_dir(), menu.settings());
       if (r.kind == MenuRequest::Kind::SaveProgress) save_progress(user_config_dir(), menu.progress());
     }
@@ -89,7 +92,9 @@ Menu make_menu(const AppOptions& o) {
   Bindings b = load_bindings(data_file(root, "assets/settings/bindings.json"));
   Bindings flown = b;
   apply_user_settings(files.settings, flown);
-  return Menu(load_mission_catalog(root + "/levels", root), files, flown, b, data_file(root, "assets/settings/quality.json"));
+  Menu menu(load_mission_catalog(root + "/levels", root), files, flown, b, data_file(root, "assets/settings/quality.json"));
+  offer_quick_battle(menu, root, files.dir);
+  return menu;
 }
 
 }  // namespace

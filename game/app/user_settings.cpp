@@ -95,19 +95,6 @@ MissionResult parse_result(JsonObject o) {
   return m;
 }
 
-// Copies a bad file to NAME.bak, writes `defaults` in its place; the message for the screen.
-std::string replace_bad_file(const std::string& path, const std::string& defaults, const std::string& error) {
-  std::error_code ec;
-  fs::copy_file(path, path + ".bak", fs::copy_options::overwrite_existing, ec);
-  if (ec) return error + " (could not keep a copy: " + ec.message() + "; the file was left as it is, defaults used)";
-  try {
-    write_file_atomic(path, defaults);
-  } catch (const InputError& e) {
-    return error + " (kept a copy as " + path + ".bak; " + e.what() + ")";
-  }
-  return error + "; kept it as " + path + ".bak and started from defaults";
-}
-
 template <class T, class Parse, class Write>
 T load_or_default(const std::string& path, Parse parse, Write write, std::string& message) {
   if (!input_path_exists(path)) return T{};
@@ -128,6 +115,18 @@ void write_into(const std::string& dir, const char* name, const std::string& tex
 }
 
 }  // namespace
+
+std::string replace_bad_file(const std::string& path, const std::string& defaults, const std::string& error) {
+  std::error_code ec;
+  fs::copy_file(path, path + ".bak", fs::copy_options::overwrite_existing, ec);
+  if (ec) return error + " (could not keep a copy: " + ec.message() + "; the file was left as it is, defaults used)";
+  try {
+    write_file_atomic(path, defaults);
+  } catch (const InputError& e) {
+    return error + " (kept a copy as " + path + ".bak; " + e.what() + ")";
+  }
+  return error + "; kept it as " + path + ".bak and started from defaults";
+}
 
 bool better_result(const MissionResult& a, const MissionResult& than) {
   if (a.victory != than.victory) return a.victory;

@@ -6,6 +6,7 @@
 //                  developer panel's switch, the keys the player remapped (action → key)
 //                  and the mod folders to play with
 //   progress.json  the best result per mission and difficulty
+// (quick_battle.json beside them, the last quick battle setup, is game/app/quick_battle.h's.)
 // Both are written atomically (core/file_writer.h write_file_atomic). A file that does not parse or
 // validate is never lost silently: load_user_files() copies it to NAME.bak, writes the defaults
 // in its place and returns the message the menu shows on screen. No GL: the menu's tests drive
@@ -94,6 +95,9 @@ UserSettings parse_settings(const std::string& text, const std::string& path,
 Progress parse_progress(const std::string& text, const std::string& path);
 std::string settings_json(const UserSettings& s);
 std::string progress_json(const Progress& p);
+// Copies a bad file to NAME.bak and writes `defaults` in its place; the one-line message for the
+// screen (load_user_files and the quick battle setup).
+std::string replace_bad_file(const std::string& path, const std::string& defaults, const std::string& error);
 // Atomic writes into `dir` (made if missing); InputError when it cannot be written.
 void save_settings(const std::string& dir, const UserSettings& s);
 void save_progress(const std::string& dir, const Progress& p);

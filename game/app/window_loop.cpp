@@ -1,5 +1,6 @@
 // The live game in a window: run_window() and WindowSession's frame (set-up, devices, ticks, drawing).
 #include "game/app/key_remap.h"
+#include "game/app/quick_battle_files.h"
 #include "game/app/window_loop.h"
 
 #include <cmath>
@@ -52,6 +53,7 @@ void WindowSession::setup() {
     Bindings defaults = load_bindings(data_file(game_options_.root_dir, "assets/settings/bindings.json"));
     menu_.emplace(load_catalog_with_campaign(game_options_.root_dir), user_, bindings_,
                   defaults, data_file(game_options_.root_dir, "assets/settings/quality.json"));
+    offer_quick_battle(*menu_, game_options_.root_dir, user_.dir);
   } else {
     menu_.emplace(user_);  // the pause screen only
   }

@@ -14,6 +14,7 @@
 #include "core/error.h"
 #include "game/app/device_look.h"
 #include "game/app/menu_input.h"
+#include "game/app/quick_battle_files.h"
 #include "game/app/scene_resources.h"
 #include "game/sim/world.h"
 
@@ -190,7 +191,9 @@ void WindowSession::launch(const std::string& level, Difficulty difficulty, cons
   results_at_ = -1;
   if (!options_.record_path.empty() && mission_running_ && !recording_started_) {
     // As --level would name it: relative to the working folder when the level is inside it.
-    const std::string named = std::filesystem::proximate(level_).string();
+    std::string named = std::filesystem::proximate(level_).string();
+    // A generated quick battle travels with its recording: the script names the copy beside it.
+    if (is_quick_level(level_)) named = std::filesystem::proximate(copy_beside_recording(level_, options_.record_path)).string();
     recorder_ = std::make_unique<SessionRecorder>(options_.record_path, named, *game_);
     recording_started_ = true;
   }
@@ -248,7 +251,11 @@ void WindowSession::carry_out(const std::vector<MenuRequest>& requests) {
   for (const MenuRequest& r : requests) {
     try {
       switch (r.kind) {
-        case K::Launch: launch(r.level, r.difficulty, r.ship, r.loadout); break;
+        case K::Launch:
+          if (!r.generated.empty()) write_generated_level(r.level, r.generated);
+          launch(r.level, r.difficulty, r.ship, r.loadout);
+          break;
+        case K::SaveQuickBattle: save_quick_setup(user_.dir, menu_->quick_setup()); break;
         case K::Quit: window_->request_close(); break;
         case K::SaveSettings:
           save_settings(user_.dir, menu_->settings());

@@ -38,7 +38,7 @@ run_menu "$out/first.log" '
   key Down Down; key Return; key Right; key Right
   key Down Down Down; key Return
   key Return; key v
-  key Escape; key Escape; key Escape; key Down Down Down; key Return' || exit 1
+  key Escape; key Escape; key Escape; key Up; key Return' || exit 1
 settings="$XDG_CONFIG_HOME/arcfire/settings.json"
 [ -s "$settings" ] || { echo "menu_window: no $settings"; cat "$out/first.log"; exit 1; }
 grep -q '"mouse_sensitivity": 0.14' "$settings" || { echo "menu_window: sensitivity not kept"; cat "$settings"; exit 1; }
