@@ -23,7 +23,7 @@ std::vector<MissionInfo> load_mission_catalog(const std::string& levels_dir, con
       if (out[i].category == m.category && out[i].order == m.order && out[i].mod == mod)
         throw InputError(m.order_where + ": 'order' " + std::to_string(m.order) + " is already taken by " +
                          out[i].path + " (" + where[i] + "); allowed: an order no other level of its category has");
-    out.push_back({f, m.title, m.briefing, m.objective, m.order, m.category, mod, ship_choices(L, root_dir),
+    out.push_back({f, m.title, m.briefing, m.objective, m.order, m.category, mod, 0, "", ship_choices(L, root_dir),
                    L.loadout.suggested_ship, L.loadout.present ? loadout_text(L.loadout.suggested) : ""});
     where.push_back(m.order_where);
   }
