@@ -191,6 +191,10 @@ ActionDef parse_action(JsonObject o, const Names& n) {
     a.kind = ActionKind::Radio;
     a.speaker = text_of(o.require("speaker"), kMaxId);
     a.text = text_of(o.require("text"), kMaxText);
+    if (auto voice = o.get("voice")) {
+      a.voice = id_of(*voice);
+      a.where = voice->where() + ": '" + voice->name() + "'";
+    }
   } else if (type == "objective") {
     a.kind = ActionKind::Objective;
     a.objective = n.index(o.require("id"), n.objectives, "objective");
@@ -208,7 +212,9 @@ ActionDef parse_action(JsonObject o, const Names& n) {
     a.victory = o.require("verdict").choice({"victory", "defeat"}) == "victory";
   } else {
     a.kind = ActionKind::Cue;
-    a.cue = id_of(o.require("name"));
+    JsonValue name = o.require("name");
+    a.cue = id_of(name);
+    a.where = name.where() + ": '" + name.name() + "'";
   }
   o.finish();
   return a;
