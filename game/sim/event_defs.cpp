@@ -58,6 +58,13 @@ std::string id_of(const JsonValue& v) {
   return s;
 }
 
+// "file:line:col: 'key.path'", for messages the app gives about the value.
+std::string where_key(const JsonValue& v) {
+  std::string out = v.where();
+  out.append(": '").append(v.name()).append("'");
+  return out;
+}
+
 struct Names {
   const LevelDef& L;
   std::vector<const ShipSpawnDef*> ships;
@@ -193,7 +200,7 @@ ActionDef parse_action(JsonObject o, const Names& n) {
     a.text = text_of(o.require("text"), kMaxText);
     if (auto voice = o.get("voice")) {
       a.voice = id_of(*voice);
-      a.where = voice->where() + ": '" + voice->name() + "'";
+      a.where = where_key(*voice);
     }
   } else if (type == "objective") {
     a.kind = ActionKind::Objective;
@@ -214,7 +221,7 @@ ActionDef parse_action(JsonObject o, const Names& n) {
     a.kind = ActionKind::Cue;
     JsonValue name = o.require("name");
     a.cue = id_of(name);
-    a.where = name.where() + ": '" + name.name() + "'";
+    a.where = where_key(name);
   }
   o.finish();
   return a;
