@@ -8,6 +8,7 @@
 #include "audio/music_def.h"
 #include "audio/sound_library.h"
 #include "core/error.h"
+#include "core/json.h"
 #include "game/sim/world.h"
 
 namespace arc {
@@ -62,6 +63,7 @@ AudioSession::AudioSession(const std::string& sounds_path, const Settings& setti
   const std::string music_path = beside_sounds(sounds_path, "music/music.json");
   MusicLibraryDef music;
   if (!music_path.empty()) music = load_music_library(music_path);
+  for (const SoundDef& s : library.sounds) sound_names_.push_back(s.name);
   for (const SoundDef& s : radio_.sounds) library.sounds.push_back(s);
   subtitles_ = settings.flag("audio.subtitles");
   AudioDesc desc;
@@ -99,7 +101,37 @@ void AudioSession::after_tick(const World& w) {
   for (const SoundEvent& e : events_) engine_->play(sound_cue(e));
   for (const std::string& id : radio_director_.lines(w, events_))
     say(id, id == "missile_six" || id == "mission_won" || id == "mission_lost");
+  mission_audio(w);
   mood_ = director_.mood(w);
+}
+
+// The voices and cues of the mission events that fired this tick, from the level's actions
+// (the replay's ticks fire the same events, so a render speaks the same lines).
+void AudioSession::mission_audio(const World& w) {
+  if (!w.mission) return;
+  if (w.level.path != checked_level_) {
+    check_level(w.level);
+    checked_level_ = w.level.path;
+  }
+  const std::vector<EventDef>& defs = w.level.events.events;
+  for (size_t i = 0; i < defs.size() && i < w.mission->events.size(); ++i) {
+    if (w.mission->events[i].fired_tick != w.tick) continue;
+    for (const ActionDef& a : defs[i].actions) {
+      if (a.kind == ActionKind::Radio && !a.voice.empty()) say(a.voice);
+      if (a.kind == ActionKind::Cue) engine_->play({.sound = a.cue});
+    }
+  }
+}
+
+void AudioSession::check_level(const LevelDef& level) const {
+  for (const EventDef& e : level.events.events)
+    for (const ActionDef& a : e.actions) {
+      if (a.kind == ActionKind::Radio && !a.voice.empty() && !radio_.lines.empty() && !radio_.find(a.voice))
+        throw InputError(a.where + " is \"" + a.voice + "\", no line of assets/radio/lines.json; add it there " +
+                         "(tools/radio/gen_radio.py speaks it) or name one of its ids");
+      if (a.kind == ActionKind::Cue && std::find(sound_names_.begin(), sound_names_.end(), a.cue) == sound_names_.end())
+        throw InputError(a.where + " is \"" + a.cue + "\", no sound of " + path_ + "; allowed: " + join_allowed(sound_names_));
+    }
 }
 
 void AudioSession::frame(const World& w, double seconds) {
@@ -131,6 +163,8 @@ void AudioSession::ui(const std::string& sound) { engine_->play({.sound = sound}
 std::string AudioSession::reload() {
   try {
     SoundLibraryDef library = load_sound_library(path_);
+    sound_names_.clear();
+    for (const SoundDef& s : library.sounds) sound_names_.push_back(s.name);
     for (const SoundDef& s : radio_.sounds) library.sounds.push_back(s);
     engine_->load(library);
     return "";

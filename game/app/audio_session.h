@@ -31,6 +31,7 @@
 namespace arc {
 
 class World;
+struct LevelDef;
 
 // The engine's cue for a game sound event: explosions louder and deeper for bigger blasts,
 // the engine hum's gain and pitch by throttle.
@@ -64,6 +65,10 @@ class AudioSession {
   // The line being spoken, for the HUD (none when audio.subtitles is off).
   std::optional<Subtitle> subtitle() const;
   const RadioLibrary& radio() const { return radio_; }
+  // Throws InputError, positioned in the level file, where a radio action's "voice" names no
+  // line of the radio manifest or a "cue" action names no sound of the sound file. after_tick
+  // checks each level once, when it first meets it.
+  void check_level(const LevelDef& level) const;
 
   AudioEngine& engine() { return *engine_; }
   const std::vector<SoundEvent>& last_events() const { return events_; }
@@ -79,6 +84,9 @@ class AudioSession {
   RadioLibrary radio_;
   RadioDirector radio_director_;
   RadioQueue radio_queue_;
+  std::vector<std::string> sound_names_;  // of the sound file, for the levels' cues
+  std::string checked_level_;             // the path of the level check_level passed last
+  void mission_audio(const World& w);
   const char* mood_ = "menu";
   bool menu_ = false, subtitles_ = true;
   bool ticked_ = false;  // a tick was stepped since the last frame()

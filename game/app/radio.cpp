@@ -11,8 +11,8 @@
 namespace arc {
 namespace {
 
-constexpr double kRadioDuck = 12;       // dB the fight drops under a line
-constexpr double kRadioGain = 1.6;      // speech is sparse: lifted over the fight, the limiter takes its peaks
+constexpr double kRadioDuck = 15;       // dB the fight drops under a line
+constexpr double kRadioGain = 2.5;      // speech is sparse: lifted over the fight, the limiter takes its peaks
 constexpr double kMissileCallGap = 10;  // seconds between two "missile on your six"
 constexpr double kKillCallGap = 4;
 
@@ -47,9 +47,13 @@ RadioLibrary load_radio_library(const std::string& path) {
   JsonObject root = JsonValue(doc, "", &doc->root()).object();
   JsonObject speakers = root.require_object("speakers");
   std::vector<std::string> names;
+  std::vector<double> gains;  // a speaker's level in the mix; chatter sits under mission lines
   for (auto it = speakers.raw().begin(); it != speakers.raw().end(); ++it) {
     names.push_back(it.key());
-    speakers.get(it.key());  // voice parameters are the generator's
+    JsonObject sp = speakers.get(it.key())->object();
+    gains.push_back(sp.number("gain", 1.0, 0.1, 2.0));
+    sp.allow({"voice", "pitch", "speed", "doc"});  // voice parameters are the generator's
+    sp.finish();
   }
   speakers.finish();
   RadioLibrary lib;
@@ -73,7 +77,7 @@ RadioLibrary load_radio_library(const std::string& path) {
     s.positional = false;
     s.priority = 99;
     s.duck = kRadioDuck;
-    s.gain = kRadioGain;
+    s.gain = kRadioGain * gains[size_t(std::find(names.begin(), names.end(), l.speaker) - names.begin())];
     s.duck_hold = l.seconds;
     s.duration = l.seconds;
     s.pcm = std::move(a.samples);

@@ -58,6 +58,13 @@ std::string id_of(const JsonValue& v) {
   return s;
 }
 
+// "file:line:col: 'key.path'", for messages the app gives about the value.
+std::string where_key(const JsonValue& v) {
+  std::string out = v.where();
+  out.append(": '").append(v.name()).append("'");
+  return out;
+}
+
 struct Names {
   const LevelDef& L;
   std::vector<const ShipSpawnDef*> ships;
@@ -191,6 +198,10 @@ ActionDef parse_action(JsonObject o, const Names& n) {
     a.kind = ActionKind::Radio;
     a.speaker = text_of(o.require("speaker"), kMaxId);
     a.text = text_of(o.require("text"), kMaxText);
+    if (auto voice = o.get("voice")) {
+      a.voice = id_of(*voice);
+      a.where = where_key(*voice);
+    }
   } else if (type == "objective") {
     a.kind = ActionKind::Objective;
     a.objective = n.index(o.require("id"), n.objectives, "objective");
@@ -208,7 +219,9 @@ ActionDef parse_action(JsonObject o, const Names& n) {
     a.victory = o.require("verdict").choice({"victory", "defeat"}) == "victory";
   } else {
     a.kind = ActionKind::Cue;
-    a.cue = id_of(o.require("name"));
+    JsonValue name = o.require("name");
+    a.cue = id_of(name);
+    a.where = where_key(name);
   }
   o.finish();
   return a;

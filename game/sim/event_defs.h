@@ -58,6 +58,8 @@ struct ActionDef {
   bool announce = false;      // spawn: post "Reinforcements: N hostile ships", as a wave does
   std::string speaker;        // radio
   std::string text;           // message, radio
+  std::string voice;          // radio: a line id of assets/radio/lines.json ("" for none), checked by the app
+  std::string where;          // radio's voice, cue: "file:line:col: 'key.path'", for the app's messages
   size_t objective = 0;
   ObjectiveStatus status = ObjectiveStatus::Done;
   OrderKind order = OrderKind::Engage;

@@ -23,11 +23,15 @@ def make_line(line_id, line, speaker, out_dir, tmp):
     subprocess.run(["espeak-ng", "-v", speaker["voice"], "-p", str(speaker["pitch"]), "-s", str(speaker["speed"]),
                     "-w", raw, line["text"]], check=True)
     voice = os.path.join(tmp, line_id + "_voice.wav")
-    # The radio: a narrow band, a little drive for the grit, a fast compressor with a 4 ms look-ahead
-    # for an even, dense level (a crest near 10 dB, so the line carries over the fight).
-    sox(raw, "-r", str(RATE), "-c", "1", "-b", "16", voice, "highpass", "300", "lowpass", "3400",
-        "overdrive", "10", "20", "gain", "-6", "compand", "0.002,0.08", "6:-50,-30,-30,-10,-10,-6", "-3", "-90", "0.004",
-        "highpass", "300", "lowpass", "3400", "gain", "-n", "-1")
+    # The radio: espeak's silence trimmed off both ends, a narrow band, a fast leveller, drive for
+    # the grit, then a look-ahead limiter, so the speech's RMS sits within about 10 dB of its peak
+    # and a line carries over a ducked fight.
+    sox(raw, "-r", str(RATE), "-c", "1", "-b", "16", voice,
+        "silence", "1", "0.02", "-45d", "reverse", "silence", "1", "0.02", "-45d", "reverse",
+        "highpass", "300", "lowpass", "3400",
+        "compand", "0.001,0.02", "6:-60,-40,-40,-6,0,-3", "-4", "-90", "0.002",
+        "overdrive", "20", "20", "gain", "-3", "highpass", "300", "lowpass", "3400", "rate", str(RATE),
+        "compand", "0,0.03", "-20,-20,0,-20", "0", "-90", "0.003", "gain", "-n", "-1")
     squelch_in = os.path.join(tmp, line_id + "_in.wav")
     sox("-n", "-r", str(RATE), "-c", "1", "-b", "16", squelch_in, "synth", "0.07", "whitenoise",
         "bandpass", "1800", "1.5q", "fade", "0", "0.07", "0.05", "gain", "-14")
