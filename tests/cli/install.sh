@@ -18,7 +18,7 @@ for f in bin/arcfire lib/arcfire/libarcfire_image_codec.so share/applications/ar
   [ -s "$prefix/$f" ] || fail "missing $prefix/$f"
 done
 # Only what the game reads: no tests, tools or format notes in the data.
-extra="$(cd "$prefix" && find . -type f | grep -Ev '^\./(bin/arcfire|lib/arcfire/libarcfire_image_codec\.so|share/applications/arcfire\.desktop|share/icons/hicolor/256x256/apps/arcfire\.png|share/doc/arcfire/README\.md|share/arcfire/(assets|levels|shaders)/.*\.(json|glb|png|vert|frag))$')"
+extra="$(cd "$prefix" && find . -type f | grep -Ev '^\./(bin/arcfire|lib/arcfire/libarcfire_image_codec\.so|share/applications/arcfire\.desktop|share/icons/hicolor/256x256/apps/arcfire\.png|share/doc/arcfire/README\.md|share/arcfire/(assets|levels|shaders)/.*\.(json|glb|png|wav|vert|frag))$')"
 [ -z "$extra" ] || fail "installed files the game does not read: $extra"
 grep -q '^Exec=arcfire$' "$prefix/share/applications/arcfire.desktop" || fail "the desktop entry does not start arcfire"
 grep -q '^Icon=arcfire$' "$prefix/share/applications/arcfire.desktop" || fail "the desktop entry names no arcfire icon"

@@ -82,7 +82,7 @@ TEST(Preview, BackdropsAreSpaceTheWallOrAModel) {
   EXPECT_EQ(check_preview_backdrop("space", kRoot), "");
   EXPECT_EQ(check_preview_backdrop("viper", kRoot), "");
   EXPECT_EQ(check_preview_backdrop("moon", kRoot),
-            "--backdrop: must be space, wall, asteroid, dart, viper or warden, got 'moon'");
+            "--backdrop: must be space, wall, asteroid, corvette, dart, viper or warden, got 'moon'");
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include "audio/audio_settings.h"
 #include "core/error.h"
 #include "game/app/all_settings.h"
+#include "game/net/net_settings.h"
 #include "game/sim/sim_settings.h"
 #include "gfx/render_settings.h"
 #include "particles/particle_settings.h"
@@ -43,6 +44,7 @@ TEST(AllSettings, EachModuleRegistersItsOwnKeys) {
   } modules[] = {{register_render_settings, "render.", 20},
                  {register_particle_settings, "particles.", 3},
                  {register_sim_settings, "sim.", 3},
+                 {register_net_settings, "net.", 5},
                  {register_audio_settings, "audio.", 11}};
   std::vector<std::string> assembled;
   for (const auto& m : modules) {

@@ -142,9 +142,10 @@ TEST(Balance, IdlePlayerHasTimeToReactOnNormal) {
   }
 }
 
-// Mean survival of an idle duel player: clearly longest on easy. Normal and hard both kill a
-// sitting duck in about the same time (arrival plus the weapons' time to kill); how hard
-// they are to beat shows against a pilot who fights back (test_pilot_duel.cpp).
+// Mean survival of an idle duel player: longest on easy. Hard kills a sitting duck in about
+// the arrival plus the weapons' time to kill; normal's wider aim error (assets/settings/ai.json)
+// takes longer, yet well short of easy. How hard each is to beat shows against a pilot who
+// fights back (test_pilot_duel.cpp, test_human_pilot.cpp).
 TEST(Balance, EasyGivesAnIdleDuelPlayerTheLongest) {
   double mean[3] = {0, 0, 0};
   for (int d = 0; d < 3; ++d) {
@@ -153,9 +154,10 @@ TEST(Balance, EasyGivesAnIdleDuelPlayerTheLongest) {
       mean[d] += survived(st.player_death_s, st) / std::size(kSeeds);
     }
   }
-  EXPECT_GT(mean[0], 1.25 * mean[1]) << mean[0] << " " << mean[1];
+  EXPECT_GT(mean[0], 1.15 * mean[1]) << mean[0] << " " << mean[1];
   EXPECT_GT(mean[0], 1.25 * mean[2]) << mean[0] << " " << mean[2];
-  EXPECT_LT(mean[1], 25.0);
+  EXPECT_GT(mean[1], mean[2]) << mean[1] << " " << mean[2];
+  EXPECT_LT(mean[1], 40.0);
   EXPECT_LT(mean[2], 25.0);
 }
 

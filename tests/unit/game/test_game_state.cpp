@@ -149,12 +149,14 @@ TEST(Targeting, NearestHostileNextHostileAndNext) {
   EXPECT_EQ(w.ship(w.player).target, w.ships[3].id);  // Red 1, not a wingman, who is closer
   g.step(InputFrame{}, {Command::TargetNextHostile});
   EXPECT_EQ(w.ship(w.player).target, w.ships[4].id);
+  // Next goes round every live ship, the wingmen included; the waiting waves (5 to 8) are
+  // skipped, so after Red 2 it comes round to Alpha 2.
   g.step(InputFrame{}, {Command::TargetNext});
-  EXPECT_EQ(w.ship(w.player).target, w.ships[5].id);
-  g.step(InputFrame{}, {Command::TargetNext});
-  g.step(InputFrame{}, {Command::TargetNext});
-  // Next goes round every live ship, the wingmen included; the waiting wave (7, 8) is skipped.
   EXPECT_EQ(w.ship(w.player).target, w.ships[1].id);
+  g.step(InputFrame{}, {Command::TargetNext});
+  EXPECT_EQ(w.ship(w.player).target, w.ships[2].id);
+  g.step(InputFrame{}, {Command::TargetNext});
+  EXPECT_EQ(w.ship(w.player).target, w.ships[3].id);
 }
 
 TEST(Summary, HasShipsTickWinnerAndParticleCounts) {
