@@ -12,9 +12,12 @@
 // rollback undoes are never played twice: only the corrected world is ever presented.
 //
 // Example, compiled as NetRollback.Example in tests/unit/net/test_rollback.cpp:
-//   RollbackSession s(Game::load_level("levels/duel.json", {}), {2, /*local*/0, /*delay*/0});
-//   s.add_local_input(SlotInput{});  s.advance();          // tick 1, slot 1 predicted
-//   s.add_remote_input(1, 1, SlotInput{{0, 0, 0, 127}});   // differs: advance() rolls back
+//   RollbackSession s(Game::load_level("levels/duel.json", {}), {2, 0, 0});
+//   s.add_local_input(SlotInput{});
+//   s.advance();
+//   SlotInput fast;
+//   fast.input.throttle = 127;
+//   EXPECT_TRUE(s.add_remote_input(1, 1, fast));
 #pragma once
 #include <algorithm>
 #include <cstdint>

@@ -15,9 +15,11 @@ std::optional<Decoded> round(const Packet& p) {
 }
 
 TEST(NetPacket, RoundTrip) {
-  Packet p = Ping{1, 0, false, 1234};
-  std::optional<Decoded> d = round(p);
-  ASSERT_TRUE(d);
+  net::Packet p = net::Ping{1, 0, false, 1234};
+  std::vector<uint8_t> bytes = net::encode(p, /*seq=*/7);
+  std::string why;
+  std::optional<net::Decoded> d = net::decode(bytes.data(), bytes.size(), &why);  // d->packet == p
+  ASSERT_TRUE(d) << why;
   EXPECT_EQ(d->seq, 7u);
   EXPECT_EQ(d->packet, p);
 }
