@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include "game/render/chase_framing.h"
 #include "game/render/own_view.h"
 #include "game/render/screen_projection.h"
 #include "game/render/team_colors.h"
@@ -53,6 +54,12 @@ CameraView frame_camera(const World& w, double alpha, const CameraSettings& cs) 
   } else {
     cam.position = lerp_pos(w.prev_camera.position, w.camera.position, alpha);
     cam.orientation = glm::normalize(glm::slerp(w.prev_camera.orientation, w.camera.orientation, alpha));
+    if (mode == CameraMode::Chase) {
+      // The view lifts over the own hull when it would hide a hostile ahead (chase_framing.h).
+      const Framing f = chase_framing(w, cam.position, cam.orientation, alpha);
+      cam.position += cam.orientation * glm::dvec3(0, f.rise_m, 0);
+      cam.orientation = glm::normalize(cam.orientation * glm::angleAxis(-f.tilt_rad, glm::dvec3(1, 0, 0)));
+    }
   }
   return cam;
 }

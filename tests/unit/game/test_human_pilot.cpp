@@ -114,7 +114,7 @@ void print(const MissionFigures& f) {
 }
 
 // What any fair fight gives a player who sees only the screen: the target mostly on screen and
-// rarely behind the own hull, damage dealt in every mission, and neither a sure win nor (on
+// seldom behind the own hull, damage dealt in every mission, and neither a sure win nor (on
 // easy) a sure loss. A pilot that never fires deals nothing and wins nothing.
 TEST(HumanPilot, FiguresOnTheDuelSkirmishAndArenaStayWithinWideBounds) {
   struct Case {
@@ -124,10 +124,14 @@ TEST(HumanPilot, FiguresOnTheDuelSkirmishAndArenaStayWithinWideBounds) {
   };
   // At normal a player who sees only the screen wins the skirmish about half the time and the
   // arena a little less often (the targets are 40–70 % and 30–60 %; a few seeds are noisy).
+  // Hard is hard but winnable: about one fight in five (10–35 %) in every mission.
   const Case cases[] = {{"duel", 0, 3, 0.5, 1.0},
                         {"duel", 1, 8, 0.15, 0.85},
                         {"skirmish", 1, 10, 0.3, 0.8},
-                        {"arena", 1, 10, 0.2, 0.7}};
+                        {"arena", 1, 10, 0.2, 0.7},
+                        {"duel", 2, 12, 0.05, 0.5},
+                        {"skirmish", 2, 12, 0.05, 0.5},
+                        {"arena", 2, 12, 0.05, 0.5}};
   for (const Case& c : cases) {
     const MissionFigures f =
         mission_figures(data_root(), data_root() + "/levels/" + c.level + ".json", c.difficulty, c.seeds);
@@ -136,9 +140,9 @@ TEST(HumanPilot, FiguresOnTheDuelSkirmishAndArenaStayWithinWideBounds) {
     EXPECT_GE(f.win_rate, c.lowest_win) << what;
     EXPECT_LE(f.win_rate, c.highest_win) << what;
     EXPECT_GT(f.on_screen_share, 0.3) << what;
-    // The melees hide the target behind the own hull on 2–6 % of the near-nose ticks
-    // (docs/pilot.md); the bound catches a camera that hides it far more often.
-    EXPECT_LT(f.hidden_share, 0.08) << what;
+    // The chase view lifts over the own hull when it would hide a hostile ahead
+    // (game/render/chase_framing.h): the target near the nose is hidden on under 2 % of ticks.
+    EXPECT_LT(f.hidden_share, 0.02) << what;
     EXPECT_GT(f.damage_dealt, 150.0) << what;
     EXPECT_GT(f.beam_accuracy, 0.05) << what;
     EXPECT_GT(f.missile_accuracy, 0.1) << what;
