@@ -79,9 +79,14 @@ void add_campaign(std::vector<MissionInfo>& catalog, const Campaign& c, const st
     for (MissionInfo& m : catalog)
       if (same_file(m.path, file)) known = &m;
     if (!known) {
-      const MissionDef d = load_level_def(file, root_dir).mission;
+      const LevelDef L = load_level_def(file, root_dir);
+      const MissionDef& d = L.mission;
       catalog.push_back({file, d.title, d.briefing, d.objective, last_order + 1 + int(i), MissionCategory::Mission, ""});
       known = &catalog.back();
+      // The briefing's ship and loadout choice, as the catalog gives its own levels.
+      known->ships = ship_choices(L, root_dir);
+      if (L.loadout.present) known->suggested_ship = L.loadout.suggested_ship;
+      if (L.loadout.present) known->suggested_loadout = loadout_text(L.loadout.suggested);
     }
     known->campaign = int(i) + 1;
     known->chapter = c.missions[i].chapter;
