@@ -13,6 +13,7 @@
 #include "game/render/camera_settings.h"
 #include "game/render/hud_layout.h"
 #include "game/render/hud_objectives.h"
+#include "game/render/hud_training.h"
 #include "game/render/render_view_builder.h"
 #include "game/sim/capital.h"
 #include "game/sim/world.h"
@@ -116,6 +117,7 @@ Sight HumanPilot::look(const World& w) const {
       if (w.mission->objectives[i].revealed && w.mission->objectives[i].status == ObjectiveStatus::Pending)
         s.objectives.push_back(objective_row(w, i));
   s.torpedo = me.secondary == SecondaryWeapon::Torpedo && me.cls->torpedo.present;
+  if (training_prompt_shown(w)) s.prompt = w.level.training.steps[size_t(w.training->step)].prompt;
   if (t.selected) {
     const Ship& ts = w.ship(me.target);
     s.target_name = ts.name;
@@ -211,7 +213,9 @@ void HumanPilot::choose_keys(const World& w, const Sight& seen) {
   }
   const double d = seen.distance;
   const bool nav = follow_nav(seen);
-  const double wanted = nav ? 1.0 : !seen.target ? 0.5 : d > 800 ? 1.0 : d > 400 ? 0.8 : d > 150 ? 0.55 : 0.35;
+  const bool training_speed = seen.prompt.find("Throttle up") != std::string::npos ||
+                              seen.prompt.find("Afterburner") != std::string::npos;
+  const double wanted = training_speed ? 1.0 : nav ? 1.0 : !seen.target ? 0.5 : d > 800 ? 1.0 : d > 400 ? 0.8 : d > 150 ? 0.55 : 0.35;
   // The THR bar moves while the key is down; the hand lets go at the mark.
   const double set = input_.set_throttle();
   if (set < wanted - 0.03) hold(b.throttle.positive);
@@ -288,6 +292,22 @@ void HumanPilot::pick_subsystem(const World& w, const Sight& seen) {
   tap(bindings_.target_subsystem), last_part_key_ = w.tick;
 }
 
+// What a training prompt asks for, read off its words: a turn, the throttle or the afterburner
+// held, a flare, an order to the wingman; the rest (target, beam, missile) is flying as usual.
+void HumanPilot::train(const World& w, const Sight& seen, glm::dvec2& move) {
+  const std::string& p = seen.prompt;
+  if (p.find("Turn the ship") != std::string::npos) move = sweep_toward({1, 0});
+  const bool burner = p.find("Afterburner") != std::string::npos;
+  if (burner || p.find("Throttle up") != std::string::npos) {
+    if (input_.set_throttle() < 0.97) hold(bindings_.throttle.positive);
+    if (burner && seen.energy > 0.2) hold(bindings_.afterburner);
+  }
+  if (p.find("drop a flare") != std::string::npos && w.tick - last_flare_ >= seconds_to_ticks(w, 1.0))
+    tap(bindings_.countermeasure), last_flare_ = w.tick;
+  if (p.find("wingman has joined") != std::string::npos && w.tick - last_order_ >= seconds_to_ticks(w, 1.0))
+    tap(bindings_.order_attack), last_order_ = w.tick;
+}
+
 // The NAV marker leads while no target is close.
 bool HumanPilot::follow_nav(const Sight& seen) const {
   return seen.nav && (!seen.target || seen.distance > 1500);
@@ -331,6 +351,7 @@ void HumanPilot::act(const World& w, InputFrame& in, std::vector<Command>& comma
     else if (!seen.target && seen.hostile_blip) move = sweep_toward(radar_direction(seen));
     choose_keys(w, seen);
     hunt_named_target(w, seen);
+    if (!seen.prompt.empty()) train(w, seen, move);
     pick_subsystem(w, seen);
     order_wing(w, seen);
     if (w.tick < break_until_ && seen.energy > 0.15) hold(bindings_.afterburner);

@@ -17,7 +17,8 @@
 // It plays the objectives as they read: it flies to the NAV marker a route order puts on the
 // HUD while no target is close, cycles its hostile targets (T) until the target panel shows a
 // ship an open objective names, and against a ship with subsystems it cycles them (U) to its
-// engines or shield generator and launches torpedoes at it in range.
+// engines or shield generator and launches torpedoes at it in range. On the training range it
+// does what the prompt asks: turn, throttle up, afterburner, a flare, an order to the wingman.
 //
 //   HumanPilot pilot(game.world(), arc::data_root(), /*seed=*/3);
 //   InputFrame in;
@@ -99,6 +100,7 @@ struct Sight {
   bool target_has_parts = false;
   std::string target_part;
   bool torpedo = false;         // the weapon text reads TORPEDO
+  std::string prompt;           // a training step's prompt at the top of the screen ("" for none)
 };
 
 class HumanPilot {
@@ -124,6 +126,7 @@ class HumanPilot {
   void hunt_named_target(const World& w, const Sight& seen);
   void pick_subsystem(const World& w, const Sight& seen);
   bool follow_nav(const Sight& seen) const;
+  void train(const World& w, const Sight& seen, glm::dvec2& move);
   void tap(int code);
   void hold(int code);
 
