@@ -2,6 +2,7 @@
 // menu's catalog, unlocks from the progress file, medals from a result.
 #include "game/app/campaign.h"
 
+#include <algorithm>
 #include <filesystem>
 
 #include "core/data_layers.h"
@@ -43,6 +44,21 @@ Campaign load_campaign(const std::string& path, const std::string& root_dir) {
     e.chapter = chapter.string();
     if (e.chapter.empty() || e.chapter.size() > 200)
       chapter.fail("'" + chapter.name() + "' must be a text of 1 to 200 characters, got " + std::to_string(e.chapter.size()));
+    if (m.has("unlocks")) {
+      m.check_list_length("unlocks", 8);
+      const JsonValue list = m.require("unlocks");
+      for (const JsonValue& u : list.array()) {
+        const std::string ship = u.string();
+        const std::string cls = data_file(root_dir, "assets/ships/" + ship + ".json");
+        if (ship.empty() || ship.find_first_of("/\\.+") != std::string::npos || !input_path_exists(cls))
+          u.fail("'" + u.name() + "' must name a ship class (a file stem in assets/ships/), got \"" + ship + "\"");
+        bool twice = std::find(e.unlocks.begin(), e.unlocks.end(), ship) != e.unlocks.end();
+        for (const CampaignEntry& before : c.missions)
+          twice = twice || std::find(before.unlocks.begin(), before.unlocks.end(), ship) != before.unlocks.end();
+        if (twice) u.fail("'" + u.name() + "': ship '" + ship + "' is unlocked twice in the campaign");
+        e.unlocks.push_back(ship);
+      }
+    }
     m.finish();
     if (!load_level_def(file, root_dir).mission.present)
       level.fail("'" + level.name() + "' names a level without a \"mission\" block (title and briefing): " + file);
@@ -63,12 +79,18 @@ void add_campaign(std::vector<MissionInfo>& catalog, const Campaign& c, const st
     for (MissionInfo& m : catalog)
       if (same_file(m.path, file)) known = &m;
     if (!known) {
-      const MissionDef d = load_level_def(file, root_dir).mission;
+      const LevelDef L = load_level_def(file, root_dir);
+      const MissionDef& d = L.mission;
       catalog.push_back({file, d.title, d.briefing, d.objective, last_order + 1 + int(i), MissionCategory::Mission, ""});
       known = &catalog.back();
+      // The briefing's ship and loadout choice, as the catalog gives its own levels.
+      known->ships = ship_choices(L, root_dir);
+      if (L.loadout.present) known->suggested_ship = L.loadout.suggested_ship;
+      if (L.loadout.present) known->suggested_loadout = loadout_text(L.loadout.suggested);
     }
     known->campaign = int(i) + 1;
     known->chapter = c.missions[i].chapter;
+    known->unlocks = c.missions[i].unlocks;
   }
 }
 
@@ -93,6 +115,23 @@ bool mission_locked(const std::vector<MissionInfo>& catalog, const Progress& p, 
   for (const MissionInfo& before : catalog)
     if (before.campaign == m->campaign - 1) return !mission_won(p, before.path);
   return false;
+}
+
+const MissionInfo* ship_locked_by(const std::vector<MissionInfo>& catalog, const Progress& p, const std::string& ship) {
+  for (const MissionInfo& m : catalog)
+    if (m.campaign > 0 && std::find(m.unlocks.begin(), m.unlocks.end(), ship) != m.unlocks.end())
+      return mission_won(p, m.path) ? nullptr : &m;
+  return nullptr;
+}
+
+std::vector<std::string> locked_ships(const std::vector<MissionInfo>& catalog, const Progress& p) {
+  std::vector<const MissionInfo*> order;
+  for (const MissionInfo& m : catalog)
+    if (m.campaign > 0 && !m.unlocks.empty() && !mission_won(p, m.path)) order.push_back(&m);
+  std::sort(order.begin(), order.end(), [](const MissionInfo* a, const MissionInfo* b) { return a->campaign < b->campaign; });
+  std::vector<std::string> out;
+  for (const MissionInfo* m : order) out.insert(out.end(), m->unlocks.begin(), m->unlocks.end());
+  return out;
 }
 
 Medal mission_medal(const MissionResult& r) {

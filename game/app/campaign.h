@@ -2,7 +2,8 @@
 // unlocked, and the medal a result earns.
 //
 // levels/campaign/campaign.json: { "format": 1, "title": TEXT, "missions": [ { "level": PATH, "chapter":
-// TEXT }, ... ] }; every level must load and have a "mission" block. The menu lists campaign
+// TEXT, "unlocks": [SHIP, ...] }, ... ] } ("unlocks" optional: ship classes its win opens); every
+// level must load and have a "mission" block. The menu lists campaign
 // missions after the others as "Campaign N. Title"; the first is open, each later one opens when
 // the one before has been won at any difficulty (a won mission stays replayable at every
 // difficulty). Unlocks are read from the progress file's results, so they need no state of their own.
@@ -22,6 +23,7 @@ namespace arc {
 struct CampaignEntry {
   std::string level;    // as the file names it (relative to the data root)
   std::string chapter;  // 1..200 characters, shown above the mission's briefing
+  std::vector<std::string> unlocks;  // "unlocks": ship classes its win opens (locked until then)
 };
 
 struct Campaign {
@@ -41,6 +43,13 @@ std::vector<MissionInfo> load_catalog_with_campaign(const std::string& root_dir)
 bool mission_locked(const std::vector<MissionInfo>& catalog, const Progress& p, const std::string& path);
 // Whether any difficulty's best for `path` is a victory.
 bool mission_won(const Progress& p, const std::string& path);
+
+// Ship unlocks: a ship class a campaign mission's "unlocks" names is locked until that mission is
+// won at any difficulty; every other ship is always open. The mission that still locks `ship`
+// (nullptr: open).
+const MissionInfo* ship_locked_by(const std::vector<MissionInfo>& catalog, const Progress& p, const std::string& ship);
+// Every ship some campaign mission unlocks that is still locked, in campaign order.
+std::vector<std::string> locked_ships(const std::vector<MissionInfo>& catalog, const Progress& p);
 
 enum class Medal { None = 0, Bronze = 1, Silver = 2, Gold = 3 };
 // Bronze: won; Silver: won with every bonus objective done, or with beam accuracy of 40 % or

@@ -234,10 +234,12 @@ void Menu::fill_results_page(MenuPage& p) const {
              : r.victory    ? "New best!"
                             : "Your best try yet (no win so far)"};
   if (is_quick_level(chosen_)) p.lines.pop_back();  // a generated battle keeps no best
+  for (const std::string& ship : new_ships_) p.lines.push_back("New ship unlocked: " + ship);
   if (r.primary_total + r.bonus_total == 0) return;
+  const auto best_line = p.lines.end() - 1 - std::ptrdiff_t(new_ships_.size());
   // Objectives and the medal go above the best-so-far line.
   const std::string medal = medal_name(mission_medal(r));
-  p.lines.insert(p.lines.end() - 1,
+  p.lines.insert(best_line,
                  {"Objectives        " + std::to_string(r.primary_done) + "/" + std::to_string(r.primary_total) +
                       (r.bonus_total ? "   bonus " + std::to_string(r.bonus_done) + "/" + std::to_string(r.bonus_total) : ""),
                   "Medal             " + (medal.empty() ? std::string("none") : medal)});
@@ -447,8 +449,12 @@ std::vector<MenuRequest> Menu::show_results(const std::string& level, Difficulty
   last_ = r;
   message_.clear();
   last_is_best_ = false;
+  new_ships_.clear();
   if (is_quick_level(level)) return {};  // a generated battle keeps no best
+  const std::vector<std::string> locked_before = locked_ships(catalog_, files_.progress);
   last_is_best_ = record_result(files_.progress, progress_key(level, difficulty_name(d)), r);
+  for (const std::string& ship : locked_before)
+    if (!ship_locked_by(catalog_, files_.progress, ship)) new_ships_.push_back(ship);
   if (!last_is_best_) return {};
   return {{MenuRequest::Kind::SaveProgress}};
 }

@@ -142,8 +142,10 @@ class Menu {
   const QuickSetup& quick_setup() const { return quick_; }
   // The level whose briefing is on screen ("" on any other screen): what Launch would start.
   std::string briefing_level() const { return screen_ == MenuScreen::Briefing ? chosen_ : ""; }
-  // The ships the player may fly (the campaign's unlocks); empty: every ship a level offers.
+  // The ships the player may fly. By default the campaign's unlocks decide from the progress
+  // file (campaign.h: ship_locked_by); a list set here replaces them (empty: back to the unlocks).
   void set_unlocked_ships(std::vector<std::string> ships) { unlocked_ships_ = std::move(ships); }
+  bool ship_open(const std::string& ship) const;
   // The briefing's ship and loadout ("" where the level offers no choice).
   std::string chosen_ship() const;
   std::string chosen_loadout() const;
@@ -172,7 +174,11 @@ class Menu {
   void adjust_choice(Item item, int step);
   void fill_choice_lines(MenuPage& p) const;
   MenuRequest launch_request(const std::string& level) const;
+  // "Locked: dart (win Campaign 3. Cargo Run)" for those of `ships` still locked ("" for none).
+  std::string locked_line(const std::vector<std::string>& ships) const;
+  std::string quick_player() const;  // the quick battle's ship: the setup's if open, else an open one
   std::vector<std::string> unlocked_ships_;
+  std::vector<std::string> new_ships_;  // unlocked by the result on the results screen
   int ship_choice_ = 0, loadout_choice_ = 0;
 
   std::vector<MissionInfo> catalog_;

@@ -1,8 +1,10 @@
 // game/app/menu_loadout.cpp — the briefing's ship and loadout choice: the ships a level's
-// "loadout" block offers that the player has unlocked, each with the loadouts it can fly, the
-// level's suggestion first chosen, and the choice carried by the Launch request.
+// "loadout" block offers that the player has unlocked (the campaign's unlocks, campaign.h), each
+// with the loadouts it can fly, the level's suggestion first chosen, and the choice carried by
+// the Launch request; the locked ones named with the mission that opens them.
 #include <algorithm>
 
+#include "game/app/campaign.h"
 #include "game/app/menu.h"
 #include "game/app/menu_items.h"
 
@@ -13,9 +15,32 @@ std::vector<ShipChoice> Menu::offered_ships() const {
   std::vector<ShipChoice> out;
   if (!m) return out;
   for (const ShipChoice& c : m->ships)
-    if (unlocked_ships_.empty() || std::find(unlocked_ships_.begin(), unlocked_ships_.end(), c.name) != unlocked_ships_.end())
-      out.push_back(c);
+    if (ship_open(c.name)) out.push_back(c);
   return out;
+}
+
+bool Menu::ship_open(const std::string& ship) const {
+  if (!unlocked_ships_.empty()) return std::find(unlocked_ships_.begin(), unlocked_ships_.end(), ship) != unlocked_ships_.end();
+  return ship_locked_by(catalog_, files_.progress, ship) == nullptr;
+}
+
+std::string Menu::locked_line(const std::vector<std::string>& ships) const {
+  std::string out;
+  for (const std::string& ship : ships) {
+    if (ship_open(ship)) continue;
+    const MissionInfo* by = ship_locked_by(catalog_, files_.progress, ship);
+    out += (out.empty() ? "Locked: " : ", ") + ship;
+    if (by) out += " (win Campaign " + std::to_string(by->campaign) + ". " + by->title + ")";
+  }
+  return out;
+}
+
+std::string Menu::quick_player() const {
+  if (ship_open(quick_.player)) return quick_.player;
+  if (ship_open("viper")) return "viper";
+  for (const std::string& f : quick_classes_.fighters)
+    if (ship_open(f)) return f;
+  return quick_.player;
 }
 
 std::vector<Menu::Item> Menu::briefing_items() const {
@@ -77,6 +102,9 @@ void Menu::fill_choice_lines(MenuPage& p) const {
   if (!m || offered_ships().empty()) return;
   p.lines.push_back("Suggested: " + m->suggested_ship + ", " + m->suggested_loadout +
                     "   (ship and loadout: Left/Right on their rows)");
+  std::vector<std::string> names;
+  for (const ShipChoice& c : m->ships) names.push_back(c.name);
+  if (const std::string locked = locked_line(names); !locked.empty()) p.lines.push_back(locked);
 }
 
 MenuRequest Menu::launch_request(const std::string& level) const {

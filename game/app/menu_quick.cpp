@@ -40,7 +40,7 @@ std::vector<Menu::Item> Menu::quick_items() const {
 std::string Menu::quick_label(Item item) const {
   switch (item) {
     case Item::QuickBattle: return "Quick battle";
-    case Item::QuickPlayer: return row("Your ship", quick_.player);
+    case Item::QuickPlayer: return row("Your ship", quick_player());
     case Item::QuickWingmen: return row("Wingmen", std::to_string(quick_.wingmen));
     case Item::QuickWing: return row("Wing class", quick_.wing);
     case Item::QuickEnemies: return row("Enemies", std::to_string(quick_.enemies));
@@ -63,12 +63,14 @@ void Menu::fill_quick_page(MenuPage& p) const {
   const std::string allies = blue == 1 ? "you alone" : "you and " + std::to_string(blue - 1) + (blue == 2 ? " ally" : " allies");
   p.lines.push_back("Blue: " + allies + "   Red: " + std::to_string(red) + (red == 1 ? " ship" : " ships") +
                     "   Destroy every enemy");
+  if (const std::string locked = locked_line(quick_classes_.fighters); !locked.empty()) p.lines.push_back(locked);
 }
 
 // Enter on a value row steps it on, as Right does.
 std::vector<MenuRequest> Menu::quick_accept(Item item) {
   if (item != Item::QuickLaunch) return quick_adjust(item, 1);
   try {
+    quick_.player = quick_player();
     const std::string text = quick_level_json(quick_, quick_classes_);
     MenuRequest launch(MenuRequest::Kind::Launch, quick_level_path(files_.dir, text), quick_.difficulty);
     launch.generated = text;
@@ -85,7 +87,13 @@ std::vector<MenuRequest> Menu::quick_adjust(Item item, int step) {
   const std::vector<std::string>& fighters = quick_classes_.fighters;
   auto count = [&](int now, int lo, int hi) { return std::clamp(now + step, lo, hi); };
   switch (item) {
-    case Item::QuickPlayer: quick_.player = step_name(fighters, quick_.player, step); break;
+    case Item::QuickPlayer: {
+      std::vector<std::string> open;  // only the ships the campaign has unlocked
+      for (const std::string& f : fighters)
+        if (ship_open(f)) open.push_back(f);
+      quick_.player = step_name(open, quick_player(), step);
+      break;
+    }
     case Item::QuickWingmen: quick_.wingmen = count(quick_.wingmen, 0, kQuickMaxWingmen); break;
     case Item::QuickWing: quick_.wing = step_name(fighters, quick_.wing, step); break;
     case Item::QuickEnemies: quick_.enemies = count(quick_.enemies, 1, kQuickMaxEnemies); break;

@@ -12,6 +12,7 @@
 #include "core/file_writer.h"
 #include "core/json.h"
 #include "core/settings.h"
+#include "game/app/campaign.h"
 #include "game/app/frame_renderer.h"
 #include "game/app/key_remap.h"
 #include "game/app/quick_battle_files.h"
@@ -92,7 +93,8 @@ Menu make_menu(const AppOptions& o) {
   Bindings b = load_bindings(data_file(root, "assets/settings/bindings.json"));
   Bindings flown = b;
   apply_user_settings(files.settings, flown);
-  Menu menu(load_mission_catalog(root + "/levels", root), files, flown, b, data_file(root, "assets/settings/quality.json"));
+  // The window's catalog: the campaign's missions and ship unlocks with the rest.
+  Menu menu(load_catalog_with_campaign(root), files, flown, b, data_file(root, "assets/settings/quality.json"));
   offer_quick_battle(menu, root, files.dir);
   return menu;
 }

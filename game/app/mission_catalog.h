@@ -34,6 +34,7 @@ struct MissionInfo {
   // The level's "loadout" block: the ships offered (empty: no choice) and the suggestion.
   std::vector<ShipChoice> ships;
   std::string suggested_ship, suggested_loadout;
+  std::vector<std::string> unlocks;  // the ship classes its win opens (campaign.h)
 };
 
 // The ships and loadouts a level's "loadout" block offers (none without one).

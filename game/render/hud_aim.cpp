@@ -170,12 +170,53 @@ bool missile_ready(const Ship& me, const Ship& t) {
   return off_nose <= std::min(m.turn_rate * kMissileConeSeconds, 180.0) * kDeg;
 }
 
+namespace {
+
+// The player's route order's next waypoint, where the HUD shows it.
+NavCue nav_cue(const World& w, const Ship& me, const Projector& pr, double canvas_w, double canvas_h,
+               const HudRect& arrow_area) {
+  NavCue n;
+  if (!w.mission || me.id != w.player || me.id.index() >= w.mission->orders.size()) return n;
+  const ShipOrder& o = w.mission->orders[me.id.index()];
+  if (o.kind != OrderKind::Route || o.next < 0 || size_t(o.next) >= o.waypoints.size()) return n;
+  const glm::dvec3 at = o.waypoints[size_t(o.next)];
+  n.shown = true;
+  n.distance = glm::length(at - me.position);
+  double depth = 0;
+  const bool in_front = pr.project(at, n.at, &depth);
+  n.on_screen = in_front && n.at.x >= 0 && n.at.x <= canvas_w && n.at.y >= 0 && n.at.y <= canvas_h;
+  if (!n.on_screen) {
+    n.arrow_dir = offscreen_direction(pr, at);
+    n.arrow_tip = offscreen_arrow_tip(n.arrow_dir, canvas_w, canvas_h, arrow_area);
+  }
+  return n;
+}
+
+void nav_marker(HudLayer& h, const NavCue& n, const HudRect& arrow_area) {
+  if (!n.shown) return;
+  if (!n.on_screen) {
+    offscreen_arrow(h, n.arrow_dir, n.arrow_tip, n.distance, arrow_area, kHudGreen);
+    return;
+  }
+  const double d = 10;
+  const glm::dvec2 p = n.at;
+  line(h, p.x - d, p.y, p.x, p.y - d, kHudGreen, 2.0f);
+  line(h, p.x, p.y - d, p.x + d, p.y, kHudGreen, 2.0f);
+  line(h, p.x + d, p.y, p.x, p.y + d, kHudGreen, 2.0f);
+  line(h, p.x, p.y + d, p.x - d, p.y, kHudGreen, 2.0f);
+  centred_text(h, p.x, p.y - d - 15.0, 1.0, kHudGreen, "NAV");
+  centred_text(h, p.x, p.y + d + 4.0, 1.0, kHudGreen, fmt("%.0f m", n.distance));
+}
+
+}  // namespace
+
 AimCues aim_cues(const World& w, const Ship& me, const Projector& pr, double alpha, double canvas_w, double canvas_h,
                  const HudRect& arrow_area) {
   AimCues cues;
   cues.crosshair = {canvas_w * 0.5, canvas_h * 0.5};
   pr.project(crosshair_point(me, alpha), cues.crosshair);
   cues.beam_ring_lit = beam_would_hit(w, me);
+  cues.nav = nav_cue(w, me, pr, canvas_w, canvas_h, arrow_area);
   if (!me.target || !w.ship(me.target).alive) return cues;
   const Ship& t = w.ship(me.target);
   TargetCues& c = cues.target;
@@ -211,6 +252,7 @@ void layout_aim_cues(const World& w, const Ship& me, const Projector& pr, double
   if (w.paused) return;  // the pause menu stands in the middle of the screen
   const AimCues cues = aim_cues(w, me, pr, alpha, canvas_w, canvas_h, arrow_area);
   crosshair(cues.crosshair, cues.beam_ring_lit, h);
+  nav_marker(h, cues.nav, arrow_area);
   const TargetCues& c = cues.target;
   if (!c.selected) return;
   const glm::vec4 col = c.hostile ? kHudRed : kHudBlue;

@@ -14,7 +14,8 @@
 //                (game/sim/seekers.h), and once locked a bold double ring labelled "LOCK",
 //   plasma lead  with plasma selected: a diamond labelled "PLS" where the bolts meet the target,
 //   off-screen   an arrow toward a target out of view, where the line from the screen centre
-//                toward it leaves the area between the HUD's panels, its distance beside it.
+//                toward it leaves the area between the HUD's panels, its distance beside it,
+//   nav point    the waypoint a mission's route order gives the player (NavCue), likewise.
 // Sizes are in canvas units (hud_draw.h); nothing is remembered between frames.
 #pragma once
 #include "game/render/hud_radar.h"
@@ -54,10 +55,21 @@ struct TargetCues {
   glm::dvec2 arrow_dir{0.0};   // off screen: the arrow's unit direction from the screen centre
   glm::dvec2 arrow_tip{0.0};   //   and its tip, within the arrow area
 };
+// The nav point an event's route order gives the player's ship (levels/README.md "order"): a
+// green diamond labelled "NAV" with its distance, or a green arrow toward it when out of view.
+struct NavCue {
+  bool shown = false;
+  bool on_screen = false;
+  glm::dvec2 at{0.0};          // on screen: the diamond's centre
+  double distance = 0;         // metres, as printed
+  glm::dvec2 arrow_dir{0.0};   // off screen: as TargetCues's arrow
+  glm::dvec2 arrow_tip{0.0};
+};
 struct AimCues {
   glm::dvec2 crosshair{0.0};
   bool beam_ring_lit = false;  // "BEAM": beam_would_hit()
   TargetCues target;
+  NavCue nav;
 };
 AimCues aim_cues(const World& w, const Ship& me, const Projector& pr, double alpha, double canvas_w, double canvas_h,
                  const HudRect& arrow_area);

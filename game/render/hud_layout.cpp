@@ -394,6 +394,7 @@ HudPicture hud_picture(const World& w, const CameraView& cam, const HudState& st
   pic.aim.crosshair *= k;
   TargetCues& t = pic.aim.target;
   t.centre *= k, t.half_size *= k, t.lead *= k, t.arrow_tip *= k;
+  pic.aim.nav.at *= k, pic.aim.nav.arrow_tip *= k;
   pic.radar = {pic.radar.x * k, pic.radar.y * k, pic.radar.w * k, pic.radar.h * k};
   for (RadarBlip& b : pic.radar_blips) b.at *= k, b.size *= k, b.rise *= k;
   return pic;

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/rng.h"
+#include "game/sim/ai_strike.h"
 #include "game/sim/geometry.h"
 #include "game/sim/mission_events.h"
 #include "game/sim/seekers.h"
@@ -96,6 +97,7 @@ void think(World& w, Ship& s) {
   if (wing) ai.target = wing_target(w, s, *wing, ai.target);
   if (const ShipId ordered = ordered_target(w, s.id)) ai.target = ordered;  // an event's attack order
   s.target = ai.target;
+  choose_strike_part(w, s);
   ai.aim_error = rng.unit_vector(1) * (tune.aim_error * rng.uniform(2));
   if (!ai.target) return;
   const Ship& t = w.ship(ai.target);
@@ -204,9 +206,11 @@ void drive_ai(World& w, Ship& s) {
     return;
   }
   const bool plasma = s.secondary == SecondaryWeapon::Plasma && s.cls->plasma.present;
-  const glm::dvec3 rel = t.position - s.position;
+  // Against a capital ship: the part it goes for (ai_strike.h), which moves with the hull.
+  const glm::dvec3 on = t.cls->capital() ? strike_aim_point(w, s, t) - t.position : glm::dvec3(0.0);
+  const glm::dvec3 rel = t.position + on - s.position;
   const double dist = safe_len(rel);
-  glm::dvec3 aim = plasma ? lead_point(s, t, s.cls->plasma.speed) : t.position + t.velocity * w.dt;
+  glm::dvec3 aim = (plasma ? lead_point(s, t, s.cls->plasma.speed) : t.position + t.velocity * w.dt) + on;
   glm::dvec3 dir = safe_norm(aim - s.position, fwd);
   dir = safe_norm(dir + ai.aim_error, dir);
   steer_toward(s, dir, tune.stick_limit, c);
@@ -231,6 +235,7 @@ void drive_ai(World& w, Ship& s) {
   // Switch weapons now and then so both get used.
   if (s.cls->missile.present && s.cls->plasma.present && rng.uniform(1) < 0.004)
     s.secondary = s.secondary == SecondaryWeapon::Missile ? SecondaryWeapon::Plasma : SecondaryWeapon::Missile;
+  use_torpedoes(w, s, t, line_clear, c);
   jink(w, s, t, tune.jink, c);
   s.controls = c;
 }

@@ -103,6 +103,25 @@ struct Names {
     if (it == ids.end()) v.fail("no " + std::string(what) + " has id \"" + id + "\"; ids: " + quoted_list(ids));
     return size_t(it - ids.begin());
   }
+  // The parts of ship `i`'s class named like `v` (a turret's or a subsystem's "name").
+  std::vector<size_t> parts(const JsonValue& v, size_t i) const {
+    const std::string name = v.string();
+    const auto it = L.classes.find(ships[i]->ship_class);
+    std::vector<size_t> out;
+    std::vector<std::string> all;
+    if (it != L.classes.end()) {
+      const ShipClassDef& c = *it->second;
+      for (size_t k = 0; k < c.part_count(); ++k) {
+        const std::string& part = k < c.turrets.size() ? c.turrets[k].name : c.subsystems[k - c.turrets.size()].name;
+        if (part == name) out.push_back(k);
+        if (std::find(all.begin(), all.end(), part) == all.end()) all.push_back(part);
+      }
+    }
+    if (out.empty())
+      v.fail("ship \"" + ships[i]->name + "\" (class '" + ships[i]->ship_class + "') has no turret or subsystem named \"" +
+             name + "\"; parts: " + quoted_list(all));
+    return out;
+  }
   bool team_exists(const std::string& team) const {
     for (const ShipSpawnDef* s : ships)
       if (s->team == team) return true;
@@ -124,7 +143,8 @@ ObjectiveStatus status_of(const JsonValue& v, bool pending_allowed) {
 TriggerDef parse_trigger(JsonObject o, const Names& n, size_t self) {
   TriggerDef t;
   const std::string type = o.require("type").choice(
-      {"time", "destroyed", "hull_below", "area_entered", "objective", "event", "team_below"});
+      {"time", "destroyed", "hull_below", "area_entered", "objective", "event", "team_below",
+       "subsystem_destroyed"});
   if (type == "time") {
     t.kind = TriggerKind::Time;
     t.seconds = o.require_number("seconds", 0.0, 36000.0);
@@ -149,6 +169,10 @@ TriggerDef parse_trigger(JsonObject o, const Names& n, size_t self) {
     JsonValue id = o.require("id");
     t.index = n.index(id, n.events, "event");
     if (t.index == self) id.fail("an event cannot wait for itself; name another event's id");
+  } else if (type == "subsystem_destroyed") {
+    t.kind = TriggerKind::PartDestroyed;
+    t.ships = {n.ship(o.require("ship"))};
+    t.parts = n.parts(o.require("subsystem"), t.ships[0]);
   } else {
     t.kind = TriggerKind::TeamBelow;
     t.team = n.team(o.require("team"));

@@ -29,6 +29,7 @@ enum class TriggerKind : uint8_t {
   Objective,     // objective `index` has `status` (done or failed)
   EventFired,    // event `index` has run its actions
   TeamBelow,     // team `team` has fewer than `count` ships alive
+  PartDestroyed, // every part of ship `ships[0]` named `part` (a turret or subsystem) destroyed
 };
 
 struct TriggerDef {
@@ -42,6 +43,7 @@ struct TriggerDef {
   ObjectiveStatus status = ObjectiveStatus::Done;
   std::string team;
   int count = 0;
+  std::vector<size_t> parts;  // subsystem_destroyed: indices into the ship's parts (capital.h)
 };
 
 enum class ActionKind : uint8_t { Spawn, Message, Radio, Objective, Order, Team, End, Cue };

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "game/sim/ai.h"
+#include "game/sim/capital.h"
 #include "game/sim/geometry.h"
 #include "game/sim/level_start.h"
 #include "game/sim/wing.h"
@@ -135,6 +136,10 @@ bool trigger_holds(const World& w, const TriggerDef& t) {
     case TriggerKind::Objective: return w.mission && w.mission->objectives[t.index].status == t.status;
     case TriggerKind::EventFired: return w.mission && w.mission->events[t.index].fired_tick >= 0;
     case TriggerKind::TeamBelow: return alive_in_team(w, t.team) < t.count;
+    case TriggerKind::PartDestroyed: {
+      const Ship& s = w.ships[t.ships[0]];
+      return !dormant(s) && std::all_of(t.parts.begin(), t.parts.end(), [&](size_t i) { return !part_alive(s, i); });
+    }
   }
   return false;
 }

@@ -12,7 +12,10 @@
 #include "core/rng.h"
 #include "game/render/camera_settings.h"
 #include "game/render/hud_layout.h"
+#include "game/render/hud_objectives.h"
+#include "game/render/hud_training.h"
 #include "game/render/render_view_builder.h"
+#include "game/sim/capital.h"
 #include "game/sim/world.h"
 
 namespace arc {
@@ -106,6 +109,22 @@ Sight HumanPilot::look(const World& w) const {
   s.centre = t.centre;
   s.aim = t.plasma_lead ? t.lead : t.centre;
   s.arrow = t.arrow_dir;
+  const NavCue& nav = pic.aim.nav;
+  s.nav = nav.shown, s.nav_on_screen = nav.on_screen, s.nav_at = nav.at, s.nav_arrow = nav.arrow_dir;
+  s.nav_m = nav.distance;
+  if (w.mission)
+    for (size_t i = 0; i < w.mission->objectives.size(); ++i)
+      if (w.mission->objectives[i].revealed && w.mission->objectives[i].status == ObjectiveStatus::Pending)
+        s.objectives.push_back(objective_row(w, i));
+  s.torpedo = me.secondary == SecondaryWeapon::Torpedo && me.cls->torpedo.present;
+  if (training_prompt_shown(w)) s.prompt = w.level.training.steps[size_t(w.training->step)].prompt;
+  if (t.selected) {
+    const Ship& ts = w.ship(me.target);
+    s.target_name = ts.name;
+    s.target_has_parts = !ts.parts.empty();
+    const int part = target_part(w, me);
+    s.target_part = part >= 0 ? part_name(*ts.cls, size_t(part)) : "";
+  }
   if (t.on_screen && w.camera_mode != CameraMode::Cockpit)
     s.hidden = covered_by_hull(cam.position, cam.orientation, me, hull_, w.ship(me.target).position);
   const glm::dvec2 centre(pic.radar.x + pic.radar.w * 0.5, pic.radar.y + pic.radar.h * 0.5);
@@ -186,19 +205,23 @@ void HumanPilot::choose_keys(const World& w, const Sight& seen) {
     // Long off screen while the radar shows a hostile much nearer than the target: R for it.
     const bool nearer = seen.hostile_blip && seen.target_blip > 0 &&
                         glm::length(seen.nearest_hostile) < 0.6 * seen.target_blip;
-    if (nearer && w.tick - off_screen_since_ > seconds_to_ticks(w, 3.0) &&
+    if (nearer && !named(seen) && w.tick - off_screen_since_ > seconds_to_ticks(w, 3.0) &&
         w.tick - last_target_key_ > seconds_to_ticks(w, 3.0))
       tap(b.target_nearest), last_target_key_ = w.tick;
   } else {
     off_screen_since_ = -1;
   }
   const double d = seen.distance;
-  const double wanted = !seen.target ? 0.5 : d > 800 ? 1.0 : d > 400 ? 0.8 : d > 150 ? 0.55 : 0.35;
+  const bool nav = follow_nav(seen);
+  const bool training_speed = seen.prompt.find("Throttle up") != std::string::npos ||
+                              seen.prompt.find("Afterburner") != std::string::npos;
+  const double wanted = training_speed ? 1.0 : nav ? 1.0 : !seen.target ? 0.5 : d > 800 ? 1.0 : d > 400 ? 0.8 : d > 150 ? 0.55 : 0.35;
   // The THR bar moves while the key is down; the hand lets go at the mark.
   const double set = input_.set_throttle();
   if (set < wanted - 0.03) hold(b.throttle.positive);
   if (set > wanted + 0.03) hold(b.throttle.negative);
   if (seen.target && seen.on_screen && d > 1500 && seen.energy > 0.5) hold(b.afterburner);
+  if (nav && seen.nav_on_screen && seen.nav_m > 1200 && seen.energy > 0.5) hold(b.afterburner);
   const bool missile_close = seen.missile_near || (seen.missile_m >= 0 && seen.missile_m < 500);
   if (missile_close && w.tick - last_flare_ >= seconds_to_ticks(w, 1.5))
     tap(b.countermeasure), last_flare_ = w.tick;
@@ -227,6 +250,69 @@ void HumanPilot::order_wing(const World& w, const Sight& seen) {
   }
 }
 
+// An open objective names the target the panel shows.
+bool HumanPilot::named(const Sight& seen) const {
+  if (seen.target_name.empty()) return false;
+  for (const std::string& row : seen.objectives)
+    if (row.find(seen.target_name) != std::string::npos) return true;
+  return false;
+}
+
+// Open objectives but a target they do not name: T (next hostile) every 0.4 s, remembering the
+// names it shows; once a name comes round again none is named, and it rests 10 s.
+void HumanPilot::hunt_named_target(const World& w, const Sight& seen) {
+  if (!seen.target || seen.objectives.empty() || named(seen)) {
+    hunted_.clear();
+    return;
+  }
+  if (w.tick < hunt_rest_until_ || w.tick - last_target_key_ < seconds_to_ticks(w, 0.4)) return;
+  if (std::find(hunted_.begin(), hunted_.end(), seen.target_name) != hunted_.end()) {
+    hunted_.clear();
+    hunt_rest_until_ = w.tick + seconds_to_ticks(w, 10.0);
+    return;
+  }
+  hunted_.push_back(seen.target_name);
+  tap(bindings_.target_next_hostile), last_target_key_ = w.tick;
+}
+
+// A target with subsystems: U until the cue shows its shield generator or engines (the
+// briefing's advice); after a whole round without them it rests 10 s.
+void HumanPilot::pick_subsystem(const World& w, const Sight& seen) {
+  if (!seen.target || !seen.target_has_parts) return;
+  if (seen.target_part == "shield generator" || seen.target_part == "engines") {
+    part_presses_ = 0;
+    return;
+  }
+  if (w.tick < part_rest_until_ || w.tick - last_part_key_ < seconds_to_ticks(w, 0.3)) return;
+  if (++part_presses_ > 8) {
+    part_presses_ = 0;
+    part_rest_until_ = w.tick + seconds_to_ticks(w, 10.0);
+    return;
+  }
+  tap(bindings_.target_subsystem), last_part_key_ = w.tick;
+}
+
+// What a training prompt asks for, read off its words: a turn, the throttle or the afterburner
+// held, a flare, an order to the wingman; the rest (target, beam, missile) is flying as usual.
+void HumanPilot::train(const World& w, const Sight& seen, glm::dvec2& move) {
+  const std::string& p = seen.prompt;
+  if (p.find("Turn the ship") != std::string::npos) move = sweep_toward({1, 0});
+  const bool burner = p.find("Afterburner") != std::string::npos;
+  if (burner || p.find("Throttle up") != std::string::npos) {
+    if (input_.set_throttle() < 0.97) hold(bindings_.throttle.positive);
+    if (burner && seen.energy > 0.2) hold(bindings_.afterburner);
+  }
+  if (p.find("drop a flare") != std::string::npos && w.tick - last_flare_ >= seconds_to_ticks(w, 1.0))
+    tap(bindings_.countermeasure), last_flare_ = w.tick;
+  if (p.find("wingman has joined") != std::string::npos && w.tick - last_order_ >= seconds_to_ticks(w, 1.0))
+    tap(bindings_.order_attack), last_order_ = w.tick;
+}
+
+// The NAV marker leads while no target is close.
+bool HumanPilot::follow_nav(const Sight& seen) const {
+  return seen.nav && (!seen.target || seen.distance > 1500);
+}
+
 // The beam while the crosshair is on the target in range (or the beam ring lit); a missile
 // click once the cue reads LOCK; plasma while the lead sits on the crosshair.
 void HumanPilot::fire(const World& w, const Sight& seen) {
@@ -237,6 +323,10 @@ void HumanPilot::fire(const World& w, const Sight& seen) {
     tap(bindings_.fire_secondary), last_missile_ = w.tick;
   if (seen.plasma && glm::length(seen.aim - seen.crosshair) < seen.bracket && seen.distance < 1000)
     hold(bindings_.fire_secondary);
+  // A torpedo: launched within 900 m with the crosshair on the brackets, one at a time.
+  if (seen.torpedo && seen.target_has_parts && seen.distance < 900 && off < seen.bracket &&
+      w.tick - last_missile_ >= seconds_to_ticks(w, 1.0))
+    tap(bindings_.fire_secondary), last_missile_ = w.tick;
 }
 
 void HumanPilot::act(const World& w, InputFrame& in, std::vector<Command>& commands) {
@@ -251,10 +341,18 @@ void HumanPilot::act(const World& w, InputFrame& in, std::vector<Command>& comma
     // the hand still pulls toward them (fire() holds).
     start_break(w, seen);
     if (w.tick < break_until_) move = sweep_toward(break_dir_) * skill_.hand_speed;
+    else if (follow_nav(seen) && seen.nav_on_screen) {
+      Sight to_nav = seen;
+      to_nav.aim = seen.nav_at;
+      move = track(w, to_nav);
+    } else if (follow_nav(seen)) move = sweep_toward(seen.nav_arrow);
     else if (seen.target && seen.on_screen) move = track(w, seen);
     else if (seen.target && !seen.on_screen) move = sweep_toward(seen.arrow);
     else if (!seen.target && seen.hostile_blip) move = sweep_toward(radar_direction(seen));
     choose_keys(w, seen);
+    hunt_named_target(w, seen);
+    if (!seen.prompt.empty()) train(w, seen, move);
+    pick_subsystem(w, seen);
     order_wing(w, seen);
     if (w.tick < break_until_ && seen.energy > 0.15) hold(bindings_.afterburner);
     fire(w, seen);

@@ -14,6 +14,11 @@
 // Like a player it drops a flare and breaks across a missile's line when the missile warning
 // reads near, and orders its wing: F5 (attack my target) as it closes on each new target, F6
 // (cover me) when the damage cue shows an attacker out of view and its shield is low.
+// It plays the objectives as they read: it flies to the NAV marker a route order puts on the
+// HUD while no target is close, cycles its hostile targets (T) until the target panel shows a
+// ship an open objective names, and against a ship with subsystems it cycles them (U) to its
+// engines or shield generator and launches torpedoes at it in range. On the training range it
+// does what the prompt asks: turn, throttle up, afterburner, a flare, an order to the wingman.
 //
 //   HumanPilot pilot(game.world(), arc::data_root(), /*seed=*/3);
 //   InputFrame in;
@@ -84,6 +89,18 @@ struct Sight {
   double shield = 0, hull = 0;  // the own SHIELD and HULL bars, 0..1
   double energy = 0;            // the own energy bar, 0..1
   double set_throttle = 0;      // the THR bar
+  // The nav point of a route order (hud_aim.h NavCue): its diamond or arrow and distance.
+  bool nav = false, nav_on_screen = false;
+  glm::dvec2 nav_at{0.0}, nav_arrow{0.0};
+  double nav_m = 0;
+  // The objective rows still open ("[ ] ..."), the target panel's name, and the subsystem cue:
+  // whether the target has subsystems to cycle and the part it shows ("" for the whole ship).
+  std::vector<std::string> objectives;
+  std::string target_name;
+  bool target_has_parts = false;
+  std::string target_part;
+  bool torpedo = false;         // the weapon text reads TORPEDO
+  std::string prompt;           // a training step's prompt at the top of the screen ("" for none)
 };
 
 class HumanPilot {
@@ -105,6 +122,11 @@ class HumanPilot {
   void start_break(const World& w, const Sight& seen);
   void order_wing(const World& w, const Sight& seen);
   void fire(const World& w, const Sight& seen);
+  bool named(const Sight& seen) const;
+  void hunt_named_target(const World& w, const Sight& seen);
+  void pick_subsystem(const World& w, const Sight& seen);
+  bool follow_nav(const Sight& seen) const;
+  void train(const World& w, const Sight& seen, glm::dvec2& move);
   void tap(int code);
   void hold(int code);
 
@@ -129,6 +151,9 @@ class HumanPilot {
   glm::dvec2 break_dir_{1, 0};                         // the screen direction it pulls toward
   uint32_t ordered_target_ = 0;                        // the target an attack order named (index + 1)
   int64_t last_order_ = -1000000;
+  std::vector<std::string> hunted_;                    // names the target key showed in this hunt
+  int64_t hunt_rest_until_ = -1, last_part_key_ = -1000000, part_rest_until_ = -1;
+  int part_presses_ = 0;
 };
 
 }  // namespace arc

@@ -85,6 +85,11 @@ MissionRun fly_mission(const std::string& root_dir, const std::string& level_pat
   o.difficulty = static_cast<Difficulty>(std::clamp(difficulty, 0, 2));
   o.seed_override = true;
   o.seed = seed;
+  // The briefing's suggestion, as the menu offers it first.
+  if (const LevelDef def = load_level_def(level_path, root_dir); def.loadout.present) {
+    o.ship = def.loadout.suggested_ship;
+    o.loadout = loadout_text(def.loadout.suggested);
+  }
   Game g = Game::load_level(level_path, o);
   const World& w = g.world();
   HumanPilot pilot(w, root_dir, seed, skill);
@@ -163,11 +168,14 @@ std::vector<std::string> mission_levels(const std::string& root_dir) {
     std::string path;
   };
   std::vector<Entry> found;
-  for (const auto& e : std::filesystem::directory_iterator(root_dir + "/levels")) {
-    if (e.path().extension() != ".json") continue;
-    const LevelDef def = load_level_def(e.path().string(), root_dir);
+  std::vector<std::filesystem::path> files;
+  for (const char* dir : {"/levels", "/levels/campaign"})
+    for (const auto& e : std::filesystem::directory_iterator(root_dir + dir)) files.push_back(e.path());
+  for (const auto& path : files) {
+    if (path.extension() != ".json" || path.filename() == "campaign.json") continue;
+    const LevelDef def = load_level_def(path.string(), root_dir);
     if (def.mission.present && def.mission.category == MissionCategory::Mission)
-      found.push_back({def.mission.order, e.path().string()});
+      found.push_back({def.mission.order, path.string()});
   }
   std::sort(found.begin(), found.end(),
             [](const Entry& a, const Entry& b) { return a.order != b.order ? a.order < b.order : a.path < b.path; });

@@ -157,6 +157,18 @@ TEST(HumanPilot, FiguresOnTheDuelSkirmishAndArenaStayWithinWideBounds) {
   EXPECT_LT(idle.damage_dealt, 150.0);  // what collisions deal
 }
 
+// Campaign missions as a player plays them from the HUD: the training prompts, the patrol's NAV
+// marker, the strike's named corvette with torpedoes at its subsystems. At normal the pilot
+// finishes each of these in 9 or 10 of seeds 1..10 (docs/pilot.md); three seeds, at least one win.
+TEST(HumanPilot, FinishesCampaignMissionsAtNormal) {
+  for (const char* level : {"levels/training.json", "levels/campaign/02_patrol.json", "levels/campaign/07_strike.json"}) {
+    const MissionFigures f = mission_figures(data_root(), data_root() + "/" + level, 1, 3, {}, 600.0);
+    print(f);
+    EXPECT_GE(f.wins, 1) << level;
+    EXPECT_EQ(f.timeouts, 0) << level;
+  }
+}
+
 // One line per seed: PILOT_LEVEL, PILOT_DIFF, PILOT_SEEDS; the hand's PILOT_AIM_NOISE (pixels)
 // and PILOT_MOVE_ERROR (share).
 TEST(HumanPilot, DISABLED_Report) {
