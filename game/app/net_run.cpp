@@ -175,7 +175,7 @@ int play(const AppOptions& o, Wire& wire, const Match& m, bool host) {
 
   const RollbackSession& rs = peer.session();
   const std::string record = !o.net.match_record.empty() ? o.net.match_record : "net_match_" + std::to_string(m.local) + ".replay";
-  write_file_atomic(record, match_record_text(rs, m.level, m.names));
+  write_file_atomic(record, match_record_text(rs, m.level, m.names, ticks));
   const int64_t fin = std::min<int64_t>(rs.final_tick(), ticks);
   std::printf("net: slot %d final tick %lld hash %s rollbacks %llu resimulated %llu ticks %llu compared %llu bytes_out %llu\n",
               m.local, (long long)fin, fin > 0 ? hex(rs.hash_at(fin)).c_str() : "-", (unsigned long long)rs.stats().rollbacks,

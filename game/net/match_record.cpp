@@ -60,10 +60,10 @@ replay::Header match_header(const RollbackSession& s, const std::string& level, 
 }  // namespace
 
 std::string match_record_text(const RollbackSession& s, const std::string& level, const std::vector<std::string>& names,
-                              int hash_every) {
+                              int64_t last_tick, int hash_every) {
   const replay::Header h = match_header(s, level, names);
   std::string out = replay::header_text(h) + "# network match\n";
-  const int64_t end = std::max<int64_t>(s.final_tick(), 0);
+  const int64_t end = std::max<int64_t>(std::min(s.final_tick(), last_tick), 0);
   std::vector<replay::InputState> held(size_t(h.slots));
   // Lines stamped T: the inputs and commands of step T + 1, then the hash of the state after T steps.
   for (int64_t t = 0; t <= end; ++t) {

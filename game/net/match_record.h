@@ -23,6 +23,7 @@
 //   const std::string text = match_record_text(session, "levels/duel.json", {"Host", "Pilot1"});
 //   replay::Script s = replay::parse_script(text, "match.replay", all_settings());
 #pragma once
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -30,9 +31,11 @@
 
 namespace arc {
 
-// The record of `session` up to its last final tick; `level` as the replay should name it
+// The record of `session` up to its last final tick, or `last_tick` if that is sooner (a match
+// of N ticks whose peers ran on while they said goodbye); `level` as the replay should name it
 // (relative to the data root), `names` by slot.
 std::string match_record_text(const RollbackSession& session, const std::string& level,
-                              const std::vector<std::string>& names, int hash_every = 60);
+                              const std::vector<std::string>& names, int64_t last_tick = RollbackSession::kNever,
+                              int hash_every = 60);
 
 }  // namespace arc
