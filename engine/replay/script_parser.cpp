@@ -405,7 +405,6 @@ HashCheck parse_hash(LineParser& lp, uint64_t tick, bool full) {
 }
 
 // One tick-stamped line after its tick: input, command, check or `end`.
-// Long: one branch per verb, each checking its own words.
 void parse_stamped_line(LineParser& lp, uint64_t tick, const SourceLine& src, Script& s) {
   const Token* word = &lp.take("what happens at this tick (press, release, axis, command, expect, snapshot, hash, full_hash, end)");
   uint8_t slot = 0;
