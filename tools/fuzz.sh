@@ -10,7 +10,7 @@ set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 seconds="${1:-60}"
 shift || true
-all=(level ship_class effect quality bindings replay snapshot model_glb model_gltf sprite)
+all=(level ship_class effect quality bindings replay snapshot model_glb model_gltf sprite packet)
 targets=("$@")
 [ ${#targets[@]} -eq 0 ] && targets=("${all[@]}")
 out="${FUZZ_BUILD:-$root/build-fuzz}"

@@ -331,8 +331,10 @@ std::shared_ptr<ParticleStore> ParticleWorld::store() const { return impl_->stor
 ParticleWorldState& ParticleWorldAccess::state(ParticleWorld& w) { return *w.impl_; }
 const ParticleWorldState& ParticleWorldAccess::state(const ParticleWorld& w) { return *w.impl_; }
 ParticleWorld::ParticleWorld(const ParticleWorld& o) : impl_(std::make_unique<Impl>(*o.impl_)) {}
+// Into the pools, slots and maps this world has: a rollback's per-tick save and restore copy
+// a battle's particles without taking or faulting in fresh memory.
 ParticleWorld& ParticleWorld::operator=(const ParticleWorld& o) {
-  if (this != &o) impl_ = std::make_unique<Impl>(*o.impl_);
+  if (this != &o) *impl_ = *o.impl_;
   return *this;
 }
 

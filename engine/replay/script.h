@@ -1,9 +1,9 @@
 // replay/script.h — replay scripts: a line-based text format people write by hand and the
 // game records, parsed into plain structs (no game types, no GL).
 //
-// A script is a header (format version, level, seed, tick rate, difficulty, build id) and then
-// tick-stamped lines: input (press, release, axis), commands, checks (expect, hash, full_hash,
-// snapshot) and `end`. The full format, with an example of every line, is in
+// A script is a header (format version, level, seed, tick rate, difficulty, build id; for a
+// network match its slots and pilots) and then tick-stamped lines: input (press, release, axis;
+// in a match per slot), commands, checks (expect, hash, full_hash, snapshot) and `end`. The full format, with an example of every line, is in
 // tests/replays/README.md. Every malformed line throws InputError "path:line:col: message".
 //
 // Example, compiled as ScriptExample.LoadWalkWrite in tests/unit/replay/test_examples.cpp:
@@ -31,7 +31,11 @@ class Settings;
 
 namespace arc::replay {
 
-constexpr int kFormatVersion = 1;
+// Version 2 adds network matches (`slots`, `pilot`, `drop` and `slot K` lines); a script
+// without them is written as version 1, and both versions load.
+constexpr int kFormatVersion = 2;
+constexpr int kFirstFormatVersion = 1;
+constexpr int kMaxSlots = 8;
 
 // Same order, bits and values as the game's InputFrame / InputButton / Command; game/app
 // static_asserts the correspondence where it converts.
@@ -95,8 +99,17 @@ struct SnapshotTolerance {
   bool operator==(const SnapshotTolerance&) const = default;
 };
 
+// `pilot SLOT NAME`: a pilot flew the slot's ship (its `slot K` lines); `drop SLOT TICK`: from
+// step TICK + 1 on the AI flies it (the pilot left).
+struct PilotLine {
+  int slot = 0;
+  std::string name;
+  std::optional<uint64_t> drop;
+  bool operator==(const PilotLine&) const = default;
+};
+
 struct Header {
-  int version = kFormatVersion;
+  int version = kFirstFormatVersion;  // what the file says; a script with slots is version 2
   std::string level;                // required, relative to the working folder or the data root (or absolute)
   int level_line = 0;               // where the level line is, for "not found" messages
   std::optional<uint64_t> seed;     // absent: the level's own
@@ -121,6 +134,10 @@ struct Header {
   // `snapshots_like NAME`: snapshots compare with golden/NAME/ (another script's frames, which
   // this scene must look like) and --update-golden leaves those images alone. "": its own.
   std::string snapshots_like;
+  // `slots N`: a network match over the level's N slots, each flown by the AI unless a `pilot`
+  // line names it; 0: the single-player game.
+  int slots = 0;
+  std::vector<PilotLine> pilots;  // by slot
   // Equal content, ignoring where lines are written.
   bool same_content(const Header& other) const;
 };
@@ -132,6 +149,7 @@ struct InputEvent {
   Button button = kFirePrimary;  // Press / Release
   Axis axis = Axis::Pitch;       // Axis
   int8_t value = 0;              // Axis, quantised
+  uint8_t slot = 0;              // the slot whose input it is (`slot K` lines; 0: the player's)
   SourceLine src;
   bool operator==(const InputEvent&) const = default;
 };
@@ -139,6 +157,7 @@ struct InputEvent {
 struct CommandEvent {
   uint64_t tick = 0;
   ScriptCommand command = ScriptCommand::TargetNext;
+  uint8_t slot = 0;
   SourceLine src;
   bool operator==(const CommandEvent&) const = default;
 };
@@ -219,7 +238,7 @@ std::string command_line(const CommandEvent& c);
 std::string hash_line(const HashCheck& h);
 std::string end_line(uint64_t tick);
 // The press/release/axis lines that turn `before` into `after` at `tick` ("" when equal).
-std::string input_diff_lines(uint64_t tick, const InputState& before, const InputState& after);
+std::string input_diff_lines(uint64_t tick, const InputState& before, const InputState& after, uint8_t slot = 0);
 
 // Applies one input event to the held state.
 void apply_input(InputState& state, const InputEvent& e);

@@ -210,6 +210,26 @@ void parse_mod(LineParser& lp, Header& h) {
   h.mods.push_back({name.text, std::stoull(hash.text, nullptr, 16), lp.line, name.col});
 }
 
+// `pilot SLOT NAME` and `drop SLOT TICK`, after `slots`: a slot named once by each.
+void parse_pilot(LineParser& lp, Header& h, const Token& key) {
+  if (h.slots == 0) lp.fail(key, "'" + key.text + "' lines come after a 'slots N' line");
+  const int slot = static_cast<int>(integer_in(lp, lp.take("slot number"), "slot", 0, uint64_t(h.slots - 1)));
+  auto it = std::find_if(h.pilots.begin(), h.pilots.end(), [&](const PilotLine& p) { return p.slot == slot; });
+  if (key.text == "pilot") {
+    if (it != h.pilots.end()) lp.fail(key, "slot " + std::to_string(slot) + " has two 'pilot' lines");
+    const Token& name = lp.take("the pilot's name");
+    if (name.text.empty() || name.text.size() > 64) lp.fail(name, "a pilot's name is 1 to 64 characters");
+    h.pilots.push_back(PilotLine{slot, name.text, std::nullopt});
+    std::sort(h.pilots.begin(), h.pilots.end(), [](const PilotLine& a, const PilotLine& b) { return a.slot < b.slot; });
+    lp.done("the pilot's name");
+    return;
+  }
+  if (it == h.pilots.end()) lp.fail(key, "slot " + std::to_string(slot) + " has no 'pilot' line before its 'drop'");
+  if (it->drop) lp.fail(key, "slot " + std::to_string(slot) + " is dropped twice");
+  it->drop = integer_in(lp, lp.take("the tick its pilot left"), "drop tick", 0, kMaxScriptTick);
+  lp.done("the drop tick");
+}
+
 void parse_header_line(LineParser& lp, Header& h, std::vector<std::string>& seen, const Settings& known) {
   const Token& key = lp.tokens[lp.next++];
   if (key.text == "set") {
@@ -220,6 +240,10 @@ void parse_header_line(LineParser& lp, Header& h, std::vector<std::string>& seen
   if (key.text == "mod") {
     parse_mod(lp, h);
     lp.done("the mod");
+    return;
+  }
+  if (key.text == "pilot" || key.text == "drop") {
+    parse_pilot(lp, h, key);
     return;
   }
   if (seen_before(seen, key.text)) lp.fail(key, "header key '" + key.text + "' appears twice");
@@ -264,6 +288,9 @@ void parse_header_line(LineParser& lp, Header& h, std::vector<std::string>& seen
     h.quality = QualityLine{t.text, lp.line, t.col};
   } else if (key.text == "tolerance") {
     h.tolerance = parse_tolerance(lp);
+  } else if (key.text == "slots") {
+    if (h.version < 2) lp.fail(key, "'slots' needs version 2 of the format: the first line 'arcfire-replay 2'");
+    h.slots = static_cast<int>(integer_in(lp, lp.take("slot count"), "slots", 1, kMaxSlots));
   } else if (key.text == "snapshots_like") {
     const Token& t = lp.take("the name of the script whose golden images to compare with");
     if (!valid_name(t.text)) lp.fail(t, "script name must be 1 to 64 of A-Z a-z 0-9 _ -, got '" + t.text + "'");
@@ -271,7 +298,8 @@ void parse_header_line(LineParser& lp, Header& h, std::vector<std::string>& seen
   } else {
     lp.fail(key, "unknown header key '" + key.text +
                      "'; allowed: level, seed, tick_rate, difficulty, ship, loadout, build, snapshot_size, particle_budget, "
-                     "lightning_interval, substeps, quality, set, mod, tolerance, snapshots_like, or a tick-stamped line");
+                     "lightning_interval, substeps, quality, set, mod, tolerance, snapshots_like, slots, pilot, drop, or a tick-stamped "
+                     "line");
   }
   lp.done(key.text);
 }
@@ -378,13 +406,24 @@ HashCheck parse_hash(LineParser& lp, uint64_t tick, bool full) {
 
 // One tick-stamped line after its tick: input, command, check or `end`.
 void parse_stamped_line(LineParser& lp, uint64_t tick, const SourceLine& src, Script& s) {
-  const Token& verb = lp.take("what happens at this tick (press, release, axis, command, expect, snapshot, hash, full_hash, end)");
+  const Token* word = &lp.take("what happens at this tick (press, release, axis, command, expect, snapshot, hash, full_hash, end)");
+  uint8_t slot = 0;
+  if (word->text == "slot") {
+    // `T slot K press ...`: an input or command of slot K's pilot.
+    if (s.header.slots == 0) lp.fail(*word, "'slot' lines need a 'slots N' header line (a network match)");
+    slot = static_cast<uint8_t>(integer_in(lp, lp.take("slot number"), "slot", 0, uint64_t(s.header.slots - 1)));
+    word = &lp.take("the slot's input or command (press, release, axis, command)");
+    if (word->text != "press" && word->text != "release" && word->text != "axis" && word->text != "command")
+      lp.fail(*word, "a slot line is press, release, axis or command, got '" + word->text + "'");
+  }
+  const Token& verb = *word;
   const std::string& v = verb.text;
   if (v == "press" || v == "release") {
     InputEvent e;
     e.tick = tick;
     e.kind = v == "press" ? InputEvent::Kind::Press : InputEvent::Kind::Release;
     e.button = choose(lp, lp.take("button name"), "button", kButtons, &button_name);
+    e.slot = slot;
     e.src = src;
     lp.done(v + " " + button_name(e.button));
     s.inputs.push_back(e);
@@ -397,6 +436,7 @@ void parse_stamped_line(LineParser& lp, uint64_t tick, const SourceLine& src, Sc
     double x = number(lp, t, "axis value");
     if (x < -1.0 || x > 1.0) lp.fail(t, "axis value must be in [-1, 1], got " + t.text);
     e.value = quantise_axis(x);
+    e.slot = slot;
     e.src = src;
     lp.done("the axis value");
     s.inputs.push_back(e);
@@ -404,6 +444,7 @@ void parse_stamped_line(LineParser& lp, uint64_t tick, const SourceLine& src, Sc
     CommandEvent c;
     c.tick = tick;
     c.command = choose(lp, lp.take("command name"), "command", kCommands, &command_name);
+    c.slot = slot;
     c.src = src;
     lp.done(std::string("command ") + command_name(c.command));
     s.commands.push_back(c);
@@ -486,11 +527,11 @@ Script parse_script(const std::string& text, const std::string& path, const Sett
     const Token& first = lp.tokens[0];
     if (!have_version) {
       if (first.text != "arcfire-replay")
-        lp.fail(first, "a replay script starts with 'arcfire-replay " + std::to_string(kFormatVersion) + "', got '" +
+        lp.fail(first, "a replay script starts with 'arcfire-replay " + std::to_string(kFirstFormatVersion) + "', got '" +
                            first.text + "'");
       lp.next = 1;
       s.header.version = static_cast<int>(
-          integer_in(lp, lp.take("format version"), "format version", kFormatVersion, kFormatVersion));
+          integer_in(lp, lp.take("format version"), "format version", kFirstFormatVersion, kFormatVersion));
       lp.done("the format version");
       have_version = true;
       continue;
@@ -514,7 +555,7 @@ Script parse_script(const std::string& text, const std::string& path, const Sett
     parse_stamped_line(lp, last_tick, src, s);
   }
   if (!have_version)
-    throw InputError(path + ":1:1: empty script; it starts with 'arcfire-replay " + std::to_string(kFormatVersion) + "'");
+    throw InputError(path + ":1:1: empty script; it starts with 'arcfire-replay " + std::to_string(kFirstFormatVersion) + "'");
   if (s.header.level.empty()) throw InputError(path + ":1:1: the header has no 'level' line");
   return s;
 }

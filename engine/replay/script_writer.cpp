@@ -152,7 +152,7 @@ bool Header::same_content(const Header& o) const {
          snapshot_height == o.snapshot_height && particle_budget == o.particle_budget &&
          lightning_interval == o.lightning_interval && substeps == o.substeps && preset == other_preset &&
          same_settings(settings, o.settings) && mods == o.mods && tolerance == o.tolerance &&
-         snapshots_like == o.snapshots_like;
+         snapshots_like == o.snapshots_like && slots == o.slots && pilots == o.pilots;
 }
 
 bool Script::same_content(const Script& o) const {
@@ -196,11 +196,21 @@ std::string header_text(const Header& h) {
     s += "tolerance " + std::to_string(h.tolerance->max_channel_diff) + "/255 " +
          shortest_number_text(h.tolerance->min_percent) + "%\n";
   if (!h.snapshots_like.empty()) s += "snapshots_like " + h.snapshots_like + "\n";
+  if (h.slots > 0) s += "slots " + std::to_string(h.slots) + "\n";
+  for (const PilotLine& p : h.pilots) {
+    s += "pilot " + std::to_string(p.slot) + " " + quoted(p.name) + "\n";
+    if (p.drop) s += "drop " + std::to_string(p.slot) + " " + std::to_string(*p.drop) + "\n";
+  }
   return s;
 }
 
+// "T" or, for another slot than the player's, "T slot K".
+static std::string stamp(uint64_t tick, uint8_t slot) {
+  return std::to_string(tick) + (slot ? " slot " + std::to_string(slot) : "");
+}
+
 std::string input_event_line(const InputEvent& e) {
-  std::string s = std::to_string(e.tick);
+  std::string s = stamp(e.tick, e.slot);
   switch (e.kind) {
     case InputEvent::Kind::Press: return s + " press " + button_name(e.button) + "\n";
     case InputEvent::Kind::Release: return s + " release " + button_name(e.button) + "\n";
@@ -210,7 +220,7 @@ std::string input_event_line(const InputEvent& e) {
 }
 
 std::string command_line(const CommandEvent& c) {
-  return std::to_string(c.tick) + " command " + command_name(c.command) + "\n";
+  return stamp(c.tick, c.slot) + " command " + command_name(c.command) + "\n";
 }
 
 std::string hash_line(const HashCheck& h) {
@@ -227,7 +237,7 @@ void apply_input(InputState& state, const InputEvent& e) {
   }
 }
 
-std::string input_diff_lines(uint64_t tick, const InputState& before, const InputState& after) {
+std::string input_diff_lines(uint64_t tick, const InputState& before, const InputState& after, uint8_t slot) {
   std::string s;
   for (Button b : {kFirePrimary, kFireSecondary, kAfterburner, kFlightAssist}) {
     bool was = before.buttons & b, is = after.buttons & b;
@@ -236,6 +246,7 @@ std::string input_diff_lines(uint64_t tick, const InputState& before, const Inpu
     e.tick = tick;
     e.kind = is ? InputEvent::Kind::Press : InputEvent::Kind::Release;
     e.button = b;
+    e.slot = slot;
     s += input_event_line(e);
   }
   for (int a = 0; a < kAxisCount; ++a)
@@ -245,6 +256,7 @@ std::string input_diff_lines(uint64_t tick, const InputState& before, const Inpu
       e.kind = InputEvent::Kind::Axis;
       e.axis = static_cast<Axis>(a);
       e.value = after.axes[a];
+      e.slot = slot;
       s += input_event_line(e);
     }
   return s;

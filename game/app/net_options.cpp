@@ -14,8 +14,7 @@ void define_net_options(CLI::App& app, NetOptions& n) {
   app.add_option("--name", n.name, "network match: the pilot's name (up to 24 printable characters)");
   app.add_option("--net-pilot", n.pilot, "headless network match: 'scripted' flies the deterministic test pilot")
       ->check(CLI::IsMember({"scripted"}));
-  app.add_option("--match-record", n.match_record, "network match: write the match record (all pilots' inputs) here");
-  app.add_option("--replay-match", n.replay_match, "headless: re-simulate a match record and check its hashes");
+  app.add_option("--match-record", n.match_record, "network match: write the match record (a replay script of all pilots' inputs) here");
 }
 
 }  // namespace arc

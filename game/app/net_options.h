@@ -1,5 +1,5 @@
 // game/app/net_options.h — the network match's command line: --host, --join, --port, --players,
-// --name, --net-pilot, --match-record and --replay-match (net_options.cpp, run by net_run.cpp).
+// --name, --net-pilot and --match-record (net_options.cpp, run by net_run.cpp).
 #pragma once
 #include <string>
 
@@ -16,8 +16,7 @@ struct NetOptions {
   int players = 2;             // pilots, the host's included (a headless host without --net-pilot flies none)
   std::string name;            // the pilot's name ("" : "Pilot")
   std::string pilot;           // "scripted": the deterministic test pilot; "": no input
-  std::string match_record;    // where the match's record goes ("" : net_match_SLOT.txt in the working folder)
-  std::string replay_match;    // --replay-match: re-simulate a record and check its hashes
+  std::string match_record;    // where the match's record goes ("" : net_match_SLOT.replay in the working folder)
   bool active() const { return host || !join.empty(); }
 };
 

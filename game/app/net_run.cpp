@@ -174,8 +174,8 @@ int play(const AppOptions& o, Wire& wire, const Match& m, bool host) {
   enet_host_flush(wire.host());
 
   const RollbackSession& rs = peer.session();
-  const std::string record = !o.net.match_record.empty() ? o.net.match_record : "net_match_" + std::to_string(m.local) + ".txt";
-  write_file_atomic(record, match_record_text(rs, m.level, rs.game().world().seed, m.names));
+  const std::string record = !o.net.match_record.empty() ? o.net.match_record : "net_match_" + std::to_string(m.local) + ".replay";
+  write_file_atomic(record, match_record_text(rs, m.level, m.names, ticks));
   const int64_t fin = std::min<int64_t>(rs.final_tick(), ticks);
   std::printf("net: slot %d final tick %lld hash %s rollbacks %llu resimulated %llu ticks %llu compared %llu bytes_out %llu\n",
               m.local, (long long)fin, fin > 0 ? hex(rs.hash_at(fin)).c_str() : "-", (unsigned long long)rs.stats().rollbacks,
@@ -349,16 +349,6 @@ int join_match(const AppOptions& o) {
 }  // namespace
 
 int run_net(const AppOptions& o) {
-  if (!o.net.replay_match.empty()) {
-    const MatchReplayResult r = replay_match(o.net.replay_match, o.game);
-    std::printf("replay-match: %lld ticks, %lld hashes checked, last hash %s\n", (long long)r.ticks,
-                (long long)r.hashes_checked, hex(r.last_hash).c_str());
-    if (r.first_bad_tick >= 0) {
-      std::fprintf(stderr, "arcfire: %s: hash differs at tick %lld\n", o.net.replay_match.c_str(), (long long)r.first_bad_tick);
-      return 1;
-    }
-    return 0;
-  }
   if (o.net.host && !o.net.join.empty()) throw InputError("--host and --join: one at a time");
   if (!o.headless) throw InputError("--host / --join: network matches run with --headless in this build");
   return o.net.host ? host_match(o) : join_match(o);

@@ -1,5 +1,5 @@
-// game/app/net_run.h — `arcfire --host` / `--join`: a network match over ENet, and
-// `--replay-match`: a match record re-simulated and its hashes checked.
+// game/app/net_run.h — `arcfire --host` / `--join`: a network match over ENet; every peer
+// writes the match as a replay script (game/net/match_record.h) that `--replay` plays.
 //
 // Topology: every pilot connects to the host, and the host relays each pilot's packets to the
 // others (a star). One connection per pilot goes through NAT and firewalls where a full mesh

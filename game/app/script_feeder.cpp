@@ -118,8 +118,32 @@ GameOptions script_game_options(const replay::Script& s, const Settings& setting
   return o;
 }
 
+// A network match's tick: each slot's held input and commands, the AI in the slots no pilot
+// flies (or flies no longer).
+void ScriptFeeder::step_match(Game& game, uint64_t t) {
+  const replay::Script& s = *script_;
+  const size_t slots = size_t(s.header.slots);
+  if (held_slots_.empty()) {
+    if (game.slot_count() != slots)
+      throw InputError(s.path + ": the script is a match over " + std::to_string(slots) + " slots; its level has " +
+                       std::to_string(game.slot_count()));
+    held_slots_.resize(slots);
+  }
+  for (; next_input_ < s.inputs.size() && s.inputs[next_input_].tick == t; ++next_input_)
+    replay::apply_input(held_slots_[s.inputs[next_input_].slot], s.inputs[next_input_]);
+  std::vector<SlotInput> in(slots);
+  for (size_t k = 0; k < slots; ++k) in[k].input = to_input_frame(held_slots_[k]);
+  for (; next_command_ < s.commands.size() && s.commands[next_command_].tick == t; ++next_command_)
+    in[s.commands[next_command_].slot].commands.push_back(static_cast<Command>(s.commands[next_command_].command));
+  std::vector<bool> flying(slots, false);
+  for (const replay::PilotLine& p : s.header.pilots) flying[size_t(p.slot)] = !p.drop || t < *p.drop;
+  if (flying != flying_) game.set_pilots(flying_ = flying);
+  game.step_slots(in);
+}
+
 void ScriptFeeder::step(Game& game, uint64_t t) {
   const replay::Script& s = *script_;
+  if (s.header.slots > 0) return step_match(game, t);
   for (; next_input_ < s.inputs.size() && s.inputs[next_input_].tick == t; ++next_input_)
     replay::apply_input(held_, s.inputs[next_input_]);
   std::vector<Command> commands;

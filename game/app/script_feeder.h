@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "core/settings.h"
 #include "game/sim/game.h"
@@ -42,13 +43,17 @@ GameOptions script_game_options(const replay::Script& script, const Settings& se
 class ScriptFeeder {
  public:
   explicit ScriptFeeder(const replay::Script& script) : script_(&script) {}
-  // Applies the lines stamped `tick`, then steps the game once.
+  // Applies the lines stamped `tick`, then steps the game once (a match: every slot's input).
   void step(Game& game, uint64_t tick);
 
  private:
+  void step_match(Game& game, uint64_t tick);
   const replay::Script* script_;
   size_t next_input_ = 0, next_command_ = 0;
   replay::InputState held_;
+  std::vector<replay::InputState> held_slots_;  // a match's, by slot
+  std::vector<bool> flying_;                    // the slots pilots fly at the last step
+
 };
 
 }  // namespace arc

@@ -1,179 +1,91 @@
-// game/net/match_record.cpp — writing and replaying match records (match_record.h).
+// game/net/match_record.cpp — a match's record as a replay script (match_record.h).
 #include "game/net/match_record.h"
 
-#include <cstdio>
-#include <sstream>
+#include <charconv>
+#include <cmath>
 
-#include "core/error.h"
-#include "core/input_file.h"
-#include "core/json.h"
+#include "core/data_layers.h"
+#include "game/sim/world.h"
+#include "replay/script.h"
 
 namespace arc {
 namespace {
 
-std::string hex(uint64_t v) {
-  char b[17];
-  std::snprintf(b, sizeof b, "%016llx", static_cast<unsigned long long>(v));
-  return b;
+replay::InputState state_of(const InputFrame& f) {
+  replay::InputState s;
+  s.axes = {f.pitch, f.yaw, f.roll, f.throttle, f.strafe_x, f.strafe_y};
+  s.buttons = f.buttons;
+  return s;
 }
 
-void write_input(std::ostream& o, int64_t t, int slot, const SlotInput& s) {
-  const InputFrame& f = s.input;
-  o << "in " << t << ' ' << slot;
-  for (int8_t a : {f.pitch, f.yaw, f.roll, f.throttle, f.strafe_x, f.strafe_y}) o << ' ' << int(a);
-  o << ' ' << f.buttons;
-  for (Command c : s.commands) o << ' ' << int(c);
-  o << '\n';
+// A pilot's name as one word of a script: printable, no quotes, within 64 characters.
+std::string script_name(std::string n) {
+  for (char& c : n)
+    if (c < 0x20 || c > 0x7e || c == '"') c = '_';
+  if (n.size() > 64) n.resize(64);
+  return n.empty() ? "Pilot" : n;
 }
 
-[[noreturn]] void fail(const std::string& path, int line, const std::string& what) {
-  throw InputError(path + ":" + std::to_string(line) + ": " + what);
-}
-
-int64_t number(const std::string& path, int line, std::istream& in, int64_t lo, int64_t hi, const char* what) {
-  std::string tok;
-  if (!(in >> tok)) fail(path, line, std::string("missing ") + what);
-  size_t used = 0;
-  long long v = 0;
-  try {
-    v = std::stoll(tok, &used);
-  } catch (const std::exception&) {
-    used = 0;
+replay::Header match_header(const RollbackSession& s, const std::string& level, const std::vector<std::string>& names) {
+  const World& w = s.game().world();
+  replay::Header h;
+  h.version = replay::kFormatVersion;
+  h.level = level;
+  h.seed = w.seed;
+  h.tick_rate = static_cast<int>(std::lround(1.0 / w.dt));
+  h.difficulty = difficulty_name(static_cast<Difficulty>(w.difficulty));
+  h.ship = w.options.ship;
+  h.loadout = w.options.loadout;
+  for (const ModLayer& m : data_layers().mods()) h.mods.push_back({m.name, m.hash});
+  // What the simulation ran under, so the record replays under any --quality.
+  h.particle_budget = w.options.particle_budget;
+  h.lightning_interval = w.options.lightning_interval;
+  h.substeps = w.options.substeps;
+  if (w.options.cull_distance != GameOptions{}.cull_distance) {
+    char text[32];
+    char* end = std::to_chars(text, text + sizeof text, w.options.cull_distance).ptr;
+    h.settings.push_back({"particles.cull_distance", std::string(text, size_t(end - text))});
   }
-  if (used != tok.size() || v < lo || v > hi)
-    fail(path, line, std::string(what) + " must be an integer in " + std::to_string(lo) + ".." + std::to_string(hi) + ", got '" + tok + "'");
-  return v;
+  h.slots = s.config().slots;
+  for (int k = 0; k < h.slots; ++k) {
+    if (!s.config().piloted[size_t(k)]) continue;
+    replay::PilotLine p{k, script_name(size_t(k) < names.size() ? names[size_t(k)] : ""), std::nullopt};
+    // The first step the AI flies is drop + 1 in the script's ticks.
+    if (s.drop_tick(k) != RollbackSession::kNever) p.drop = uint64_t(std::max<int64_t>(s.drop_tick(k) - 1, 0));
+    h.pilots.push_back(p);
+  }
+  return h;
 }
 
 }  // namespace
 
-std::string match_record_text(const RollbackSession& s, const std::string& level, uint64_t seed,
-                              const std::vector<std::string>& names, int hash_every) {
-  std::ostringstream o;
-  const int slots = s.config().slots;
-  const int64_t end = s.final_tick();
-  o << "arcfire-match " << kMatchRecordVersion << "\nlevel " << level << "\nseed " << seed << "\nslots " << slots << '\n';
-  for (int k = 0; k < slots; ++k) {
-    if (!s.config().piloted[size_t(k)]) continue;
-    o << "pilot " << k << ' ' << (size_t(k) < names.size() && !names[size_t(k)].empty() ? names[size_t(k)] : "Pilot") << '\n';
-    if (s.drop_tick(k) != RollbackSession::kNever) o << "drop " << k << ' ' << s.drop_tick(k) << '\n';
-  }
-  std::vector<SlotInput> last(static_cast<size_t>(slots));
-  for (int64_t t = 1; t <= end; ++t) {
-    for (int k = 0; k < slots; ++k) {
-      if (!s.config().piloted[size_t(k)] || t >= s.drop_tick(k)) continue;
-      const auto& in = s.inputs(k);
-      if (t > int64_t(in.size())) continue;
-      const SlotInput& cur = in[size_t(t - 1)];
-      if (t == 1 || !(cur == last[size_t(k)]) || !cur.commands.empty()) write_input(o, t, k, cur);
-      last[size_t(k)] = cur;
-      last[size_t(k)].commands.clear();
+std::string match_record_text(const RollbackSession& s, const std::string& level, const std::vector<std::string>& names,
+                              int64_t last_tick, int hash_every) {
+  const replay::Header h = match_header(s, level, names);
+  std::string out = replay::header_text(h) + "# network match\n";
+  const int64_t end = std::max<int64_t>(std::min(s.final_tick(), last_tick), 0);
+  std::vector<replay::InputState> held(size_t(h.slots));
+  // Lines stamped T: the inputs and commands of step T + 1, then the hash of the state after T steps.
+  for (int64_t t = 0; t <= end; ++t) {
+    const int64_t step = t + 1;
+    for (const replay::PilotLine& p : h.pilots) {
+      const auto& known = s.inputs(p.slot);
+      if (step > end || step >= s.drop_tick(p.slot) || step > int64_t(known.size())) continue;
+      const SlotInput& in = known[size_t(step - 1)];
+      const replay::InputState now = state_of(in.input);
+      out += replay::input_diff_lines(uint64_t(t), held[size_t(p.slot)], now, uint8_t(p.slot));
+      held[size_t(p.slot)] = now;
     }
-    if (t % hash_every == 0 || t == end) o << "hash " << t << ' ' << hex(s.hash_at(t)) << '\n';
-  }
-  o << "end " << end << '\n';
-  return o.str();
-}
-
-// Long: one pass over the record's lines, each kind checked where it is read.
-MatchReplayResult replay_match(const std::string& path, const GameOptions& base) {
-  std::istringstream file(read_text_file(path, 256u << 20, "a match record"));
-  std::string line_text, level;
-  int line = 0, slots = -1;
-  uint64_t seed = 0;
-  bool have_seed = false;
-  std::vector<bool> piloted;
-  std::vector<int64_t> drops;
-  struct Entry {
-    int64_t tick;
-    int kind;  // 0 input, 1 hash, 2 end
-    int slot;
-    SlotInput in;
-    uint64_t hash;
-    int line;
-  };
-  std::vector<Entry> body;
-  while (std::getline(file, line_text)) {
-    ++line;
-    std::istringstream in(line_text);
-    std::string key;
-    if (!(in >> key)) continue;
-    if (line == 1) {
-      if (key != "arcfire-match") fail(path, line, "a match record starts with 'arcfire-match 1'");
-      number(path, line, in, kMatchRecordVersion, kMatchRecordVersion, "format version");
-    } else if (key == "level") {
-      in >> level;
-    } else if (key == "seed") {
-      seed = uint64_t(number(path, line, in, 0, 0xFFFFFFFFll, "seed"));
-      have_seed = true;
-    } else if (key == "slots") {
-      slots = int(number(path, line, in, 1, 8, "slot count"));
-      piloted.assign(size_t(slots), false);
-      drops.assign(size_t(slots), RollbackSession::kNever);
-    } else if (slots < 0) {
-      fail(path, line, "'slots N' comes before '" + key + "'");
-    } else if (key == "pilot") {
-      piloted[size_t(number(path, line, in, 0, slots - 1, "slot"))] = true;
-    } else if (key == "drop") {
-      const int k = int(number(path, line, in, 0, slots - 1, "slot"));
-      drops[size_t(k)] = number(path, line, in, 1, 100000000, "tick");
-    } else if (key == "in" || key == "hash" || key == "end") {
-      Entry e{number(path, line, in, 1, 100000000, "tick"), key == "in" ? 0 : key == "hash" ? 1 : 2, 0, {}, 0, line};
-      if (!body.empty() && e.tick < body.back().tick) fail(path, line, "lines must be in tick order");
-      if (e.kind == 0) {
-        e.slot = int(number(path, line, in, 0, slots - 1, "slot"));
-        InputFrame& f = e.in.input;
-        for (int8_t* a : {&f.pitch, &f.yaw, &f.roll, &f.throttle, &f.strafe_x, &f.strafe_y})
-          *a = int8_t(number(path, line, in, -127, 127, "axis"));
-        f.buttons = uint16_t(number(path, line, in, 0, 15, "buttons"));
-        std::string more;
-        while (in >> more) {
-          std::istringstream one(more);
-          e.in.commands.push_back(Command(number(path, line, one, 1, int(Command::OrderEngage), "command")));
-        }
-      } else if (e.kind == 1) {
-        std::string h;
-        in >> h;
-        if (h.size() != 16 || h.find_first_not_of("0123456789abcdef") != std::string::npos)
-          fail(path, line, "a hash is 16 lowercase hex digits, got '" + h + "'");
-        e.hash = std::stoull(h, nullptr, 16);
-      }
-      body.push_back(std::move(e));
-    } else {
-      fail(path, line, "unknown line '" + key + "'; allowed: level, seed, slots, pilot, drop, in, hash, end");
+    for (const replay::PilotLine& p : h.pilots) {
+      const auto& known = s.inputs(p.slot);
+      if (step > end || step >= s.drop_tick(p.slot) || step > int64_t(known.size())) continue;
+      for (Command c : known[size_t(step - 1)].commands)
+        if (c != Command::None) out += replay::command_line({uint64_t(t), replay::ScriptCommand(c), uint8_t(p.slot), {}});
     }
+    if (t > 0 && (t % hash_every == 0 || t == end)) out += replay::hash_line({uint64_t(t), false, s.hash_at(t), {}});
   }
-  if (level.empty() || slots < 0 || body.empty() || body.back().kind != 2)
-    fail(path, line, "a match record needs 'level', 'slots' and an 'end' line");
-  GameOptions options = base;
-  if (have_seed) options.seed_override = true, options.seed = seed;
-  std::string level_file = input_path_exists(level) ? level : base.root_dir + "/" + level;
-  Game game = Game::load_level(level_file, options);
-  if (game.slot_count() != size_t(slots)) fail(path, 4, "the level has " + std::to_string(game.slot_count()) + " slots, the record " + std::to_string(slots));
-  std::vector<SlotInput> held(static_cast<size_t>(slots));
-  MatchReplayResult r;
-  size_t i = 0;
-  std::vector<bool> flying = piloted;
-  game.set_pilots(flying);
-  for (int64_t t = 1; i < body.size(); ++t) {
-    for (; i < body.size() && body[i].tick == t && body[i].kind == 0; ++i) held[size_t(body[i].slot)] = body[i].in;
-    std::vector<bool> want(static_cast<size_t>(slots));
-    for (int k = 0; k < slots; ++k) want[size_t(k)] = piloted[size_t(k)] && t < drops[size_t(k)];
-    if (want != flying) game.set_pilots(flying = want);
-    game.step_slots(held);
-    for (SlotInput& h : held) h.commands.clear();
-    r.ticks = t;
-    r.last_hash = game.hash();
-    for (; i < body.size() && body[i].tick == t; ++i) {
-      if (body[i].kind == 1) {
-        ++r.hashes_checked;
-        if (body[i].hash != r.last_hash && r.first_bad_tick < 0) r.first_bad_tick = t;
-      } else if (body[i].kind == 2) {
-        i = body.size();
-      }
-    }
-  }
-  return r;
+  out += replay::end_line(uint64_t(end));
+  return out;
 }
 
 }  // namespace arc

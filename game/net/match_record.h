@@ -1,18 +1,27 @@
-// game/net/match_record.h — every network match as a replay: all slots' inputs by tick.
+// game/net/match_record.h — every network match as a replay script: all slots' inputs by tick.
 //
-// A match record is text, versioned like the replay scripts:
-//   arcfire-match 1
+// A match record is a replay script of format version 2 (tests/replays/README.md): the
+// level, seed, difficulty and simulation settings the match ran under, `slots N`, a `pilot`
+// line per piloted slot (and `drop` where its pilot left), each slot's input changes and
+// commands as `T slot K ...` lines, the state hash every `hash_every` ticks and at the end:
+//   arcfire-replay 2
 //   level levels/arena.json
 //   seed 3303
+//   ...
 //   slots 8
-//   pilot 0 Host            one line per piloted slot: its slot and name
-//   drop 1 920              slot 1's pilot left; the AI flies it from tick 920 on
-//   in 1 0 0 0 0 64 0 0 1   tick, slot, pitch yaw roll throttle strafe_x strafe_y, buttons, then
-//                           its commands by number (only ticks where a slot's input changed)
-//   hash 60 0123456789abcdef
-//   end 3600
-// replay_match() steps the level with those inputs, as the match did, and checks every hash
-// line: `arcfire --replay-match FILE` (exit 1 at the first differing tick).
+//   pilot 0 Host
+//   pilot 1 Pilot1
+//   drop 1 919              the AI flies slot 1's ship from step 920 on
+//   0 axis throttle 0.5039  slot 0's input for step 1
+//   0 slot 1 press fire_primary
+//   60 hash 0123456789abcdef
+//   3600 end
+// `arcfire --headless --replay FILE` plays it like any replay (hash checks, --audio-out,
+// snapshots added by hand).
+//
+// Example, compiled as NetMatchRecord.Example in tests/unit/replay/test_match_replay.cpp:
+//   const std::string text = match_record_text(session, "levels/duel.json", {"Host", "Pilot1"});
+//   replay::Script s = replay::parse_script(text, "match.replay", all_settings());
 #pragma once
 #include <cstdint>
 #include <string>
@@ -22,20 +31,11 @@
 
 namespace arc {
 
-constexpr int kMatchRecordVersion = 1;
-
-// The record of `session` up to its last final tick, hashes every `hash_every` ticks and at the end.
-std::string match_record_text(const RollbackSession& session, const std::string& level, uint64_t seed,
-                              const std::vector<std::string>& names, int hash_every = 60);
-
-struct MatchReplayResult {
-  int64_t ticks = 0;
-  int64_t hashes_checked = 0;
-  int64_t first_bad_tick = -1;  // −1: every hash matched
-  uint64_t last_hash = 0;
-};
-
-// InputError "path:line: ..." for a malformed record.
-MatchReplayResult replay_match(const std::string& path, const GameOptions& options);
+// The record of `session` up to its last final tick, or `last_tick` if that is sooner (a match
+// of N ticks whose peers ran on while they said goodbye); `level` as the replay should name it
+// (relative to the data root), `names` by slot.
+std::string match_record_text(const RollbackSession& session, const std::string& level,
+                              const std::vector<std::string>& names, int64_t last_tick = RollbackSession::kNever,
+                              int hash_every = 60);
 
 }  // namespace arc

@@ -58,6 +58,7 @@ std::string error_of(const std::string& text) {
 }
 
 const std::string kHead = "arcfire-replay 1\nlevel levels/duel.json\n";
+const std::string kMatch = "arcfire-replay 2\nlevel levels/duel.json\n";
 
 }  // namespace
 
@@ -202,7 +203,18 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(
         BadCase{"empty", "# nothing\n", "s.replay:1:1: empty script"},
         BadCase{"no_magic", "level x\n", "s.replay:1:1: a replay script starts with 'arcfire-replay 1'"},
-        BadCase{"bad_version", "arcfire-replay 2\n", "s.replay:1:16: format version must be an integer in [1, 1]"},
+        BadCase{"bad_version", "arcfire-replay 3\n", "s.replay:1:16: format version must be an integer in [1, 2]"},
+        BadCase{"slots_in_v1", kHead + "slots 2\n", "s.replay:3:1: 'slots' needs version 2 of the format"},
+        BadCase{"slots_range", kMatch + "slots 9\n", "s.replay:3:7: slots must be an integer in [1, 8]"},
+        BadCase{"pilot_first", kMatch + "pilot 0 Host\n", "s.replay:3:1: 'pilot' lines come after a 'slots N' line"},
+        BadCase{"pilot_slot", kMatch + "slots 2\npilot 2 Host\n", "s.replay:4:7: slot must be an integer in [0, 1]"},
+        BadCase{"pilot_twice", kMatch + "slots 2\npilot 1 A\npilot 1 B\n", "s.replay:5:1: slot 1 has two 'pilot' lines"},
+        BadCase{"drop_no_pilot", kMatch + "slots 2\ndrop 1 30\n", "s.replay:4:1: slot 1 has no 'pilot' line"},
+        BadCase{"slot_line_alone", kHead + "0 slot 1 press fire_primary\n",
+                "s.replay:3:3: 'slot' lines need a 'slots N' header line"},
+        BadCase{"slot_range", kMatch + "slots 2\n0 slot 2 press fire_primary\n", "s.replay:4:8: slot must be an integer in [0, 1]"},
+        BadCase{"slot_expect", kMatch + "slots 2\n0 slot 1 expect alive P\n",
+                "s.replay:4:10: a slot line is press, release, axis or command, got 'expect'"},
         BadCase{"no_level", "arcfire-replay 1\n0 end\n", "s.replay:2:1: the header has no 'level' line"},
         BadCase{"unknown_header", kHead + "  colour red\n", "s.replay:3:3: unknown header key 'colour'"},
         BadCase{"dup_header", kHead + "level b\n", "s.replay:3:1: header key 'level' appears twice"},
@@ -269,6 +281,30 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"mod_no_hash", kHead + "mod red_rally\n", "s.replay:3:14: missing the mod's content hash"},
         BadCase{"mod_twice", kHead + "mod a 0123456789abcdef\nmod a 0123456789abcdef\n", "s.replay:4:5: mod 'a' is named twice"}),
     [](const ::testing::TestParamInfo<BadCase>& i) { return std::string(i.param.name); });
+
+// Version 2: a network match's slots, pilots and per-slot input; it writes back the same.
+TEST(ReplayParse, MatchLines) {
+  const Script s = parse_script(kMatch +
+                                    "slots 3\npilot 0 Host\npilot 2 \"Red Two\"\ndrop 2 90\n"
+                                    "0 axis throttle 0.5\n0 slot 2 press fire_primary\n+5 slot 2 command countermeasure\n"
+                                    "5 command target_next\n120 end\n",
+                                "s.replay", known());
+  EXPECT_EQ(s.header.version, 2);
+  EXPECT_EQ(s.header.slots, 3);
+  ASSERT_EQ(s.header.pilots.size(), 2u);
+  EXPECT_EQ(s.header.pilots[1].name, "Red Two");
+  EXPECT_EQ(s.header.pilots[1].drop, 90u);
+  EXPECT_FALSE(s.header.pilots[0].drop);
+  ASSERT_EQ(s.inputs.size(), 2u);
+  EXPECT_EQ(s.inputs[0].slot, 0);
+  EXPECT_EQ(s.inputs[1].slot, 2);
+  ASSERT_EQ(s.commands.size(), 2u);
+  EXPECT_EQ(s.commands[0].slot, 2);
+  EXPECT_EQ(s.commands[1].slot, 0);
+  const std::string text = write_script(s);
+  EXPECT_NE(text.find("0 slot 2 press fire_primary\n"), std::string::npos);
+  EXPECT_TRUE(parse_script(text, "w.replay", known()).same_content(s));
+}
 
 TEST(ReplayParse, MissingFileIsAnInputError) {
   EXPECT_THROW(load_script("tests/replays/no_such_script.replay", known()), arc::InputError);
