@@ -93,7 +93,8 @@ void Menu::fill_net_page(MenuPage& p) const {
     case MenuScreen::Lobby:
       p.title = lobby_.title;
       p.subtitle = lobby_.status;
-      if (lobby_.title == "LOBBY") p.lines.push_back(std::string("Slot Team  Ship          Pilot                    Ping"));
+      // The rows' columns (5, 11, 25, 50 characters at the items' larger scale) under the heading's.
+      if (lobby_.title == "LOBBY") p.lines.push_back(std::string("Slot Team   Ship            Pilot                        Ping"));
       p.hint = lobby_.host ? "Enter on Launch: start the match   Esc: leave"
                            : "Enter on a free slot: fly it   Esc: leave";
       break;

@@ -322,7 +322,7 @@ void NetMatch::poll_join_lobby(double now_ms) {
       }
       slots_ = w->slot_count, local_ = w->slot, input_delay_ = w->input_delay, seed_ = w->seed, names_ = w->names;
       pings_.resize(size_t(slots_), 0.0);
-      status_ = "In the lobby of " + cfg_.join + " (" + level_ + "); waiting for the host's launch";
+      status_ = cfg_.join + ", " + level_ + ": waiting for the launch";
       if (w->start_tick == 1) {
         std::vector<bool> piloted(size_t(slots_), false);
         for (int s = 0; s < slots_; ++s) piloted[size_t(s)] = (w->piloted_mask >> s) & 1;

@@ -47,7 +47,7 @@ NetLobbyView lobby_view(const NetMatch& m, bool standalone) {
   v.host = m.host();
   v.standalone = standalone;
   for (const NetPilotRow& r : m.pilots()) {
-    const std::string ping = r.name.empty() ? "" : r.slot == 0 && r.you ? "host" : std::to_string(int(std::lround(r.ping_ms))) + " ms";
+    const std::string ping = r.name.empty() ? "" : r.slot == 0 ? "host" : std::to_string(int(std::lround(r.ping_ms))) + " ms";
     v.rows.push_back(padded(std::to_string(r.slot), 5) + padded(r.team, 6) + padded(r.ship, 14) +
                      padded(r.name.empty() ? "(AI)" : r.name + (r.you ? " (you)" : ""), 25) + ping);
     v.free.push_back(r.name.empty());
@@ -70,6 +70,8 @@ void WindowSession::start_net(NetMatch::Config c, bool standalone) {
   net_over_at_ = -1;
   net_rollback_samples_.clear();
   menu_->open_lobby(lobby_view(*net_, standalone));
+  std::printf("net: %s\n", net_->status().c_str());
+  std::fflush(stdout);
 }
 
 // The levels of the catalog with two or more slots (a "slots" list): the ones worth hosting.
@@ -256,9 +258,8 @@ void WindowSession::fill_net_hud() {
     net_rollback_samples_.erase(net_rollback_samples_.begin());
   const auto& [t0, r0] = net_rollback_samples_.front();
   const double rate = now - t0 > 0.05 ? double(p.session().stats().rollbacks - r0) / (now - t0) : 0.0;
-  char b[160];
-  std::snprintf(b, sizeof b, "net: ping %.0f ms  rollbacks %.1f/s  tick %lld  confirmed %lld", worst_ping, rate,
-                (long long)p.session().tick(), (long long)p.session().confirmed());
+  char b[96];
+  std::snprintf(b, sizeof b, "ping %.0f ms  rollbacks %.1f/s", worst_ping, rate);
   n.stats = b;
 }
 

@@ -283,14 +283,16 @@ void WindowSession::carry_out(const std::vector<MenuRequest>& requests) {
         case K::MainMenu: back_to_main_menu(); break;
         case K::NetHost: {
           NetMatch::Config c;
-          c.host = true, c.level = r.level, c.port = r.steps, c.name = menu_->settings().net_name;
+          c.host = true, c.level = r.level, c.port = r.steps;
+          c.name = options_.net.name.empty() ? menu_->settings().net_name : options_.net.name;
           c.game.difficulty = r.difficulty, c.game.difficulty_override = true;
           start_net(c, false);
           break;
         }
         case K::NetJoin: {
           NetMatch::Config c;
-          c.join = r.level, c.name = menu_->settings().net_name;
+          c.join = r.level;
+          c.name = options_.net.name.empty() ? menu_->settings().net_name : options_.net.name;
           start_net(c, false);
           break;
         }

@@ -331,7 +331,7 @@ void layout_hud(const World& w, const CameraView& cam, const HudState& state, do
   if (state.show_fps) {
     text(h, width - 120, 12, 1.0, kHudWhite, fmt("%.0f fps", state.fps));
     if (!state.frame_stats.empty()) text(h, width / 2 - 300, 4, 0.8, kHudWhite, state.frame_stats);
-    if (state.net.on) marks.panel("net stats", [&] { hud_net_stats(state.net, width, height, h); });
+    if (state.net.on && !state.net.scoreboard) marks.panel("net stats", [&] { hud_net_stats(state.net, width, height, h); });
   }
   if (state.show_hud) {
     const Projector pr = Projector::of(cam, width, height);
@@ -371,8 +371,9 @@ void layout_hud(const World& w, const CameraView& cam, const HudState& state, do
   if (state.show_outcome) hud_outcome(w, width, height, h);
   marks.panel("notice", [&] { hud_notice(state, width, height, h); });
   if (state.show_hud) hud_subtitle(state, width, height, h);
-  marks.panel("error banner",
-              [&] { hud_error_banner(state, feed_y, state.rules.kill_feed_lines, width, height, h); });
+  if (!state.net.scoreboard)  // back when the scoreboard's key is let go
+    marks.panel("error banner",
+                [&] { hud_error_banner(state, feed_y, state.rules.kill_feed_lines, width, height, h); });
   scale_hud(h, scale);
   if (panels) marks.boxes(*panels);
 }

@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "game/render/hud_draw.h"
+#include "game/render/hud_radar.h"
 #include "game/render/screen_projection.h"
 #include "game/render/team_colors.h"
 #include "game/sim/world.h"
@@ -44,7 +45,7 @@ void hud_net_names(const World& w, const NetHud& net, const Projector& pr, int w
 void hud_scoreboard(const World& w, const NetHud& net, int width, int height, HudLayer& h) {
   if (net.rows.empty()) return;
   const std::string head = pad("Pilot", 26) + pad("Team", 8) + pad("Kills", 7) + pad("Deaths", 8) + pad("Damage", 8) + "Ping";
-  const double row = 18, w_px = double(head.size()) * kGlyphAdvance + 24;
+  const double row = 15, w_px = double(head.size()) * kGlyphAdvance + 24;
   const double h_px = (double(net.rows.size()) + 2) * row + 24;
   const double x0 = std::max(4.0, (width - w_px) / 2), y0 = std::max(4.0, (height - h_px) / 2);
   quad(h, x0, y0, std::min(w_px, width - 8.0), std::min(h_px, height - 8.0), {0, 0, 0, 0.7f});
@@ -62,10 +63,11 @@ void hud_scoreboard(const World& w, const NetHud& net, int width, int height, Hu
   }
 }
 
-void hud_net_stats(const NetHud& net, int width, int /*height*/, HudLayer& h) {
+// Right-aligned above the radar, clear of the top panels at every size.
+void hud_net_stats(const NetHud& net, int width, int height, HudLayer& h) {
   if (net.stats.empty()) return;
   const double x = std::max(4.0, width - 12 - net.stats.size() * kGlyphAdvance);
-  text(h, x, 30, 1.0, kHudWhite, net.stats);
+  text(h, x, radar_rect(width, height).y - 36, 1.0, kHudWhite, net.stats);
 }
 
 }  // namespace arc

@@ -14,12 +14,12 @@ for tool in xvfb-run xdotool; do
 done
 rm -rf "$out"; mkdir -p "$out/config_a" "$out/config_b"
 port=$(( 30000 + ($$ % 20000) ))
-xvfb-run -a -s "-screen 0 1400x900x24" bash -c '
+xvfb-run -a -s "-screen 0 1700x900x24" bash -c '
   arcfire="$1"; out="$2"; port="$3"; shots="$4"
   # wait_for FILE REGEX SECONDS: until a line of FILE matches (false on timeout).
   wait_for() { for _ in $(seq 1 $(( $3 * 10 ))); do grep -qE "$2" "$1" 2>/dev/null && return 0; sleep 0.1; done; return 1; }
   window_of() { for _ in $(seq 1 600); do w=$(xdotool search --onlyvisible --pid "$1" 2>/dev/null | head -n 1); [ -n "$w" ] && { echo "$w"; return 0; }; sleep 0.1; done; return 1; }
-  keys() { local w="$1"; shift; xdotool windowactivate --sync "$w" 2>/dev/null || xdotool windowfocus --sync "$w"; xdotool "$@"; }
+  keys() { local w="$1"; shift; xdotool windowfocus --sync "$w"; xdotool mousemove --window "$w" 2 2; xdotool "$@"; }
   shot() {  # shot WINDOW NAME: F12, then the new file under out/screenshots is copied as NAME
     [ -n "$shots" ] || return 0
     local before; before=$(ls out/screenshots 2>/dev/null | wc -l)
@@ -35,6 +35,7 @@ xvfb-run -a -s "-screen 0 1400x900x24" bash -c '
     --match-record "$out/match_1.txt" >"$out/join.log" 2>&1 &
   join=$!
   win_b=$(window_of $join) || { echo "net_window: no pilot window"; cat "$out/join.log"; kill $host $join; exit 1; }
+  xdotool windowmove --sync "$win_a" 0 0; xdotool windowmove --sync "$win_b" 820 0  # apart: each takes its own keys
   if [ -n "$shots" ]; then wait_for "$out/host.log" "Ann joined" 60 && shot "$win_a" netui_lobby_host; fi
   for f in host join; do
     wait_for "$out/$f.log" "^net: slot [0-9] of" 60 || { echo "net_window: the $f did not start the match"; cat "$out/host.log" "$out/join.log"; kill $host $join; exit 1; }
