@@ -195,7 +195,7 @@ void NetMatch::send_lobby() {
   enet_host_flush(wire_->host);
 }
 
-// Long: the host's lobby events (connect, the pilot's Hello checked, slot picks, leaving).
+// The host's lobby events (connect, the pilot's Hello checked, slot picks, leaving).
 void NetMatch::poll_host_lobby(double now_ms) {
   const uint64_t build = build_content_id(ARCFIRE_VERSION);
   bool changed = false;
@@ -265,7 +265,7 @@ void NetMatch::poll_host_lobby(double now_ms) {
   if (cfg_.players > 0 && in >= cfg_.players) launch();
 }
 
-// Long: a pilot's lobby (connecting, the level checked and the Hello sent, the lobby's
+// A pilot's lobby (connecting, the level checked and the Hello sent, the lobby's
 // changes, the launch, a refusal).
 void NetMatch::poll_join_lobby(double now_ms) {
   if (last_lobby_ms_ < -1e8) last_lobby_ms_ = now_ms;

@@ -87,7 +87,7 @@ std::vector<NetMission> WindowSession::net_missions() const {
   return out;
 }
 
-// Long: the match's phases as the window follows them (lobby on the menu, the launch, messages,
+// The match's phases as the window follows them (lobby on the menu, the launch, messages,
 // the end by --ticks, outcome, host leaving or desync, and what the window does after).
 void WindowSession::update_net() {
   if (!net_) return;
