@@ -38,7 +38,7 @@ void hud_net_names(const World& w, const NetHud& net, const Projector& pr, int w
     if (!pr.project(s.position + glm::dvec3(0, s.cls->shield_radius + 4.0, 0), px)) continue;
     if (px.x < 0 || px.x > width || px.y < 0 || px.y > height) continue;
     const double x = px.x - name.size() * kGlyphAdvance * 0.5;
-    text(h, x, px.y - 16, 1.0, name_colour(w, s), name);
+    text(h, x, px.y - 32, 1.0, name_colour(w, s), name);  // above the target brackets (14 units at the least)
   }
 }
 

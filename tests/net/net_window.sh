@@ -4,8 +4,8 @@
 # the command line, the other joins it; the match launches when both are in, each pilot flies
 # by keys for a few seconds (the normal input path), F3 and the held scoreboard key are pressed,
 # and at tick 900 both print their final line: the same tick and hash. Both match records must
-# replay headless to their hashes. With SHOTS_DIR, F12 screenshots of the lobby, the match with
-# F3 and the scoreboard are copied there. Waits for conditions (log lines, windows), not for
+# replay headless to their hashes. With SHOTS_DIR, F12 screenshots of the match (the pilot's name
+# over its ship, F3) and the scoreboard are copied there. Waits for conditions (log lines, windows), not for
 # fixed times. Exits 77 (ctest: skipped) when xvfb-run or xdotool is missing.
 set -u
 arcfire="$(realpath "$1")"; out="$(realpath -m "$2")"; shots="${3:-}"
@@ -36,15 +36,15 @@ xvfb-run -a -s "-screen 0 1700x900x24" bash -c '
   join=$!
   win_b=$(window_of $join) || { echo "net_window: no pilot window"; cat "$out/join.log"; kill $host $join; exit 1; }
   xdotool windowmove --sync "$win_a" 0 0; xdotool windowmove --sync "$win_b" 820 0  # apart: each takes its own keys
-  if [ -n "$shots" ]; then wait_for "$out/host.log" "Ann joined" 60 && shot "$win_a" netui_lobby_host; fi
   for f in host join; do
     wait_for "$out/$f.log" "^net: slot [0-9] of" 60 || { echo "net_window: the $f did not start the match"; cat "$out/host.log" "$out/join.log"; kill $host $join; exit 1; }
   done
+  shot "$win_a" netui_names_host  # the other ship ahead, its pilot named over it
   # Each pilot flies: throttle up, turns, fire; F3 on for the figures, the scoreboard held.
   keys "$win_a" keydown w keydown Left; keys "$win_b" keydown w keydown Right
   keys "$win_b" key F3; keys "$win_a" key F3
   keys "$win_b" mousedown 1; sleep 1; keys "$win_b" mouseup 1
-  shot "$win_b" netui_f3_names
+  shot "$win_b" netui_f3_pilot
   keys "$win_b" keydown h; sleep 0.3; shot "$win_b" netui_scoreboard; keys "$win_b" keyup h
   keys "$win_a" keyup Left keyup w; keys "$win_b" keyup Right keyup w
   fail=0
