@@ -146,6 +146,7 @@ std::vector<MenuRequest> Menu::net_accept(Item item, int index) {
       return {{K::SaveSettings}, {K::NetJoin, net_address_}};
     }
     case Item::LobbySlot:
+      if (lobby_.title != "LOBBY") return {};  // the results' rows
       if (lobby_.host || size_t(index) >= lobby_.free.size() || !lobby_.free[size_t(index)]) {
         message_ = lobby_.host ? "The host flies slot 0" : "Pick a free slot";
         return {};

@@ -134,11 +134,7 @@ NetMatch::NetMatch(Config c) : cfg_(std::move(c)), wire_(std::make_unique<Wire>(
 }
 
 NetMatch::~NetMatch() {
-  try {
-    if (phase_ == Phase::Playing) finish();
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "arcfire: %s\n", e.what());
-  }
+  if (peer_ && !finished_) leave();
   if (wire_->host) {
     for (size_t i = 0; i < wire_->host->peerCount; ++i)
       if (wire_->host->peers[i].state == ENET_PEER_STATE_CONNECTED) enet_peer_disconnect_now(&wire_->host->peers[i], 0);
@@ -431,8 +427,8 @@ std::string NetMatch::final_line(int64_t up_to) const {
   return b;
 }
 
-std::string NetMatch::finish(const std::string& record_path) {
-  if (!peer_ || finished_) return "";
+// A Bye to the others (the host's ends the match for them), and the connections closed.
+void NetMatch::leave() {
   finished_ = true;
   if (!peer_->ended()) peer_->leave();
   for (NetPeer::Outgoing& out : peer_->take_outgoing())
@@ -441,6 +437,11 @@ std::string NetMatch::finish(const std::string& record_path) {
   for (int s = 0; s < slots_; ++s)
     if (wire_->by_slot[size_t(s)]) enet_peer_disconnect_later(wire_->by_slot[size_t(s)], 0);
   enet_host_flush(wire_->host);
+}
+
+std::string NetMatch::finish(const std::string& record_path) {
+  if (!peer_ || finished_) return "";
+  leave();
   const RollbackSession& rs = peer_->session();
   const std::string record = !record_path.empty() ? record_path : "net_match_" + std::to_string(local_) + ".txt";
   write_file_atomic(record, match_record_text(rs, level_, rs.game().world().seed, names_));

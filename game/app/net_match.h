@@ -85,7 +85,8 @@ class NetMatch {
   // host leaving, a desync.
   std::vector<std::string> take_messages();
   // Leaves the match (a Bye), writes the match record (and on a desync the state dump);
-  // returns the record's path ("" before the launch). Called once; the destructor calls it too.
+  // returns the record's path ("" before the launch or when done before). The destructor
+  // leaves without writing (the window calls finish() when a match ends or it closes).
   std::string finish(const std::string& record_path = "");
   // "net: slot S final tick T hash H rollbacks R ..." as the headless match prints it.
   std::string final_line(int64_t up_to_tick) const;
@@ -97,6 +98,7 @@ class NetMatch {
   void send_lobby();
   void start_match();
   void over(const std::string& why);
+  void leave();
 
   struct Wire;
   Config cfg_;

@@ -25,6 +25,7 @@ namespace arc {
 
 WindowSession::~WindowSession() {
   if (recorder_) recorder_->stop(*game_, "");
+  if (net_ && net_->peer_ready() && window_) end_net("The window closed");  // the match record is kept
   report_screenshots(screenshots_.wait());
 }
 
@@ -201,10 +202,10 @@ void WindowSession::step_ticks(double frame_seconds) {
 
 void WindowSession::draw() {
   const World& w = shown_game().world();
-  if (net_playing()) fill_net_hud();
-  else hud_.net = NetHud{};
   sync_pause_screen();  // what the frame's ticks and requests changed: the volume, a resume
   hud_.error_banner = reload_.banner();
+  if (net_playing()) fill_net_hud();  // a desync's line takes the banner
+  else hud_.net = NetHud{};
   hud_.notice = notices_.notice(window_->time_seconds());
   const std::optional<Subtitle> line = audio_->subtitle();
   hud_.subtitle = line ? line->speaker + ": " + line->text : "";

@@ -187,7 +187,6 @@ void WindowSession::end_net(const std::string& why) {
   if (!record.empty()) std::printf("net: match record %s\n", record.c_str());
   std::fflush(stdout);
   notices_.show(why + (record.empty() ? "" : "; replay kept in " + record), net_over_at_, 8.0);
-  if (net_->peer_ready() && net_->peer().desync_tick()) hud_.error_banner = "desync at tick " + std::to_string(*net_->peer().desync_tick());
 }
 
 void WindowSession::step_net_ticks(double frame_seconds) {
@@ -241,6 +240,7 @@ void WindowSession::fill_net_hud() {
   const NetPeer& p = net_->peer();
   const World& w = p.session().game().world();
   n.on = true;
+  if (p.desync_tick()) hud_.error_banner = "desync at tick " + std::to_string(*p.desync_tick());
   n.scoreboard = devices_.keys[size_t(key_code("H"))];
   const std::vector<NetPilotRow> pilots = net_->pilots();
   double worst_ping = 0;

@@ -1,7 +1,7 @@
 // tests/unit/app/test_net_match.cpp — NetMatch (game/app/net_match.h) over ENet on the loopback
 // in one process: a pilot joins the host's lobby, is listed with its name and slot, picks
-// another slot, the host launches, and both step the match to the same hashes; a pilot with a
-// bad name is refused before any socket opens.
+// another slot, the host launches, and both step the match to the same hashes; a forced desync
+// and the host leaving are said; a pilot with a bad name is refused before any socket opens.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -73,6 +73,36 @@ TEST(NetMatch, HostAndJoin) {
   EXPECT_EQ(host.peer().session().hash_at(120), pilot.peer().session().hash_at(120));
   EXPECT_FALSE(host.peer().desync_tick());
   EXPECT_FALSE(pilot.peer().desync_tick());
+}
+
+// One peer's state altered at tick 60: both stop with "desync at tick 60" for the screen, and
+// the host's leaving reaches the pilot as the match's end when there is no desync.
+TEST(NetMatch, ADesyncAndTheHostLeavingAreSaid) {
+  for (bool desync : {true, false}) {
+    const int port = 40000 + getpid() % 20000 + (desync ? 2 : 3);
+    NetMatch host(host_config(port));
+    NetMatch::Config jc;
+    jc.join = "127.0.0.1:" + std::to_string(port);
+    jc.name = "Ann";
+    jc.game.root_dir = data_root();
+    NetMatch pilot(jc);
+    ASSERT_TRUE(poll_until(host, pilot, [&] { return host.pilots_in() == 2; }));
+    ASSERT_TRUE(host.launch());
+    ASSERT_TRUE(poll_until(host, pilot, [&] { return pilot.phase() == NetMatch::Phase::Playing; }));
+    if (desync) pilot.peer_mut().corrupt_at(60);
+    const double until = now_ms() + 20000;
+    while (now_ms() < until && pilot.phase() == NetMatch::Phase::Playing) {
+      host.poll(now_ms()), pilot.poll(now_ms());
+      host.frame(SlotInput{}, now_ms()), pilot.frame(SlotInput{}, now_ms());
+      if (!desync && host.peer().session().tick() == 90) host.finish(testing::TempDir() + "net_match_host.txt");
+      std::this_thread::sleep_for(std::chrono::milliseconds(4));
+    }
+    ASSERT_EQ(pilot.phase(), NetMatch::Phase::Over);
+    const std::vector<std::string> said = pilot.take_messages();
+    ASSERT_FALSE(said.empty());
+    if (desync) EXPECT_EQ(said.back(), "desync at tick 60");
+    else EXPECT_EQ(said.back().rfind("The host left at tick", 0), 0u) << said.back();
+  }
 }
 
 TEST(NetMatch, ABadNameIsRefused) {
