@@ -195,7 +195,7 @@ void refuse_contradictions(const CLI::App& app, const AppOptions& o) {
       {"--ship", !replay, "not with --replay: the script names the ship"},
       {"--loadout", !replay, "not with --replay: the script names the loadout"},
       {"--size", !replay, "not with --replay: the script decides the snapshot size"},
-      {"--ticks", headless_run || serialization, "only with --headless, --demo or --serialization-test"},
+      {"--ticks", headless_run || serialization || o.net.active(), "only with --headless, --demo, --serialization-test, --host or --join"},
       {"--summary", headless_run, "only with --headless or --demo"},
       {"--every", headless_run && !o.no_render && (o.demo || given("--out")),
        "only with --headless and --out, drawing frames (not with --no-render)"},

@@ -25,7 +25,8 @@ int main(int argc, char** argv) {
   arc::AppOptions options;
   try {
     if (auto code = arc::parse_command_line(argc, argv, options)) return *code;
-    if (options.net.active()) return arc::run_net(options);
+    // A network match in a window is the window's (window_net.cpp); headless, net_run's.
+    if (options.net.active() && options.headless) return arc::run_net(options);
     if (!options.replay_path.empty()) return arc::run_replay(arc::ReplayRunOptions(options));
     if (options.serialization_test > 0) return arc::run_serialization_test(arc::SerializationTestOptions(options));
     if (!options.menu_script.empty()) return arc::run_menu_script(options);

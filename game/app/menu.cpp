@@ -79,6 +79,10 @@ const char* menu_screen_name(MenuScreen s) {
     case MenuScreen::Pause: return "pause";
     case MenuScreen::Closed: return "closed";
     case MenuScreen::QuickBattle: return "quick";
+    case MenuScreen::Multiplayer: return "multiplayer";
+    case MenuScreen::NetHost: return "host";
+    case MenuScreen::NetJoin: return "join";
+    case MenuScreen::Lobby: return "lobby";
   }
   return "?";
 }
@@ -123,10 +127,14 @@ std::vector<const MissionInfo*> Menu::listed() const {
 std::vector<Menu::Item> Menu::items() const {
   switch (screen_) {
     case MenuScreen::Main:
-      // Quick battle before Quit: the rows above keep their places.
-      if (has_quick_) return {Item::Play, Item::Effects, Item::Settings, Item::QuickBattle, Item::Quit};
-      return {Item::Play, Item::Effects, Item::Settings, Item::Quit};
+      // Multiplayer and Quick battle before Quit: the rows above keep their places.
+      if (has_quick_) return {Item::Play, Item::Effects, Item::Settings, Item::Multiplayer, Item::QuickBattle, Item::Quit};
+      return {Item::Play, Item::Effects, Item::Settings, Item::Multiplayer, Item::Quit};
     case MenuScreen::QuickBattle: return quick_items();
+    case MenuScreen::Multiplayer:
+    case MenuScreen::NetHost:
+    case MenuScreen::NetJoin:
+    case MenuScreen::Lobby: return net_items();
     case MenuScreen::Missions:
     case MenuScreen::Effects: {
       std::vector<Item> v(listed().size(), screen_ == MenuScreen::Missions ? Item::Mission : Item::Effect);
@@ -200,6 +208,7 @@ std::string Menu::item_label(Item item, int index) const {
     case Item::Next: return "Next mission: " + next_mission(catalog_, chosen_)->title;
     case Item::ToMenu: return "Menu";
     default: {
+      if (const std::string net = net_label(item, index); !net.empty()) return net;
       if (const std::string quick = quick_label(item); !quick.empty()) return quick;
       const std::string pause = pause_label(item);
       return pause.empty() ? settings_label(item, index) : pause;
@@ -265,6 +274,10 @@ MenuPage Menu::page() const {
     case MenuScreen::Advanced: fill_settings_page(p); break;
     case MenuScreen::Results: fill_results_page(p); break;
     case MenuScreen::QuickBattle: fill_quick_page(p); break;
+    case MenuScreen::Multiplayer:
+    case MenuScreen::NetHost:
+    case MenuScreen::NetJoin:
+    case MenuScreen::Lobby: fill_net_page(p); break;
     case MenuScreen::Pause:
       p.title = pause_.outcome.empty() ? "PAUSED" : pause_.outcome;
       p.title_tone = pause_.outcome_tone;
@@ -280,6 +293,7 @@ void Menu::go(MenuScreen s) {
   selection_ = 0;
   confirm_ = -1;
   capturing_ = false;
+  editing_ = false;
 }
 
 void Menu::open_main() {
@@ -290,10 +304,11 @@ void Menu::open_main() {
 std::vector<MenuRequest> Menu::handle(const UiInput& in) {
   if (screen_ == MenuScreen::Closed) return {};
   if (capturing_) {
-    if (in.kind == UiInput::Kind::Bind) return bind(in.code);
+    if (in.kind == UiInput::Kind::Bind) return editing_ ? net_type(in.code) : bind(in.code);
     if (in.kind == UiInput::Kind::Key && in.key == UiKey::Back) {
       capturing_ = false;
-      message_ = "Remap cancelled";
+      message_ = editing_ ? "" : "Remap cancelled";
+      editing_ = false;
     }
     return {};
   }
@@ -380,6 +395,20 @@ std::vector<MenuRequest> Menu::accept(Item item, int index) {
     case Item::QuickAsteroids:
     case Item::QuickDifficulty:
     case Item::QuickLaunch: return quick_accept(item);
+    case Item::Multiplayer:
+    case Item::NetHostPage:
+    case Item::NetJoinPage:
+    case Item::NetName:
+    case Item::NetMission:
+    case Item::NetDifficulty:
+    case Item::NetPort:
+    case Item::NetOpen:
+    case Item::NetAddress:
+    case Item::NetRecent:
+    case Item::NetConnect:
+    case Item::LobbySlot:
+    case Item::NetLaunch:
+    case Item::NetLeave: return net_accept(item, index);
     default: return settings_accept(item);
   }
 }
@@ -403,6 +432,9 @@ std::vector<MenuRequest> Menu::adjust(Item item, int step) {
     case Item::QuickCapital:
     case Item::QuickAsteroids:
     case Item::QuickDifficulty: return quick_adjust(item, step);
+    case Item::NetMission:
+    case Item::NetDifficulty:
+    case Item::NetPort: return net_adjust(item, step);
     default: return settings_adjust(item, step);
   }
 }
@@ -419,6 +451,14 @@ std::vector<MenuRequest> Menu::back() {
       break;
     }
     case MenuScreen::Main: break;
+    case MenuScreen::Multiplayer:
+    case MenuScreen::NetHost:
+    case MenuScreen::NetJoin:
+    case MenuScreen::Lobby: {
+      std::vector<MenuRequest> out;
+      net_back(out);
+      return out;
+    }
     case MenuScreen::QuickBattle: {
       go(MenuScreen::Main);
       const std::vector<Item> rows = items();

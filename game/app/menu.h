@@ -57,7 +57,8 @@ enum class MenuScreen {
   Main, Missions, Effects, Briefing,
   Settings, Graphics, Sound, Controls, Keys, Advanced,  // Settings and its pages
   Results, Pause, Closed,
-  QuickBattle  // game/app/menu_quick.cpp
+  QuickBattle,  // game/app/menu_quick.cpp
+  Multiplayer, NetHost, NetJoin, Lobby  // game/app/menu_net.cpp
 };
 const char* menu_screen_name(MenuScreen s);
 
@@ -80,7 +81,10 @@ struct MenuRequest {
   enum class Kind {
     Launch, Quit, SaveSettings, SaveProgress, ApplyBindings,   // main menu, results
     Resume, Restart, SetDifficulty, ToggleMute, StepVolume, MainMenu,  // pause screen
-    SaveQuickBattle  // the quick battle setup changed: Menu::quick_setup() to keep
+    SaveQuickBattle,  // the quick battle setup changed: Menu::quick_setup() to keep
+    // Multiplayer (menu_net.cpp): host `level` at `difficulty` on port `steps`; join the address
+    // in `level`; ask for slot `steps`; the host's launch; leave the lobby or the match.
+    NetHost, NetJoin, NetPick, NetLaunch, NetLeave
   };
   MenuRequest(Kind k, std::string level_path = {}, Difficulty d = Difficulty::Normal, int step_count = 0)
       : kind(k), level(std::move(level_path)), difficulty(d), steps(step_count) {}
@@ -91,6 +95,21 @@ struct MenuRequest {
   int steps;              // StepVolume: tenths of full volume, + louder
   // Launch of a quick battle: the level text to write at `level` (made if missing) before it starts.
   std::string generated;
+};
+
+// The lobby as the window shows it (from game/app/net_match.h): one row per slot.
+struct NetLobbyView {
+  std::string title = "LOBBY";    // "RESULTS" when the match is decided
+  std::string status;             // whom it waits for, or why the match could not start
+  std::vector<std::string> rows;  // "1  blue  Red Leader   Ann   42 ms"
+  std::vector<bool> free;         // per row: no pilot flies the slot (a pilot may pick it)
+  bool host = false;              // Launch is offered
+  bool standalone = false;        // started from the command line: leaving closes the game
+};
+
+// A mission a network match may be hosted on (a level with two or more slots).
+struct NetMission {
+  std::string path, title;
 };
 
 class Menu {
@@ -179,6 +198,29 @@ class Menu {
   std::string quick_player() const;  // the quick battle's ship: the setup's if open, else an open one
   std::vector<std::string> unlocked_ships_;
   std::vector<std::string> new_ships_;  // unlocked by the result on the results screen
+  // menu_net.cpp: Multiplayer, Host, Join and the lobby.
+ public:
+  void set_net_missions(std::vector<NetMission> m) { net_missions_ = std::move(m); }
+  // The lobby screen (opened once, then refreshed by the window each frame).
+  void open_lobby(NetLobbyView v);
+  void set_lobby(NetLobbyView v) { lobby_ = std::move(v); }
+  void close_lobby();  // the match launched
+  // Editing a text row (the name, the address): keys arrive as UiInput::bind like a remap.
+  bool editing() const { return editing_; }
+
+ private:
+  std::vector<Item> net_items() const;
+  std::string net_label(Item item, int index) const;
+  void fill_net_page(MenuPage& p) const;
+  std::vector<MenuRequest> net_accept(Item item, int index);
+  std::vector<MenuRequest> net_adjust(Item item, int step);
+  std::vector<MenuRequest> net_type(int code);
+  bool net_back(std::vector<MenuRequest>& out);
+  std::vector<NetMission> net_missions_;
+  NetLobbyView lobby_;
+  int net_mission_ = 0, net_port_ = 27960;
+  std::string net_address_;
+  bool editing_ = false;
   int ship_choice_ = 0, loadout_choice_ = 0;
 
   std::vector<MissionInfo> catalog_;

@@ -18,7 +18,11 @@ enum class Menu::Item {
   Retry, Next, ToMenu,                                             // results
   Resume, Restart, PauseDifficulty, PauseSound, Volume, MainMenu,  // pause (and Quit)
   QuickBattle, QuickPlayer, QuickWingmen, QuickWing, QuickEnemies,  // quick battle
-  QuickEnemy, QuickCapital, QuickAsteroids, QuickDifficulty, QuickLaunch
+  QuickEnemy, QuickCapital, QuickAsteroids, QuickDifficulty, QuickLaunch,
+  Multiplayer, NetHostPage, NetJoinPage, NetName,                   // multiplayer (menu_net.cpp)
+  NetMission, NetDifficulty, NetPort, NetOpen,                      // host
+  NetAddress, NetRecent, NetConnect,                                // join
+  LobbySlot, NetLaunch, NetLeave                                    // lobby
 };
 
 }  // namespace arc

@@ -178,6 +178,17 @@ UserSettings parse_settings(const std::string& text, const std::string& path,
     if (list.size() > kMaxUserMods) m->fail("'" + m->name() + "' lists at most " + std::to_string(kMaxUserMods) + " folders");
     for (const JsonValue& v : list) s.mods.push_back(v.string());
   }
+  if (auto n = r.get("net_name")) {
+    s.net_name = n->string();
+    bool ok = !s.net_name.empty() && s.net_name.size() <= 24;
+    for (char c : s.net_name) ok = ok && c >= 0x20 && c <= 0x7e;
+    if (!ok) n->fail("'" + n->name() + "' must be 1 to 24 printable ASCII characters, got \"" + s.net_name + "\"");
+  }
+  if (auto h = r.get("recent_hosts")) {
+    const std::vector<JsonValue> list = h->array();
+    if (list.size() > 5) h->fail("'" + h->name() + "' lists at most 5 addresses");
+    for (const JsonValue& v : list) s.recent_hosts.push_back(v.string());
+  }
   r.finish();
   return s;
 }
@@ -227,6 +238,8 @@ std::string settings_json(const UserSettings& s) {
   j["render"] = nlohmann::ordered_json::object();
   for (const auto& [key, value] : s.render) j["render"][key] = value;
   if (!s.mods.empty()) j["mods"] = s.mods;
+  if (s.net_name != "Pilot") j["net_name"] = s.net_name;
+  if (!s.recent_hosts.empty()) j["recent_hosts"] = s.recent_hosts;
   return j.dump(2) + "\n";
 }
 

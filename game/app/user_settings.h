@@ -4,7 +4,8 @@
 //   settings.json  quality preset and single render settings over it, mouse sensitivity and Y
 //                  inversion, gamepad dead zone, field of view, fullscreen, vsync, the
 //                  developer panel's switch, the keys the player remapped (action → key)
-//                  and the mod folders to play with
+//                  the mod folders to play with, the pilot's network name ("net_name")
+//                  and the hosts last joined ("recent_hosts")
 //   progress.json  the best result per mission and difficulty
 // (quick_battle.json beside them, the last quick battle setup, is game/app/quick_battle.h's.)
 // Both are written atomically (core/file_writer.h write_file_atomic). A file that does not parse or
@@ -46,6 +47,8 @@ struct UserSettings {
   std::map<std::string, std::string> keys;  // remap action id (key_remap.h) → key name
   std::map<std::string, std::string> render;  // setting key (core/settings.h) → value, over the preset
   std::vector<std::string> mods;  // mod folders laid over the data in a window (core/data_layers.h) unless --mod is given
+  std::string net_name = "Pilot";          // the pilot's name in network matches (1..24 printable ASCII)
+  std::vector<std::string> recent_hosts;   // the addresses last joined, newest first (at most 5)
   bool operator==(const UserSettings&) const = default;
 };
 

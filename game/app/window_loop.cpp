@@ -25,6 +25,7 @@ namespace arc {
 
 WindowSession::~WindowSession() {
   if (recorder_) recorder_->stop(*game_, "");
+  if (net_ && net_->peer_ready() && window_) end_net("The window closed");  // the match record is kept
   report_screenshots(screenshots_.wait());
 }
 
@@ -96,6 +97,14 @@ void WindowSession::setup() {
         reload_.watch(d, std::string(dir) == "shaders" ? HotReload::Group::Shaders : HotReload::Group::Data);
   reload_.watch(options_.sounds_path, HotReload::Group::Sounds);
   reload_.update(window_->time_seconds());
+  if (menu_->has_main()) menu_->set_net_missions(net_missions());
+  if (options_.net.active()) {
+    NetMatch::Config c;
+    c.host = options_.net.host, c.level = options_.level, c.join = options_.net.join, c.port = options_.net.port;
+    c.players = options_.net.players;
+    c.name = options_.net.name.empty() ? user_.settings.net_name : options_.net.name;
+    start_net(c, true);
+  }
 }
 
 void WindowSession::update(double frame_seconds) {
@@ -110,14 +119,15 @@ void WindowSession::update(double frame_seconds) {
   sync_pause_screen();
   const bool menu_open = menu_->open();
   handle_actions(menu_->over_game());
-  if (menu_->open() || game_->paused()) input_->close_comms();  // the menu has the keys
+  if (menu_->open() || shown_game().paused()) input_->close_comms();  // the menu has the keys
   if (menu_open) update_menu();
+  update_net();
   prepare_launch();
   handle_sound_keys(menu_open);
   const bool f1 = presses_between(previous_devices_, devices_, key_code("F1")) > 0;
   if (f1 && f1_toggles_panel(options_.dev, menu_->settings().developer_panel, panel_->open())) panel_->toggle();
-  if (auto c = panel_gate_.follow(panel_->open(), !menu_->over_game(), game_->paused())) pending_.push_back(*c);
-  const bool capture = !game_->paused() && !menu_->open() && !panel_->open();
+  if (auto c = panel_gate_.follow(panel_->open(), !menu_->over_game(), shown_game().paused())) pending_.push_back(*c);
+  const bool capture = !shown_game().paused() && !menu_->open() && !panel_->open();
   if (capture != mouse_captured_) {
     window_->set_mouse_captured(capture);
     mouse_captured_ = capture;
@@ -129,8 +139,8 @@ void WindowSession::update(double frame_seconds) {
   reload_.update(window_->time_seconds());
   step_ticks(frame_seconds);
   // The menu theme under the title and settings; a decided fight's results keep its stinger.
-  audio_->set_menu(menu_->over_game() && game_->world().outcome == Outcome::Undecided);
-  audio_->frame(game_->world(), frame_seconds);
+  audio_->set_menu(menu_->over_game() && shown_game().world().outcome == Outcome::Undecided);
+  audio_->frame(shown_game().world(), frame_seconds);
   show_results_when_decided();
   notices_.count_frame(frame_seconds);
   hud_.fps = notices_.fps();
@@ -165,13 +175,15 @@ void WindowSession::handle_actions(bool over_game) {
         if (!over_game) pending_.push_back(Command::CameraPadlock);
         break;
       case AppAction::TogglePause:
-        if (!over_game) pending_.push_back(game_->paused() ? Command::Resume : Command::Pause);
+        if (net_playing()) net_escape();  // no pause in a network match
+        else if (!over_game) pending_.push_back(game_->paused() ? Command::Resume : Command::Pause);
         break;
     }
   }
 }
 
 void WindowSession::step_ticks(double frame_seconds) {
+  if (net_playing()) return step_net_ticks(frame_seconds);
   const int ticks = clock_->advance(frame_seconds);
   for (int i = 0; i < ticks; ++i) {
     InputFrame frame = input_->take_frame(ticks - i);
@@ -189,9 +201,11 @@ void WindowSession::step_ticks(double frame_seconds) {
 }
 
 void WindowSession::draw() {
-  const World& w = game_->world();
+  const World& w = shown_game().world();
   sync_pause_screen();  // what the frame's ticks and requests changed: the volume, a resume
   hud_.error_banner = reload_.banner();
+  if (net_playing()) fill_net_hud();  // a desync's line takes the banner
+  else hud_.net = NetHud{};
   hud_.notice = notices_.notice(window_->time_seconds());
   const std::optional<Subtitle> line = audio_->subtitle();
   hud_.subtitle = line ? line->speaker + ": " + line->text : "";
@@ -246,6 +260,7 @@ int run_window(const AppOptions& o) {
   frame_times.finish();
   if (stop_requested()) report_stop("at tick " + std::to_string(session.tick()));  // ~WindowSession ends the recording
   if (session.write_failed()) return kExitCheckFailed;
+  if (session.net_failed()) return kExitBadInput;
   return stop_requested() ? stop_exit_code() : kExitOk;
 }
 

@@ -281,6 +281,33 @@ void WindowSession::carry_out(const std::vector<MenuRequest>& requests) {
         case K::ToggleMute: audio_->toggle_mute(); break;
         case K::StepVolume: audio_->step_volume(r.steps); break;
         case K::MainMenu: back_to_main_menu(); break;
+        case K::NetHost: {
+          NetMatch::Config c;
+          c.host = true, c.level = r.level, c.port = r.steps;
+          c.name = options_.net.name.empty() ? menu_->settings().net_name : options_.net.name;
+          c.game.difficulty = r.difficulty, c.game.difficulty_override = true;
+          start_net(c, false);
+          break;
+        }
+        case K::NetJoin: {
+          NetMatch::Config c;
+          c.join = r.level;
+          c.name = options_.net.name.empty() ? menu_->settings().net_name : options_.net.name;
+          start_net(c, false);
+          break;
+        }
+        case K::NetPick:
+          if (net_) net_->pick_slot(r.steps);
+          break;
+        case K::NetLaunch:
+          if (net_) net_->launch();
+          break;
+        case K::NetLeave:
+          if (net_ && net_->peer_ready()) end_net("You left the match");
+          net_view(false);
+          net_.reset();
+          load_models_for(*game_);
+          break;
       }
     } catch (const InputError& e) {
       menu_->set_message(e.what());

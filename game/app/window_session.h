@@ -23,6 +23,7 @@
 #include "game/app/hot_reload.h"
 #include "game/app/input_bindings.h"
 #include "game/app/menu.h"
+#include "game/app/net_match.h"
 #include "game/app/scene_resources.h"
 #include "game/app/screen_notices.h"
 #include "game/app/session_recorder.h"
@@ -47,9 +48,10 @@ class WindowSession {
   void setup();
   bool open() const { return !window_->should_close(); }
   double time() const { return window_->time_seconds(); }
-  int64_t tick() const { return int64_t(game_->world().tick); }
+  int64_t tick() const { return int64_t(shown_game().world().tick); }
   FrameStats frame_stats() const { return renderer_->last_stats(); }
   bool write_failed() const { return write_failed_ || (recorder_ && recorder_->failed()); }
+  bool net_failed() const { return net_failed_; }
   // One frame's work before drawing: devices to input and actions, the menu or pause screen,
   // reloads of changed files, and the fixed-step ticks that `frame_seconds` of wall clock owe.
   void update(double frame_seconds);
@@ -63,6 +65,17 @@ class WindowSession {
   void sync_pause_screen();
   void step_ticks(double frame_seconds);
   void report_screenshots(const std::vector<ScreenshotWriter::Done>& shots);
+  // window_net.cpp: a network match (net_match.h) in the window, from the command line or the menu.
+  bool net_playing() const { return net_ && net_->peer_ready(); }
+  const Game& shown_game() const { return net_playing() ? net_->peer().session().game() : *game_; }
+  void start_net(NetMatch::Config c, bool standalone);
+  void update_net();
+  void step_net_ticks(double frame_seconds);
+  void net_view(bool on);  // the local slot's ship as the player and its own chase camera
+  void fill_net_hud();
+  void end_net(const std::string& why);
+  void net_escape();
+  std::vector<NetMission> net_missions() const;
   // window_session.cpp: the games and the menus' requests.
   std::unique_ptr<Renderer> make_renderer() const;
   void adopt_device_look();  // the first start's preset by device (device_look.h)
@@ -141,6 +154,19 @@ class WindowSession {
   ScreenshotWriter screenshots_{"out/screenshots", "arcfire"};  // F12, written in the background
   HotReload reload_;           // levels, ships, effects, shaders and sounds
   bool write_failed_ = false;  // a recording failed to write: the session exits 1
+  // The network match: the lobby, then the match the window shows (window_net.cpp).
+  std::unique_ptr<NetMatch> net_;
+  bool net_standalone_ = false;  // --host / --join: the window closes when the match ends
+  bool net_view_on_ = false;
+  ShipId net_saved_player_;
+  CameraRig net_saved_camera_, net_saved_prev_camera_, net_camera_, net_prev_camera_;
+  bool net_camera_known_ = false;
+  std::vector<std::pair<double, uint64_t>> net_rollback_samples_;  // window time, rollbacks so far
+  double net_escape_at_ = -1e9;
+  double net_over_at_ = -1;      // when the match ended (the window closes or returns 4 s later)
+  bool net_results_shown_ = false;
+  bool net_reported_ = false;
+  bool net_failed_ = false;      // refused or no host (command line): the session exits 2
 };
 
 }  // namespace arc

@@ -138,6 +138,10 @@ void put(Out& o, const Ping& p) { o.u8(p.from), o.u8(p.to), o.u8(p.pong ? 1 : 0)
 void put(Out& o, const Drop& p) { o.u8(p.slot), o.u32(p.from_tick); }
 void put(Out& o, const Desync& p) { o.u8(p.slot), o.u32(p.tick); }
 void put(Out& o, const Bye& p) { o.u8(p.slot), o.u32(p.tick); }
+void put(Out& o, const Lobby& p) {
+  o.u8(p.pick), o.u8(p.difficulty), o.u8(uint8_t(p.ping_ms.size()));
+  for (uint16_t ms : p.ping_ms) o.u16(ms);
+}
 
 uint8_t slot_of(In& in, const char* w) {
   uint8_t s = in.u8(w);
@@ -209,6 +213,16 @@ Packet get_packet(In& in, PacketType type) {
       p.slot = slot_of(in, "slot"), p.tick = in.tick("tick");
       return p;
     }
+    case PacketType::Lobby: {
+      Lobby p;
+      p.pick = slot_of(in, "pick");
+      p.difficulty = in.u8("difficulty");
+      if (p.difficulty > 2) in.fail("difficulty above 2");
+      const int n = in.u8("ping count");
+      if (n > kMaxSlots) in.fail("more pings than slots");
+      for (int i = 0; i < n && in.ok(); ++i) p.ping_ms.push_back(in.u16("ping"));
+      return p;
+    }
   }
   in.fail("unknown packet type");
   return Bye{};
@@ -236,7 +250,7 @@ std::optional<Decoded> decode(const uint8_t* data, size_t size, std::string* why
   if (version != kProtocolVersion)
     return refuse("protocol version " + std::to_string(version) + ", this build speaks " + std::to_string(kProtocolVersion));
   const uint8_t type = in.u8("type");
-  if (type < 1 || type > uint8_t(PacketType::Bye)) return refuse("unknown packet type " + std::to_string(type));
+  if (type < 1 || type > uint8_t(PacketType::Lobby)) return refuse("unknown packet type " + std::to_string(type));
   Decoded d;
   d.seq = in.u32("sequence");
   d.packet = get_packet(in, PacketType(type));

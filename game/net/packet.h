@@ -34,7 +34,7 @@ constexpr size_t kMaxNameBytes = 24;
 constexpr size_t kMaxTextBytes = 200;
 constexpr uint32_t kMaxTick = 100000000;          // 19 days at 60 Hz
 
-enum class PacketType : uint8_t { Hello = 1, Welcome, Reject, Inputs, Ping, Drop, Desync, Bye };
+enum class PacketType : uint8_t { Hello = 1, Welcome, Reject, Inputs, Ping, Drop, Desync, Bye, Lobby };
 
 // A pilot asks to join: what must match the host's exactly, and its name.
 struct Hello {
@@ -105,7 +105,17 @@ struct Bye {
   bool operator==(const Bye&) const = default;
 };
 
-using Packet = std::variant<Hello, Welcome, Reject, Inputs, Ping, Drop, Desync, Bye>;
+// The lobby before the launch. From a pilot: the slot it asks to fly (`pick`); from the host:
+// the match's difficulty (0 easy, 1 normal, 2 hard) and every slot's round trip to the host in
+// milliseconds (`ping_ms`, one per slot; 0 for none).
+struct Lobby {
+  uint8_t pick = 0;
+  uint8_t difficulty = 1;
+  std::vector<uint16_t> ping_ms;
+  bool operator==(const Lobby&) const = default;
+};
+
+using Packet = std::variant<Hello, Welcome, Reject, Inputs, Ping, Drop, Desync, Bye, Lobby>;
 
 struct Decoded {
   uint32_t seq = 0;

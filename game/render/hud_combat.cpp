@@ -163,7 +163,13 @@ void layout_combat_cues(const World& w, const Ship& me, const Projector& pr, con
   hit_markers(w, me, rules, crosshair, h);
 }
 
-void layout_kill_feed(const World& w, const Ship* me, const HudRules& rules, double x, double y, HudLayer& h) {
+void layout_kill_feed(const World& w, const Ship* me, const HudRules& rules, double x, double y, HudLayer& h,
+                      const std::map<uint32_t, std::string>* names) {
+  auto name = [&](const Ship& s) -> const std::string& {
+    if (names)
+      if (auto it = names->find(s.id.index()); it != names->end() && !it->second.empty()) return it->second;
+    return s.name;
+  };
   // The kills and the messages (wing replies, reinforcements), newest first, one list.
   struct Line {
     int64_t tick;
@@ -175,7 +181,7 @@ void layout_kill_feed(const World& w, const Ship* me, const HudRules& rules, dou
   for (const Ship& s : w.ships) {
     if (s.alive || s.death_tick < 0 || seconds_since(w, s.death_tick) >= rules.kill_feed_seconds) continue;
     const ShipId killer = s.last_attacker;
-    std::string t = killer && killer != s.id ? w.ship(killer).name + " destroyed " + s.name : s.name + " destroyed";
+    std::string t = killer && killer != s.id ? name(w.ship(killer)) + " destroyed " + name(s) : name(s) + " destroyed";
     const glm::vec4 col = !me ? kHudWhite : w.hostile(*me, s) ? kHudGreen : kHudRed;
     lines.push_back({s.death_tick, s.id.index(), std::move(t), col});
   }

@@ -15,6 +15,9 @@
 //                   newest first, under the objective, each for kill_feed_seconds.
 // Sizes are in canvas units (hud_draw.h).
 #pragma once
+#include <cstdint>
+#include <map>
+#include <string>
 #include <vector>
 #include <glm/vec2.hpp>
 
@@ -50,6 +53,8 @@ void layout_range_cue(HudLayer& h, glm::dvec2 c, double r, bool in_range, const 
 void layout_combat_cues(const World& w, const Ship& me, const Projector& pr, const HudRules& rules, double alpha,
                         double canvas_w, double canvas_h, HudLayer& h);
 // `me` (may be null) colours the entries: green for its side's kills, red for its losses.
-void layout_kill_feed(const World& w, const Ship* me, const HudRules& rules, double x, double y, HudLayer& h);
+// `names` (ship index → pilot), when given, names the pilots' ships in a network match.
+void layout_kill_feed(const World& w, const Ship* me, const HudRules& rules, double x, double y, HudLayer& h,
+                      const std::map<uint32_t, std::string>* names = nullptr);
 
 }  // namespace arc

@@ -331,6 +331,7 @@ void layout_hud(const World& w, const CameraView& cam, const HudState& state, do
   if (state.show_fps) {
     text(h, width - 120, 12, 1.0, kHudWhite, fmt("%.0f fps", state.fps));
     if (!state.frame_stats.empty()) text(h, width / 2 - 300, 4, 0.8, kHudWhite, state.frame_stats);
+    if (state.net.on && !state.net.scoreboard) marks.panel("net stats", [&] { hud_net_stats(state.net, width, height, h); });
   }
   if (state.show_hud) {
     const Projector pr = Projector::of(cam, width, height);
@@ -347,9 +348,14 @@ void layout_hud(const World& w, const CameraView& cam, const HudState& state, do
       if (w.mission) marks.panel("objectives", [&] { feed_y = hud_objectives(w, kLeftMargin, feed_y, h); });
     }
     labels(w, pr, width, height, h);
-    marks.panel("kill feed",
-                [&] { layout_kill_feed(w, flying ? &w.ship(focus) : nullptr, state.rules, kLeftMargin, feed_y, h); });
-    if (flying) {
+    if (state.net.on) hud_net_names(w, state.net, pr, width, height, h);
+    // The held scoreboard stands in for the panels while it is up.
+    if (state.net.scoreboard) marks.panel("scoreboard", [&] { hud_scoreboard(w, state.net, width, height, h); });
+    if (!state.net.scoreboard)
+      marks.panel("kill feed", [&] {
+        layout_kill_feed(w, flying ? &w.ship(focus) : nullptr, state.rules, kLeftMargin, feed_y, h, &state.net.names);
+      });
+    if (flying && !state.net.scoreboard) {
       const Ship& me = w.ship(focus);
       if (!w.paused) layout_combat_cues(w, me, pr, state.rules, alpha, width, height, h);
       const HudRect arrows = arrow_area(feed_y, state.rules.kill_feed_lines, width, height);
@@ -365,8 +371,9 @@ void layout_hud(const World& w, const CameraView& cam, const HudState& state, do
   if (state.show_outcome) hud_outcome(w, width, height, h);
   marks.panel("notice", [&] { hud_notice(state, width, height, h); });
   if (state.show_hud) hud_subtitle(state, width, height, h);
-  marks.panel("error banner",
-              [&] { hud_error_banner(state, feed_y, state.rules.kill_feed_lines, width, height, h); });
+  if (!state.net.scoreboard)  // back when the scoreboard's key is let go
+    marks.panel("error banner",
+                [&] { hud_error_banner(state, feed_y, state.rules.kill_feed_lines, width, height, h); });
   scale_hud(h, scale);
   if (panels) marks.boxes(*panels);
 }

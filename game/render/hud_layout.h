@@ -26,6 +26,7 @@
 
 #include "game/render/hud_aim.h"
 #include "game/render/hud_combat.h"
+#include "game/render/hud_net.h"
 #include "game/render/hud_radar.h"
 #include "game/render/hud_rules.h"
 #include "gfx/render_view.h"
@@ -55,6 +56,7 @@ struct HudState {
   // Remappable action id → its key's name ("target_nearest" → "R"), for training prompts
   // (hud_training.h); the app fills it from the live bindings.
   std::map<std::string, std::string> key_names;
+  NetHud net;  // a network match's names, figures and scoreboard (hud_net.h)
 };
 
 // A decided fight's verdict: "VICTORY" or "DEFEAT" for the player, else "TEAM NAME WINS".

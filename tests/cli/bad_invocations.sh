@@ -33,6 +33,6 @@ row "^arcfire: --record: only in a window" --headless --no-render --ticks 1 --re
 row "^arcfire: --every: only with --headless and --out" --headless --no-render --ticks 30 --every 30
 row "^arcfire: --out: not with --no-render" --headless --no-render --ticks 1 --out out/never
 row "^arcfire: --demo: not with --no-render" --headless --demo --no-render
-row "^arcfire: --ticks: only with --headless, --demo or --serialization-test$" --ticks 10
+row "^arcfire: --ticks: only with --headless, --demo, --serialization-test, --host or --join$" --ticks 10
 row "^arcfire: --no-render: only with --headless or --replay$" --no-render
 exit $failed

@@ -85,7 +85,7 @@ TEST(Menu, ADuplicateOrderIsAnErrorAtItsPosition) {
 TEST(Menu, ScriptedSessionReachesTheResultsAndGoesOn) {
   Menu m = make_menu();
   EXPECT_EQ(describe_page(m.page()),
-            "title: ARCFIRE\nsubtitle: space combat with lightning\n> Play\n  Effects\n  Settings\n  Quit\n");
+            "title: ARCFIRE\nsubtitle: space combat with lightning\n> Play\n  Effects\n  Settings\n  Multiplayer\n  Quit\n");
   run(m, "accept");
   ASSERT_EQ(m.screen(), MenuScreen::Missions);
   EXPECT_TRUE(has_line(m.page(), "> 1. Training"));
@@ -372,7 +372,7 @@ TEST(Menu, MouseHoverAndClickFollowTheLayout) {
   HudLayer layer;
   std::vector<HudBox> boxes;
   layout_menu(m.page(), 1920, 1080, layer, &boxes);
-  ASSERT_EQ(boxes.size(), 4u);
+  ASSERT_EQ(boxes.size(), 5u);
   EXPECT_FALSE(layer.texts.empty());
   const HudBox& settings = boxes[2];
   const double x = (settings.x0 + settings.x1) / 2, y = (settings.y0 + settings.y1) / 2;
