@@ -65,6 +65,12 @@ class ParticlePass {
   const SpriteTrim& trim() const { return trim_; }
 
   void upload(const std::vector<ParticleInstance>& particles);
+  // The batch's particles, or for an indexed batch its source as it is and its order (an
+  // R32UI buffer texture the vertex shader reads first).
+  void upload(const ParticleBatch& batch);
+  // Particles the buffer texture takes in one piece (GL_MAX_TEXTURE_BUFFER_SIZE / 4), whatever
+  // the draw limit: the most an indexed batch's source may hold.
+  size_t max_source_particles() const { return max_source_particles_; }
   // Draws what upload() received into the bound framebuffer, one draw per run of the batch,
   // and returns the number of draws. When counting fragments, an occlusion query spans the runs.
   int draw(const ParticleBatch& batch, const ShaderPrograms& programs, const RenderSettings& settings,
@@ -81,6 +87,11 @@ class ParticlePass {
   size_t index_capacity_ = 0;   // particles ibo_ has indices for
   size_t uploaded_ = 0;         // particles in vbo_
   size_t max_particles_per_draw_ = 0;
+  size_t max_source_particles_ = 0;
+  GLuint order_buf_ = 0, order_tbo_ = 0;  // an indexed batch's order (R32UI texels)
+  size_t order_capacity_bytes_ = 0;
+  static void stream(GLuint buffer, size_t& capacity, const void* data, size_t bytes);
+  void ensure_indices(size_t quads);
   GLuint sprite_texture(bool linear);  // the array for this frame's colour space
   void upload_sprite_array(GLuint tex, GLenum internal_format, const std::vector<Image>& sprites) const;
   std::vector<Image> sprites_;        // as given, for the linear array made on first use
