@@ -7,7 +7,8 @@
 // when any kept particle is alpha blended (DESIGN.md "Rendering": pure additive ones need no
 // order), drops the farthest beyond the draw limit and splits the result into runs by shader
 // variant (particle_runs.h). The particle pass uploads `particles` as they are and draws each
-// run with its program.
+// run with its program. Per cluster (ParticleBatchOptions::by_cluster) the batch is usually
+// indexed instead: the view's particles are uploaded untouched and only their order is written.
 //
 // Example, compiled as GfxCpuExamples.PrepareABatch in tests/unit/gfx/test_gfx_cpu_examples.cpp:
 //   ParticleBatch batch;
@@ -44,8 +45,9 @@ struct ParticleBatchOptions {
   TrimMode trim_mode = TrimMode::Off;
   int trim_height = 720;  // pixel rows of the target drawn into: the half-resolution one's when it is likely
   // Per cluster (RenderSettings::ParticlePrep): whole stretches of a cluster are culled and
-  // flagged, copied as they are, sorted by full radix or by stretch, drawn in one run; no
-  // overdraw budget (a GPU's fill rate needs none). Per particle otherwise, as described above.
+  // flagged, listed by index (or copied, beyond max_source), sorted by full radix or by stretch,
+  // drawn in one run; no overdraw budget (a GPU's fill rate needs none). Per particle otherwise,
+  // as described above.
   bool by_cluster = false;
   // Per cluster, when the view holds at most this many particles (what the particle buffer
   // takes): the batch is an order of indices into the view's particles, uploaded as they are.

@@ -1,8 +1,9 @@
 // gfx/particle_pass.h — the particle draw: upload of a prepared batch and one instanced draw.
 //
 // Owns the sprite array texture, the buffer texture the vertex shader pulls ParticleInstance
-// from (shaders/particle.vert builds each quad from four RGBA32UI texels), and the index buffer
-// (two triangles per particle). draw() blends with depth test on and depth write off,
+// from (shaders/particle.vert builds each quad from four RGBA32UI texels), the order buffer
+// texture of an indexed batch (one R32UI texel per quad: which particle it draws), and the index
+// buffer (two triangles per particle). draw() blends with depth test on and depth write off,
 // GL_ONE, GL_ONE_MINUS_SRC_ALPHA (controlled-additive "burn", Ilmonen 2006 §4, equations 3–10
 // unchanged in linear light with HDR: only the colours entering them are decoded), one draw per
 // run of the batch (particle_runs.h) with the cheapest program the run allows: hard edges when
@@ -12,7 +13,7 @@
 // Example, compiled as GlExamples.ParticlePass in tests/unit/gfx/test_gl_examples.cpp:
 //   ParticlePass particles(0);
 //   particles.set_sprites({load_sprite("assets/textures/sprite_smoke.png")}, settings.filter);
-//   particles.upload(batch.particles);
+//   particles.upload(batch);  // its particles, or an indexed batch's source and order
 //   if (batch.any_soft) targets.copy_depth();
 //   particles.draw(batch, programs, settings, frame);  // one draw per run
 #pragma once
