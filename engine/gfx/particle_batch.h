@@ -106,6 +106,8 @@ struct ParticleBatch {
   void gather_stretches(const RenderView& view, const glm::vec3& forward, bool pairs);
   void gather_in_order(const RenderView& view, size_t total, int soft_override);
   void gather_sorted(const RenderView& view, size_t total, int soft_override);
+  void list_kept(const RenderView& view, size_t total, const ParticleBatchOptions& options, bool full_sort,
+                 float depth_lo, float depth_hi);
   void index_in_order(size_t total);
   void index_sorted(size_t total);
   void fill_pairs(size_t total, int bits, float lo, float hi);

@@ -206,14 +206,33 @@ void ParticleBatch::gather_sorted(const RenderView& v, size_t total, int soft_ov
   }
 }
 
+// The kept stretches' particles in draw order: indexed when the view fits one buffer, copied
+// otherwise; and the soft-shaded count, by stretch.
+void ParticleBatch::list_kept(const RenderView& v, size_t total, const ParticleBatchOptions& options, bool full_sort,
+                              float depth_lo, float depth_hi) {
+  const bool index = v.particles.size() <= options.max_source;
+  source = index ? &v.particles : nullptr;
+  soft_override = index ? options.soft_override : -1;
+  particles.clear();
+  order.clear();
+  if (full_sort) fill_pairs(total, options.sort_bits, depth_lo, depth_hi);
+  if (index) full_sort ? index_sorted(total) : index_in_order(total);
+  else if (full_sort) gather_sorted(v, total, options.soft_override);
+  else gather_in_order(v, total, options.soft_override);
+  for (uint32_t k : kept_) {
+    const Stretch& s = stretches_[k];
+    if (s.clear) continue;
+    if (options.soft_override >= 0) soft_shaded += options.soft_override != 0 ? int(s.count) : 0;
+    else soft_shaded += int(s.soft_count);
+  }
+}
+
 void ParticleBatch::prepare_by_cluster(const RenderView& v, const ViewProjection& vp, const ModelCoverBoxes& model_boxes,
                                        const ParticleBatchOptions& options) {
   visible = culled_offscreen = over_draw_limit = sorted = soft_shaded = 0;
   any_soft = any_contrast = false;
-  runs.clear();
+  runs.clear(), areas.clear(), boxes_.clear();
   overdraw = OverdrawStats{};
-  areas.clear();
-  boxes_.clear();
   const glm::vec3 forward = -glm::vec3(glm::transpose(vp.view)[2]);
   const glm::mat3 to_view(vp.view);
   const float near = float(v.camera.near_plane);
@@ -221,8 +240,7 @@ void ParticleBatch::prepare_by_cluster(const RenderView& v, const ViewProjection
   occluders_.gather(v, model_boxes, to_view, tx, ty);
   const glm::vec3 planes[4] = {glm::normalize(glm::vec3(1, 0, tx)), glm::normalize(glm::vec3(-1, 0, tx)),
                                glm::normalize(glm::vec3(0, 1, ty)), glm::normalize(glm::vec3(0, -1, ty))};
-  const bool may_sort = options.sorting == RenderSettings::Sorting::Full;
-  gather_stretches(v, forward, may_sort);
+  gather_stretches(v, forward, options.sorting == RenderSettings::Sorting::Full);
   // Cull whole stretches by their bounding sphere and decide their soft flag once. A stretch
   // kept as a whole may hold particles the per-particle path drops: they are off screen or
   // dark, so the GPU clips them or blends zero, and the picture is the same.
@@ -259,21 +277,7 @@ void ParticleBatch::prepare_by_cluster(const RenderView& v, const ViewProjection
     std::stable_sort(kept_.begin(), kept_.end(),
                      [&](uint32_t a, uint32_t b) { return stretches_[a].depth > stretches_[b].depth; });
   const bool full_sort = any_ordered_ && options.sorting == RenderSettings::Sorting::Full;
-  const bool index = v.particles.size() <= options.max_source;
-  source = index ? &v.particles : nullptr;
-  soft_override = index ? options.soft_override : -1;
-  particles.clear();
-  order.clear();
-  if (full_sort) fill_pairs(total, options.sort_bits, depth_lo, depth_hi);
-  if (index) full_sort ? index_sorted(total) : index_in_order(total);
-  else if (full_sort) gather_sorted(v, total, options.soft_override);
-  else gather_in_order(v, total, options.soft_override);
-  for (uint32_t k : kept_) {  // the soft-shaded count, by stretch
-    const Stretch& s = stretches_[k];
-    if (s.clear) continue;
-    if (override_soft) soft_shaded += options.soft_override != 0 ? int(s.count) : 0;
-    else soft_shaded += int(s.soft_count);
-  }
+  list_kept(v, total, options, full_sort, depth_lo, depth_hi);
   visible = int(drawn());
   coverage.reset(options.width, options.height);
   depth_reads.reset(options.width, options.height);
@@ -283,7 +287,7 @@ void ParticleBatch::prepare_by_cluster(const RenderView& v, const ViewProjection
   if (drawn() > options.max_particles) {  // the farthest go: the order is back to front
     const auto cut = std::ptrdiff_t(drawn() - options.max_particles);
     over_draw_limit = int(cut);
-    if (index) order.erase(order.begin(), order.begin() + cut);
+    if (indexed()) order.erase(order.begin(), order.begin() + cut);
     else particles.erase(particles.begin(), particles.begin() + cut);
   }
   // One draw: the soft programs give a clear or hard particle exactly 1, and the contrast and
