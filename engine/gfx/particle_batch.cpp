@@ -73,6 +73,9 @@ void radix_sort_back_to_front(const std::vector<uint32_t>& keys, std::vector<uin
 void ParticleBatch::prepare(const RenderView& v, const ViewProjection& vp, const ModelCoverBoxes& model_boxes,
                             const ParticleBatchOptions& options) {
   if (options.by_cluster) return prepare_by_cluster(v, vp, model_boxes, options);
+  source = nullptr;
+  soft_override = -1;
+  order.clear();
   visible = culled_offscreen = over_draw_limit = sorted = soft_shaded = 0;
   any_soft = any_contrast = false;
   runs.clear();

@@ -7,7 +7,8 @@
 // when any kept particle is alpha blended (DESIGN.md "Rendering": pure additive ones need no
 // order), drops the farthest beyond the draw limit and splits the result into runs by shader
 // variant (particle_runs.h). The particle pass uploads `particles` as they are and draws each
-// run with its program.
+// run with its program. Per cluster (ParticleBatchOptions::by_cluster) the batch is usually
+// indexed instead: the view's particles are uploaded untouched and only their order is written.
 //
 // Example, compiled as GfxCpuExamples.PrepareABatch in tests/unit/gfx/test_gfx_cpu_examples.cpp:
 //   ParticleBatch batch;
@@ -44,15 +45,33 @@ struct ParticleBatchOptions {
   TrimMode trim_mode = TrimMode::Off;
   int trim_height = 720;  // pixel rows of the target drawn into: the half-resolution one's when it is likely
   // Per cluster (RenderSettings::ParticlePrep): whole stretches of a cluster are culled and
-  // flagged, copied as they are, sorted by full radix or by stretch, drawn in one run; no
-  // overdraw budget (a GPU's fill rate needs none). Per particle otherwise, as described above.
+  // flagged, listed by index (or copied, beyond max_source), sorted by full radix or by stretch,
+  // drawn in one run; no overdraw budget (a GPU's fill rate needs none). Per particle otherwise,
+  // as described above.
   bool by_cluster = false;
+  // Per cluster, when the view holds at most this many particles (what the particle buffer
+  // takes): the batch is an order of indices into the view's particles, uploaded as they are.
+  size_t max_source = 0;
+  // Per cluster, full sorting: depth key bits (RenderSettings::particle_sort_bits). Up to 22, the
+  // depth quantised over the kept depth range, one radix pass per 11 bits; above, its float bits
+  // in three passes (the per-particle path's exact order).
+  int sort_bits = 32;
 };
 
 struct ParticleBatch {
   // Copies of the kept particles in draw order, soft_edge overridden and flagged, reduced by
   // the overdraw budget; areas[i]: particles[i]'s estimated blended pixels.
   std::vector<ParticleInstance> particles;
+  // An indexed batch (per cluster within max_source): `particles` stays empty and the draw pulls
+  // (*source)[order[i] & kOrderIndex], bit 31 set for a clear stretch, with soft_override applied
+  // by the vertex shader; only 4 bytes per particle are written in draw order. `source` is the
+  // view prepare() was given, so it is valid while that view is.
+  std::vector<uint32_t> order;
+  const std::vector<ParticleInstance>* source = nullptr;
+  int soft_override = -1;
+  static constexpr uint32_t kOrderIndex = 0x7FFFFFFFu, kOrderClear = 0x80000000u;
+  bool indexed() const { return source != nullptr; }
+  size_t drawn() const { return indexed() ? order.size() : particles.size(); }
   std::vector<float> areas;
   std::vector<ParticleRun> runs;  // spans of `particles`, one draw each
   ParticleCoverage coverage;      // the scene tiles the particles can touch (particle_coverage.h)
@@ -84,11 +103,18 @@ struct ParticleBatch {
   };
   void prepare_by_cluster(const RenderView& view, const ViewProjection& vp, const ModelCoverBoxes& model_boxes,
                           const ParticleBatchOptions& options);
-  void gather_stretches(const RenderView& view, const glm::vec3& forward);
+  void gather_stretches(const RenderView& view, const glm::vec3& forward, bool pairs);
   void gather_in_order(const RenderView& view, size_t total, int soft_override);
   void gather_sorted(const RenderView& view, size_t total, int soft_override);
+  void list_kept(const RenderView& view, size_t total, const ParticleBatchOptions& options, bool full_sort,
+                 float depth_lo, float depth_hi);
+  void index_in_order(size_t total);
+  void index_sorted(size_t total);
+  void fill_pairs(size_t total, int bits, float lo, float hi);
+  bool radix_passes(size_t total, bool to_order);
   std::vector<uint32_t> hist_;
   std::vector<uint64_t> pairs_, pairs_tmp_;  // (depth key, source index) for the full sort
+  std::vector<float> depths_;  // each view particle's depth along the view direction
   std::vector<Stretch> stretches_;
   std::vector<uint32_t> kept_;  // indices of the stretches drawn, in draw order
   void cull_and_flag(const RenderView& view, const ViewProjection& vp, const glm::vec3& forward,

@@ -25,7 +25,11 @@ const Program& choose_program(const ShaderPrograms& programs, const ParticleRun&
 }
 
 // The frame's uniforms of one particle program (each program the runs use, once a frame).
-void set_uniforms(const Program& particle, const RenderSettings& rs, const ParticleFrame& frame, const SpriteTrim& trim) {
+void set_uniforms(const Program& particle, const RenderSettings& rs, const ParticleFrame& frame, const SpriteTrim& trim,
+                  const ParticleBatch& batch) {
+  glUniform1i(particle.loc("u_indexed"), batch.indexed() ? 1 : 0);
+  glUniform1i(particle.loc("u_soft_override"), batch.indexed() ? batch.soft_override : -1);
+  glUniform1i(particle.loc("u_order"), 4);
   glUniformMatrix4fv(particle.loc("u_view"), 1, GL_FALSE, glm::value_ptr(frame.vp.view));
   glUniformMatrix4fv(particle.loc("u_proj"), 1, GL_FALSE, glm::value_ptr(frame.vp.proj));
   glUniform1f(particle.loc("u_tan_half_y"), float(std::tan(frame.fov_y_radians * 0.5)));
@@ -62,13 +66,19 @@ ParticlePass::ParticlePass(size_t draw_limit) {
   glGenBuffers(1, &vbo_);
   glGenBuffers(1, &ibo_);
   glGenTextures(1, &tbo_);
+  glGenBuffers(1, &order_buf_);
+  glGenTextures(1, &order_tbo_);
+  glBindBuffer(GL_TEXTURE_BUFFER, order_buf_);
+  glBufferData(GL_TEXTURE_BUFFER, sizeof(uint32_t), nullptr, GL_STREAM_DRAW);
+  glBindTexture(GL_TEXTURE_BUFFER, order_tbo_);
+  glTexBuffer(GL_TEXTURE_BUFFER, GL_R32UI, order_buf_);
   glBindBuffer(GL_TEXTURE_BUFFER, vbo_);
   glBufferData(GL_TEXTURE_BUFFER, sizeof(ParticleInstance), nullptr, GL_STREAM_DRAW);
   glBindTexture(GL_TEXTURE_BUFFER, tbo_);
   glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32UI, vbo_);
   GLint max_texels = 0;
   glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &max_texels);
-  max_particles_per_draw_ = size_t(std::max(max_texels, 4)) / 4;
+  max_particles_per_draw_ = max_source_particles_ = size_t(std::max(max_texels, 4)) / 4;
   if (draw_limit > 0) max_particles_per_draw_ = std::min(max_particles_per_draw_, draw_limit);
   Image white;
   white.width = white.height = 1;
@@ -79,10 +89,10 @@ ParticlePass::ParticlePass(size_t draw_limit) {
 
 ParticlePass::~ParticlePass() {
   glDeleteVertexArrays(1, &vao_);
-  GLuint bufs[] = {vbo_, ibo_};
-  glDeleteBuffers(2, bufs);
-  GLuint tex[] = {tbo_, sprite_tex_, sprite_tex_linear_, trim_tex_};
-  glDeleteTextures(4, tex);
+  GLuint bufs[] = {vbo_, ibo_, order_buf_};
+  glDeleteBuffers(3, bufs);
+  GLuint tex[] = {tbo_, sprite_tex_, sprite_tex_linear_, trim_tex_, order_tbo_};
+  glDeleteTextures(5, tex);
   if (fragment_query_) glDeleteQueries(1, &fragment_query_);
 }
 
@@ -154,16 +164,34 @@ void ParticlePass::set_texture_filter(RenderSettings::Filter filter) {
   }
 }
 
+// Orphans the buffer when it must grow or is in use (GL_STREAM_DRAW: the driver hands a fresh
+// one while the previous frame's draw still reads the old), then writes `bytes` at its start.
+void ParticlePass::stream(GLuint buffer, size_t& capacity, const void* data, size_t bytes) {
+  glBindBuffer(GL_TEXTURE_BUFFER, buffer);
+  if (bytes > capacity) capacity = bytes * 3 / 2;
+  glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(capacity), nullptr, GL_STREAM_DRAW);  // new or orphaned
+  glBufferSubData(GL_TEXTURE_BUFFER, 0, GLsizeiptr(bytes), data);
+}
+
 void ParticlePass::upload(const std::vector<ParticleInstance>& particles) {
-  glBindBuffer(GL_TEXTURE_BUFFER, vbo_);
-  size_t bytes = particles.size() * sizeof(ParticleInstance);
-  if (bytes > capacity_bytes_) capacity_bytes_ = bytes * 3 / 2;
-  glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(capacity_bytes_), nullptr, GL_STREAM_DRAW);  // new or orphaned
-  glBufferSubData(GL_TEXTURE_BUFFER, 0, GLsizeiptr(bytes), particles.data());
+  stream(vbo_, capacity_bytes_, particles.data(), particles.size() * sizeof(ParticleInstance));
   uploaded_ = particles.size();
+  ensure_indices(particles.size());
+}
+
+void ParticlePass::upload(const ParticleBatch& batch) {
+  if (!batch.indexed()) return upload(batch.particles);
+  stream(vbo_, capacity_bytes_, batch.source->data(), batch.source->size() * sizeof(ParticleInstance));
+  stream(order_buf_, order_capacity_bytes_, batch.order.data(), batch.order.size() * sizeof(uint32_t));
+  uploaded_ = batch.order.size();
+  ensure_indices(batch.order.size());
+}
+
+// The static index buffer: two triangles per quad, for at least `quads` quads.
+void ParticlePass::ensure_indices(size_t quads) {
   glBindVertexArray(vao_);
-  if (particles.size() > index_capacity_) {
-    index_capacity_ = std::max<size_t>(particles.size() * 3 / 2, 1024);
+  if (quads > index_capacity_) {
+    index_capacity_ = std::max<size_t>(quads * 3 / 2, 1024);
     std::vector<uint32_t> indices(index_capacity_ * 6);
     for (size_t i = 0; i < index_capacity_; ++i) {
       const uint32_t b = uint32_t(i * 4);
@@ -192,6 +220,8 @@ int ParticlePass::draw(const ParticleBatch& batch, const ShaderPrograms& program
   glBindTexture(GL_TEXTURE_BUFFER, tbo_);
   glActiveTexture(GL_TEXTURE3);
   glBindTexture(GL_TEXTURE_2D, trim_tex_);
+  glActiveTexture(GL_TEXTURE4);
+  glBindTexture(GL_TEXTURE_BUFFER, order_tbo_);
   glActiveTexture(GL_TEXTURE0);
   glBindVertexArray(vao_);
   if (count_fragments_) {
@@ -209,7 +239,7 @@ int ParticlePass::draw(const ParticleBatch& batch, const ShaderPrograms& program
       glUseProgram(particle.id);
       current = particle.id;
       if (std::find(ready.begin(), ready.end(), current) == ready.end()) {
-        set_uniforms(particle, rs, frame, trim_);
+        set_uniforms(particle, rs, frame, trim_, batch);
         ready.push_back(current);
       }
     }

@@ -1,8 +1,9 @@
 // gfx/particle_pass.h — the particle draw: upload of a prepared batch and one instanced draw.
 //
 // Owns the sprite array texture, the buffer texture the vertex shader pulls ParticleInstance
-// from (shaders/particle.vert builds each quad from four RGBA32UI texels), and the index buffer
-// (two triangles per particle). draw() blends with depth test on and depth write off,
+// from (shaders/particle.vert builds each quad from four RGBA32UI texels), the order buffer
+// texture of an indexed batch (one R32UI texel per quad: which particle it draws), and the index
+// buffer (two triangles per particle). draw() blends with depth test on and depth write off,
 // GL_ONE, GL_ONE_MINUS_SRC_ALPHA (controlled-additive "burn", Ilmonen 2006 §4, equations 3–10
 // unchanged in linear light with HDR: only the colours entering them are decoded), one draw per
 // run of the batch (particle_runs.h) with the cheapest program the run allows: hard edges when
@@ -12,7 +13,7 @@
 // Example, compiled as GlExamples.ParticlePass in tests/unit/gfx/test_gl_examples.cpp:
 //   ParticlePass particles(0);
 //   particles.set_sprites({load_sprite("assets/textures/sprite_smoke.png")}, settings.filter);
-//   particles.upload(batch.particles);
+//   particles.upload(batch);  // its particles, or an indexed batch's source and order
 //   if (batch.any_soft) targets.copy_depth();
 //   particles.draw(batch, programs, settings, frame);  // one draw per run
 #pragma once
@@ -65,6 +66,12 @@ class ParticlePass {
   const SpriteTrim& trim() const { return trim_; }
 
   void upload(const std::vector<ParticleInstance>& particles);
+  // The batch's particles, or for an indexed batch its source as it is and its order (an
+  // R32UI buffer texture the vertex shader reads first).
+  void upload(const ParticleBatch& batch);
+  // Particles the buffer texture takes in one piece (GL_MAX_TEXTURE_BUFFER_SIZE / 4), whatever
+  // the draw limit: the most an indexed batch's source may hold.
+  size_t max_source_particles() const { return max_source_particles_; }
   // Draws what upload() received into the bound framebuffer, one draw per run of the batch,
   // and returns the number of draws. When counting fragments, an occlusion query spans the runs.
   int draw(const ParticleBatch& batch, const ShaderPrograms& programs, const RenderSettings& settings,
@@ -81,6 +88,11 @@ class ParticlePass {
   size_t index_capacity_ = 0;   // particles ibo_ has indices for
   size_t uploaded_ = 0;         // particles in vbo_
   size_t max_particles_per_draw_ = 0;
+  size_t max_source_particles_ = 0;
+  GLuint order_buf_ = 0, order_tbo_ = 0;  // an indexed batch's order (R32UI texels)
+  size_t order_capacity_bytes_ = 0;
+  static void stream(GLuint buffer, size_t& capacity, const void* data, size_t bytes);
+  void ensure_indices(size_t quads);
   GLuint sprite_texture(bool linear);  // the array for this frame's colour space
   void upload_sprite_array(GLuint tex, GLenum internal_format, const std::vector<Image>& sprites) const;
   std::vector<Image> sprites_;        // as given, for the linear array made on first use

@@ -15,6 +15,9 @@ void register_render_settings(Settings& s) {
   s.define_choice("render.particle_prep", "auto", {"auto", "particle", "cluster"},
                   "particle preparation on the CPU: per particle (budget, runs; for a software rasteriser) or per"
                   " cluster (a tenth of the CPU time, no budget; for a GPU); auto picks by device");
+  s.define_choice("render.particle_sort_bits", "22", {"11", "22", "32"},
+                  "depth key bits of the per-cluster full sort: 11 or 22 quantise the depth over the drawn range"
+                  " (one radix pass per 11 bits), 32 is the exact depth; fewer bits cost less CPU time");
   s.define_choice("render.depth_mode", "reversed", {"reversed", "standard"},
                   "reversed-Z float depth (needs clip control) or standard depth; no cost");
   s.define_flag("render.infinite_far", true, "infinite far plane; no cost");

@@ -52,6 +52,10 @@ struct RenderSettings {
   // (about a tenth of the CPU time, one draw, no budget: what a GPU wants). Auto: per cluster on
   // a hardware GPU, per particle on a software rasteriser (device_class.h).
   enum class ParticlePrep { Auto, PerParticle, PerCluster } particle_prep = ParticlePrep::Auto;
+  // Depth key bits of the per-cluster full sort (ParticleBatchOptions::sort_bits): 22 orders by
+  // the depth quantised to 2^22 steps over the kept range in two radix passes; 32 by the exact
+  // depth in three.
+  int particle_sort_bits = 22;
   int max_particle_draws = 24;  // runs the particle batch may be split into (particle_runs.h); ≥ 1
   // Particles drawn at half resolution, then put over the scene (particle_target.h): Full never,
   // Half always, Auto when a frame's particles blend more than kHalfResAbove screen layers

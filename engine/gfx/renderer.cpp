@@ -164,6 +164,7 @@ void Renderer::apply_settings(const Settings& s) {
   r.particle_prep = prep == "particle"  ? RenderSettings::ParticlePrep::PerParticle
                     : prep == "cluster" ? RenderSettings::ParticlePrep::PerCluster
                                         : RenderSettings::ParticlePrep::Auto;
+  r.particle_sort_bits = std::stoi(s.choice("render.particle_sort_bits"));
   r.reversed_z = s.choice("render.depth_mode") == "reversed";
   r.infinite_far = s.flag("render.infinite_far");
   const std::string& f = s.choice("render.texture_filter");
@@ -287,6 +288,8 @@ ParticleBatchOptions Renderer::Impl::batch_options() const {
   options.soft_override = rs.soft_override;
   options.sorting = rs.sorting;
   options.max_particles = particles.max_particles_per_draw();
+  options.max_source = particles.max_source_particles();
+  options.sort_bits = rs.particle_sort_bits;
   using Prep = RenderSettings::ParticlePrep;
   options.by_cluster = rs.particle_prep == Prep::PerCluster || (rs.particle_prep == Prep::Auto && !software);
   options.overdraw = {rs.overdraw_budget, rs.overdraw_near};
@@ -329,11 +332,11 @@ void Renderer::Impl::draw_particles(const RenderView& v, const ViewProjection& v
   else if (batch.overdraw.budgeted_layers > RenderSettings::kHalfResAbove) half_res = true;
   else if (batch.overdraw.budgeted_layers < RenderSettings::kHalfResBelow) half_res = false;
   stats.particles_half_res = half_res;
-  if (batch.particles.empty()) {
+  if (batch.drawn() == 0) {
     stats.particle_cpu_ms = stats.particle_prep_ms;
     return;
   }
-  particles.upload(batch.particles);
+  particles.upload(batch);
   timers.begin_particle_pass();
   // Soft edges read this frame's opaque depth. Where the driver lets a fragment read the depth
   // of the framebuffer it draws into, they read that: the scene's depth at full resolution, the

@@ -22,6 +22,7 @@
 #include "bench_scenes.h"
 #include "core/rng.h"
 #include "game/app/all_settings.h"
+#include "gfx/image_compare.h"
 #include "gfx/renderer.h"
 #include "platform/platform.h"
 
@@ -140,6 +141,9 @@ namespace arc {
 //   particle_prep_ns_gallery, particle_prep_ns_gallery_soft_off, particle_prep_ns_scaled_65536
 //     render.particle_prep = cluster, the path a hardware GPU takes by default
 //   the same names ending _per_particle: render.particle_prep = particle (a software rasteriser's)
+// Then the per-cluster sort's depth-key width (render.particle_sort_bits 11 / 22 / 32) on the
+// gallery and the scaled battle, interleaved the same way: the same names ending _sort_bits_N,
+// and particle_sort_psnr_db_<scene>_N, the picture against the exact 32-bit order (99: identical).
 ARCFIRE_SCENE(particle_prep) {
   const std::unique_ptr<HeadlessContext> ctx = bench::context_or_skip();
   if (!ctx) return;
@@ -160,6 +164,7 @@ ARCFIRE_SCENE(particle_prep) {
                         {"particle_prep_ns_gallery_soft_off", &gallery, 0},
                         {"particle_prep_ns_scaled_65536", &crowd, -1}};
   using Prep = RenderSettings::ParticlePrep;
+  int kept_per_particle[3] = {1, 1, 1};
   for (const Case& c : cases) {
     double best[2] = {1e30, 1e30};
     int kept[2] = {0, 0};
@@ -179,6 +184,32 @@ ARCFIRE_SCENE(particle_prep) {
                 c.metric, best[0], kept[0], best[1], kept[1], c.view->particles.size(), best[0] / best[1]);
     bench::report_metric(c.metric, best[1] * 1e6 / std::max(kept[0], 1));
     bench::report_metric(std::string(c.metric) + "_per_particle", best[0] * 1e6 / std::max(kept[0], 1));
+    kept_per_particle[&c - cases] = std::max(kept[0], 1);
+  }
+  const int widths[3] = {11, 22, 32};
+  for (int ci : {0, 2}) {
+    const Case& c = cases[ci];
+    double best[3] = {1e30, 1e30, 1e30};
+    Image img[3];
+    for (int i = 0; i < 45; ++i) {
+      const int w = i % 3;
+      RenderSettings rs = defaults;
+      rs.particle_prep = Prep::PerCluster;
+      rs.particle_sort_bits = widths[w];
+      r.set_render_settings(rs);
+      r.restart_smoothing();
+      r.render(*c.view, kW, kH);
+      r.finish();
+      best[w] = std::min(best[w], r.last_stats().particle_prep_ms);
+      if (i < 3) img[w] = r.read_pixels();
+    }
+    const std::string scene = ci == 0 ? "gallery" : "scaled_65536";
+    for (int w = 0; w < 3; ++w) {
+      const std::string bits = std::to_string(widths[w]);
+      bench::report_metric(std::string(c.metric) + "_sort_bits_" + bits, best[w] * 1e6 / kept_per_particle[ci]);
+      const double psnr = psnr_db(img[2], img[w]);
+      bench::report_metric("particle_sort_psnr_db_" + scene + "_" + bits, std::isinf(psnr) ? 99.0 : psnr);
+    }
   }
 }
 

@@ -137,7 +137,7 @@ TEST(GlExamples, ParticlePass) {
   targets.bind_scene();
   ParticlePass particles(0);
   particles.set_sprites({load_sprite("assets/textures/sprite_smoke.png")}, settings.filter);
-  particles.upload(batch.particles);
+  particles.upload(batch);  // its particles, or an indexed batch's source and order
   if (batch.any_soft) targets.copy_depth();
   particles.draw(batch, programs, settings, frame);  // one draw per run
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
