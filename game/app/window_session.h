@@ -49,6 +49,8 @@ class WindowSession {
   double time() const { return window_->time_seconds(); }
   int64_t tick() const { return int64_t(game_->world().tick); }
   FrameStats frame_stats() const { return renderer_->last_stats(); }
+  // The frame just shown took `seconds` (its whole interval): render.target_frame_ms follows it.
+  void frame_done(double seconds) { renderer_->report_frame_time(seconds * 1000.0); }
   bool write_failed() const { return write_failed_ || (recorder_ && recorder_->failed()); }
   // One frame's work before drawing: devices to input and actions, the menu or pause screen,
   // reloads of changed files, and the fixed-step ticks that `frame_seconds` of wall clock owe.
