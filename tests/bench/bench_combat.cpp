@@ -37,7 +37,7 @@
 // Then two recordings with many particles, from both cameras, each frame timed the same way
 // (main and twin, the faster of two; every sixth sample also without the budget and target):
 // the arena's merge (tests/bench/arena_merge.replay) and campaign mission 8's fleet battle
-// (tests/bench/fleet_battle.replay). Their frames with more than 10 000 particles give
+// (tests/bench/fleet_battle.replay). Their frames with more than 10 000 live particles give
 //   combat_merge_<camera>_frame_p50_ms / _p99_ms, combat_fleet_<camera>_frame_p50_ms / _p99_ms
 //   ..._particles_max (the most in a view), ..._level_min (render.target_frame_ms's lowest
 //   level), ..._dropped (particles left out), ..._budget_psnr_db (against no budget, no target)
@@ -84,7 +84,7 @@ constexpr int kCompareEvery = 6;     // samples between budget-off and soft-off 
 const char* const kScript = "/tests/bench/combat_view.replay";
 // The arena's merge (tests/bench/arena_merge.replay: the arena flown by the autopilot), timed
 // where the fleets meet, and the fleet battle of campaign mission 8 at its peak: their frames
-// with more than kMergeParticles particles are reported.
+// with more than kMergeParticles live particles are reported.
 const char* const kMergeScript = "/tests/bench/arena_merge.replay";
 const char* const kFleetScript = "/tests/bench/fleet_battle.replay";
 constexpr uint64_t kMergeFirstTick = 0, kFleetFirstTick = 0;
@@ -152,7 +152,8 @@ struct CameraRun {
   double trim_psnr_min = std::numeric_limits<double>::infinity();
   std::vector<ModelId> models;
   std::vector<double> ms, single_ms, layers, estimate_ratio, soft_ratio, budget_ratio, psnr;
-  std::vector<double> particles, levels;  // particles in, and the frame-time target's level, per timed frame
+  std::vector<double> particles, levels;  // particles in the view, and the frame-time target's level, per timed frame
+  std::vector<double> live;               // the world's live particles at each timed frame
   long long dropped = 0;                  // particles the budget faded out, over the timed frames
   double mse_sum = 0;  // over the compared frames the budget reduced
   double psnr_min = std::numeric_limits<double>::infinity();
@@ -341,13 +342,13 @@ void report_merge(CameraRun& c, const char* prefix) {
   std::vector<double> heavy;
   double most = 0, lowest = 1;
   for (size_t i = 0; i < c.ms.size(); ++i) {
-    if (c.particles[i] > kMergeParticles) heavy.push_back(c.ms[i]);
+    if (c.live[i] > kMergeParticles) heavy.push_back(c.ms[i]);
     most = std::max(most, c.particles[i]);
     lowest = std::min(lowest, c.levels[i]);
   }
   const double psnr_all = c.psnr.empty() ? 99.0 : 10.0 * std::log10(255.0 * 255.0 * double(c.psnr.size()) / c.mse_sum);
-  std::printf("  %-7s %zu of %d frames with more than %d particles: p50 %.2f ms, p99 %.2f ms (all frames p50 %.2f, p99 %.2f);"
-              " most particles %.0f; target level lowest %.2f, median %.2f; budget active in %d, dropped %lld;"
+  std::printf("  %-7s %zu of %d frames with more than %d live particles: p50 %.2f ms, p99 %.2f ms (all frames p50 %.2f, p99 %.2f);"
+              " most particles in a view %.0f; target level lowest %.2f, median %.2f; budget active in %d, dropped %lld;"
               " PSNR (budget against none) %.1f dB, worst %.1f dB over %zu frames\n",
               c.name, heavy.size(), c.samples, kMergeParticles, percentile(heavy, 0.5), percentile(heavy, 0.99),
               percentile(c.ms, 0.5), percentile(c.ms, 0.99), most, lowest, bench::median(c.levels), c.active, c.dropped,
@@ -420,6 +421,7 @@ void play(const std::string& root, const char* script_path, const char* metric_p
       CameraRun& c = cams[samples % 2 ? 1 - k : k];
       build_render_view(game.world(), c.models, 1.0, CameraSettings{c.mode, 0}, hud, kWidth, kHeight, view);
       sample(c, view, compare, (samples / kCompareEvery) % 2 == 1, csv, tick + 1);
+      c.live.push_back(live);
     }
     ++samples;
   }

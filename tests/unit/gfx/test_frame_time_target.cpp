@@ -22,12 +22,12 @@ double plant(double level, double fixed_ms, double scaled_ms, double jitter, uin
   return (fixed_ms + scaled_ms * level) * (1.0 + jitter * u);
 }
 
-struct Run {
+struct Series {
   std::vector<double> levels, ms;
 };
 
-Run run(FrameTimeTarget& t, int frames, double fixed_ms, double scaled_ms, double jitter, uint64_t from = 0) {
-  Run r;
+Series run(FrameTimeTarget& t, int frames, double fixed_ms, double scaled_ms, double jitter, uint64_t from = 0) {
+  Series r;
   for (int i = 0; i < frames; ++i) {
     const double ms = plant(t.level(), fixed_ms, scaled_ms, jitter, from + uint64_t(i));
     t.observe(ms, t.level() < 1.0);
@@ -62,7 +62,7 @@ TEST(FrameTimeTarget, ConvergesAndHolds) {
   // then holds without cycling, its frames near the target.
   FrameTimeTarget t;
   t.set_target(16.7);
-  Run r = run(t, 1200, 6.0, 39.0, 0.05);
+  Series r = run(t, 1200, 6.0, 39.0, 0.05);
   const double settled = r.levels[120];
   double lo = 1, hi = 0, worst = 0;
   for (size_t i = 120; i < r.levels.size(); ++i) {
@@ -84,7 +84,7 @@ TEST(FrameTimeTarget, RecoversWhenTheLoadGoes) {
   t.set_target(16.7);
   run(t, 300, 6.0, 39.0, 0.05);
   EXPECT_LT(t.level(), 0.5);
-  Run r = run(t, 600, 4.0, 6.0, 0.05, 300);  // the explosion is over: 10 ms at level 1
+  Series r = run(t, 600, 4.0, 6.0, 0.05, 300);  // the explosion is over: 10 ms at level 1
   EXPECT_EQ(t.level(), 1.0);
   EXPECT_EQ(reversals(r.levels, 0), 0) << "back up without a dip";
   for (size_t i = 1; i < r.levels.size(); ++i) EXPECT_LE(r.levels[i] / r.levels[i - 1], 1.0 + FrameTimeTarget::kMaxRise + 1e-9);
@@ -101,7 +101,7 @@ TEST(FrameTimeTarget, SingleHitchMovesLittle) {
 TEST(FrameTimeTarget, StepsAreBounded) {
   FrameTimeTarget t;
   t.set_target(16.7);
-  Run r = run(t, 400, 30.0, 60.0, 0.3);
+  Series r = run(t, 400, 30.0, 60.0, 0.3);
   for (size_t i = 1; i < r.levels.size(); ++i) {
     EXPECT_GE(r.levels[i] / r.levels[i - 1], 1.0 - FrameTimeTarget::kMaxFall - 1e-9);
     EXPECT_LE(r.levels[i] / r.levels[i - 1], 1.0 + FrameTimeTarget::kMaxRise + 1e-9);
