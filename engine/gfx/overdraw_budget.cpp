@@ -253,6 +253,19 @@ OverdrawStats OverdrawBudget::apply(std::vector<ParticleInstance>& particles, st
       const ClusterCap* c = cap_of(cluster);
       k = c && !c->free ? std::exp(c->log_k) : k_none;
     }
+    if (o.min_px > 0.0f && p.screen_priority < uint8_t(ScreenPriority::High)) {
+      const float extent = f.w_px + f.half_axis_px;
+      if (extent < o.min_px) {
+        ++s.reduced, ++s.dropped;
+        f.reduced = true;
+        continue;
+      }
+      if (extent < 2.0f * o.min_px) {
+        const float fade = extent / o.min_px - 1.0f;
+        for (float& ch : p.color) ch *= fade;
+        ++s.reduced;
+      }
+    }
     if (k < k_none * 0.999 && double(f.threshold) > k) {
       const float r = float(k / double(f.threshold));
       ++s.reduced;

@@ -46,6 +46,10 @@ void register_render_settings(Settings& s) {
                   "particles blended at the scene's resolution, or at half its width and height and put over it"
                   " (a quarter of the blending, softer particles), or auto: half while they blend more than one"
                   " screen layer, full again under 0.6; half saves fill rate");
+  s.define_number("render.target_frame_ms", 16.7, 0.0, 1000.0,
+                  "frame time, ms, that the overdraw budget and the particle resolution follow from frame to frame:"
+                  " slower frames shrink the budget, leave out the smallest particles and go to half resolution"
+                  " sooner, faster ones give it back; 0: off; saves fill rate when frames run late");
   s.define_number("render.overdraw_near", 40.0, 1.0, 1e6,
                   "distance in world units within which the overdraw budget reduces particles at full strength;"
                   " no cost");

@@ -63,6 +63,9 @@ struct RenderSettings {
   // frame near the line does not flicker between the two).
   enum class ParticleResolution { Full, Half, Auto } particle_resolution = ParticleResolution::Full;
   static constexpr double kHalfResAbove = 1.0, kHalfResBelow = 0.6;
+  // The frame time the particle budgets follow (frame_time_target.h): frames reported over it
+  // lower a level that scales overdraw_budget and the half-resolution thresholds; 0: none.
+  float target_frame_ms = 0.0f;
   // HDR: a linear-light float scene, colours decoded from sRGB, one tone-map pass (post_pass.h).
   bool hdr = false;
   float exposure = 1.0f;        // scene scale before the tone curve (0.05..16)

@@ -45,6 +45,7 @@
 
 #include "gfx/bloom_pass.h"
 #include "gfx/device_class.h"
+#include "gfx/frame_time_target.h"
 #include "gfx/gl_features.h"
 #include "gfx/gpu_timers.h"
 #include "gfx/hud_pass.h"
@@ -93,6 +94,7 @@ struct Renderer::Impl {
   SkyPass sky;
   MeshPass meshes;
   ParticleBatch batch;  // CPU only, kept for its buffers
+  FrameTimeTarget frame_target;  // the level the particle budgets follow (render.target_frame_ms)
   ParticlePass particles;
   ParticleTarget half_particles;
   std::vector<PixelRect> composite_rects;  // where the half-resolution target is put over the scene
@@ -181,6 +183,7 @@ void Renderer::apply_settings(const Settings& s) {
   r.sky_grid = int(s.integer("render.sky_grid"));
   r.overdraw_budget = float(s.number("render.overdraw_budget"));
   r.overdraw_near = float(s.number("render.overdraw_near"));
+  r.target_frame_ms = float(s.number("render.target_frame_ms"));
   const std::string& pr = s.choice("render.particle_resolution");
   r.particle_resolution = pr == "half"   ? RenderSettings::ParticleResolution::Half
                           : pr == "auto" ? RenderSettings::ParticleResolution::Auto
@@ -208,6 +211,7 @@ void Renderer::set_render_settings(const RenderSettings& s) {
   m.rs.bloom = std::clamp(m.rs.bloom, 0.0f, 4.0f);
   m.particles.set_texture_filter(m.rs.filter);
   m.meshes.set_texture_filter(m.rs.filter);
+  m.frame_target.set_target(m.rs.target_frame_ms);
 }
 
 const RenderSettings& Renderer::render_settings() const { return impl_->rs; }
@@ -216,6 +220,7 @@ void Renderer::render(const RenderView& v, int width, int height) {
   Impl& m = *impl_;
   if (width <= 0 || height <= 0) throw std::invalid_argument("render: width and height must be positive");
   m.stats = FrameStats{};
+  m.stats.frame_level = m.frame_target.level();
   m.particles.forget_fragments();  // an earlier frame's count nobody asked for
   m.timers.collect_finished();
   m.targets.ensure(width, height, m.rs.scale, m.scene_format());
@@ -249,6 +254,13 @@ void Renderer::render(const RenderView& v, int width, int height) {
 }
 
 void Renderer::restart_smoothing() { impl_->batch.restart_smoothing(); }
+
+void Renderer::report_frame_time(double ms) {
+  const FrameStats& s = impl_->stats;
+  impl_->frame_target.observe(ms, s.particles_reduced > 0 || s.particles_half_res);
+}
+
+double Renderer::frame_level() const { return impl_->frame_target.level(); }
 
 bool Renderer::warm_sky(uint64_t starfield_seed) { return impl_->sky.warm(starfield_seed, impl_->programs, impl_->rs); }
 
@@ -292,7 +304,8 @@ ParticleBatchOptions Renderer::Impl::batch_options() const {
   options.sort_bits = rs.particle_sort_bits;
   using Prep = RenderSettings::ParticlePrep;
   options.by_cluster = rs.particle_prep == Prep::PerCluster || (rs.particle_prep == Prep::Auto && !software);
-  options.overdraw = {rs.overdraw_budget, rs.overdraw_near};
+  options.overdraw = {rs.overdraw_budget * float(frame_target.level()), rs.overdraw_near,
+                      float(frame_target.min_px(targets.scene_height()))};
   options.size_clamp = rs.size_clamp;
   options.max_runs = std::max(1, rs.max_particle_draws);
   options.depth_tiles = !depth_fetch_usable();
@@ -328,9 +341,10 @@ void Renderer::Impl::draw_particles(const RenderView& v, const ViewProjection& v
   stats.soft_shaded = batch.soft_shaded;
   stats.particle_prep_ms = ms_since(t0);
   using Res = RenderSettings::ParticleResolution;
+  const double level = frame_target.level();  // late frames go to half resolution at fewer layers
   if (rs.particle_resolution != Res::Auto) half_res = rs.particle_resolution == Res::Half;
-  else if (batch.overdraw.budgeted_layers > RenderSettings::kHalfResAbove) half_res = true;
-  else if (batch.overdraw.budgeted_layers < RenderSettings::kHalfResBelow) half_res = false;
+  else if (batch.overdraw.budgeted_layers > RenderSettings::kHalfResAbove * level) half_res = true;
+  else if (batch.overdraw.budgeted_layers < RenderSettings::kHalfResBelow * level) half_res = false;
   stats.particles_half_res = half_res;
   if (batch.drawn() == 0) {
     stats.particle_cpu_ms = stats.particle_prep_ms;

@@ -77,6 +77,7 @@ struct FrameStats {
   int particles_dropped = 0;
   double overdraw_cap = 0;
   bool particles_half_res = false;    // drawn at half resolution (render.particle_resolution)
+  double frame_level = 1.0;           // the frame-time target's level this frame (frame_time_target.h)
   double composite_share = 0;         // share of the screen the half-resolution composite covered
   double particle_target_pixels = 0;  // pixels of the target the particles blended into (a quarter with half resolution)
   int msaa_samples = 0;        // samples of the opaque pass (0: no MSAA; drivers may give more than asked)
@@ -129,6 +130,11 @@ class Renderer {
   // Forgets what smooths from frame to frame (the overdraw budget's cap): the next frame is
   // drawn as if it were the first, e.g. after a cut to an unrelated view.
   void restart_smoothing();
+  // The frame that was last drawn took `ms` (the window loop: its frame interval): the level the
+  // budgets follow under render.target_frame_ms moves (frame_time_target.h). A renderer never
+  // told keeps its settings as they are.
+  void report_frame_time(double ms);
+  double frame_level() const;
   // Work a coming view would do in its first frame, done ahead a slice at a time (one face of
   // the nebula for `starfield_seed`); true when nothing is left. For a mission about to launch.
   bool warm_sky(uint64_t starfield_seed);

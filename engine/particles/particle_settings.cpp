@@ -5,7 +5,7 @@
 namespace arc {
 
 void register_particle_settings(Settings& s) {
-  s.define_integer("particles.budget", 200000, 1000, 4000000,
+  s.define_integer("particles.budget", 400000, 1000, 4000000,
                    "largest number of live particles; costs memory, and CPU time with the particles alive");
   s.define_integer("particles.lightning_interval", 0, 0, 60,
                    "re-evaluate lightning every n ticks; 0 keeps each effect's own interval;"

@@ -252,6 +252,7 @@ int run_window(const AppOptions& o) {
     // The frame that just ended: its whole interval (update, draw, swap) beside what the
     // renderer timed of it and the tick it showed.
     if (drawn && frame_times.enabled()) frame_times.frame(now - last, now, session.tick(), session.frame_stats());
+    if (drawn) session.frame_done(now - last);
     session.update(now - last);
     session.draw();
     drawn = true;

@@ -50,6 +50,8 @@ class WindowSession {
   double time() const { return window_->time_seconds(); }
   int64_t tick() const { return int64_t(shown_game().world().tick); }
   FrameStats frame_stats() const { return renderer_->last_stats(); }
+  // The frame just shown took `seconds` (its whole interval): render.target_frame_ms follows it.
+  void frame_done(double seconds) { renderer_->report_frame_time(seconds * 1000.0); }
   bool write_failed() const { return write_failed_ || (recorder_ && recorder_->failed()); }
   bool net_failed() const { return net_failed_; }
   // One frame's work before drawing: devices to input and actions, the menu or pause screen,

@@ -33,7 +33,7 @@ struct GameOptions {
   bool difficulty_override = false;  // false: the level's own difficulty
   bool seed_override = false;
   uint64_t seed = 0;
-  uint32_t particle_budget = 200000;
+  uint32_t particle_budget = 400000;
   int sim_threads = 1;  // ParticleConfig::threads (sim.threads); not saved or hashed: it changes no state
   int lightning_interval = 0;  // 0 = effects' own
   int substeps = 1;

@@ -34,6 +34,17 @@
 // frame split by pass: FrameStats' *_cpu_ms). Each camera also prints that split averaged over
 // its slowest 1 % of frames: where a p99 frame's time goes.
 // ARCFIRE_BENCH_RECORD=1 records the dogfight anew into tests/bench/combat_view.replay first.
+// Then two recordings with many particles, from both cameras, each frame timed the same way
+// (main and twin, the faster of two; every sixth sample also without the budget and target):
+// the arena's merge (tests/bench/arena_merge.replay) and campaign mission 8's fleet battle
+// (tests/bench/fleet_battle.replay). Their frames with more than 10 000 live particles give
+//   combat_merge_<camera>_frame_p50_ms / _p99_ms, combat_fleet_<camera>_frame_p50_ms / _p99_ms
+//   ..._particles_max (the most in a view), ..._level_min (render.target_frame_ms's lowest
+//   level), ..._dropped (particles left out), ..._budget_psnr_db (against no budget, no target)
+//   combat_merge_live_particles_peak, combat_fleet_live_particles_peak (the world's, any tick)
+// Every renderer that mirrors the main one is told each timed frame's time (the faster of two),
+// as the window loop tells its renderer each frame interval, so render.target_frame_ms acts as
+// it does for a player. ARCFIRE_BENCH_COMBAT=duel, merge or fleet runs one part alone.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -71,6 +82,13 @@ constexpr int kWidth = 1280, kHeight = 720;
 constexpr int kSampleEvery = 2;      // ticks between timed frames
 constexpr int kCompareEvery = 6;     // samples between budget-off and soft-off comparisons
 const char* const kScript = "/tests/bench/combat_view.replay";
+// The arena's merge (tests/bench/arena_merge.replay: the arena flown by the autopilot), timed
+// where the fleets meet, and the fleet battle of campaign mission 8 at its peak: their frames
+// with more than kMergeParticles live particles are reported.
+const char* const kMergeScript = "/tests/bench/arena_merge.replay";
+const char* const kFleetScript = "/tests/bench/fleet_battle.replay";
+constexpr uint64_t kMergeFirstTick = 0, kFleetFirstTick = 0;
+constexpr int kMergeParticles = 10000;
 
 // The test pilot flies the duel on normal until a seed gives a win 15–25 s in (the enemy's
 // explosion then plays on screen); the session is recorded to 30 s like a live one.
@@ -134,6 +152,9 @@ struct CameraRun {
   double trim_psnr_min = std::numeric_limits<double>::infinity();
   std::vector<ModelId> models;
   std::vector<double> ms, single_ms, layers, estimate_ratio, soft_ratio, budget_ratio, psnr;
+  std::vector<double> particles, levels;  // particles in the view, and the frame-time target's level, per timed frame
+  std::vector<double> live;               // the world's live particles at each timed frame
+  long long dropped = 0;                  // particles the budget faded out, over the timed frames
   double mse_sum = 0;  // over the compared frames the budget reduced
   double psnr_min = std::numeric_limits<double>::infinity();
   int compared = 0, active = 0, draws_max = 0, samples = 0;
@@ -191,16 +212,23 @@ double twin_render(CameraRun& c, const RenderView& view) {
 void sample(CameraRun& c, const RenderView& view, bool compare, bool reverse, std::FILE* csv, uint64_t tick) {
   const bool twin_first = c.samples % 2 == 1;
   const double twin_before = twin_first ? twin_render(c, view) : 0.0;
-  const double whole_before = twin_first ? timed_render(*c.untrimmed, view) : 0.0;
+  const double whole_before = twin_first && c.untrimmed ? timed_render(*c.untrimmed, view) : 0.0;
   const double single_ms = timed_render(*c.main, view);
   const FrameStats st = c.main->last_stats();
-  const double whole_ms = twin_first ? whole_before : timed_render(*c.untrimmed, view);
-  const FrameStats whole = c.untrimmed->last_stats();
+  const double whole_ms = twin_first || !c.untrimmed ? whole_before : timed_render(*c.untrimmed, view);
+  const FrameStats whole = c.untrimmed ? c.untrimmed->last_stats() : st;
   const double ms = std::min(single_ms, twin_first ? twin_before : twin_render(c, view));
+  // The frame time the renderers' target follows (render.target_frame_ms): the same for all
+  // that mirror the main one, so their levels stay alike.
+  for (Renderer* r : {c.main.get(), c.twin.get(), c.untrimmed.get(), c.soft_off.get()})
+    if (r) r->report_frame_time(ms);
+  c.particles.push_back(st.particles_in);
+  c.levels.push_back(st.frame_level);
+  c.dropped += st.particles_dropped;
   // Trimming is compared where both drew the same particles at the same resolution: the budget
   // estimates the trimmed area, so over budget the two reduce differently.
   const bool alike = st.particles_reduced == 0 && whole.particles_reduced == 0 && st.particles_half_res == whole.particles_half_res;
-  if (alike && whole.particle_fragments > 0) c.trim_pixels.push_back(double(st.particle_fragments) / double(whole.particle_fragments));
+  if (c.untrimmed && alike && whole.particle_fragments > 0) c.trim_pixels.push_back(double(st.particle_fragments) / double(whole.particle_fragments));
   c.single_ms.push_back(single_ms);
   const std::array<double, kStages> split = stage_split(st, single_ms);  // the main draw's own stats
   if (csv) {
@@ -228,20 +256,16 @@ void sample(CameraRun& c, const RenderView& view, bool compare, bool reverse, st
   }
   if (!compare) return;
   const Image budgeted = c.main->read_pixels();
-  if (alike && whole.particles_drawn > 0) {
+  if (c.untrimmed && alike && whole.particles_drawn > 0) {
     c.trim_ratio.push_back(single_ms / whole_ms);
     c.trim_psnr_min = std::min(c.trim_psnr_min, psnr_db(budgeted, c.untrimmed->read_pixels()));
   }
   // The soft-off frame and the budget-off frame in alternating order around each other.
   double off_ms = 0, nb_ms = 0;
-  if (reverse) {
-    off_ms = timed_render(*c.soft_off, view);
-    nb_ms = timed_render(*c.no_budget, view);
-  } else {
-    nb_ms = timed_render(*c.no_budget, view);
-    off_ms = timed_render(*c.soft_off, view);
-  }
-  c.soft_ratio.push_back(single_ms / off_ms);  // one draw against one draw
+  if (reverse && c.soft_off) off_ms = timed_render(*c.soft_off, view);
+  nb_ms = timed_render(*c.no_budget, view);
+  if (!reverse && c.soft_off) off_ms = timed_render(*c.soft_off, view);
+  if (c.soft_off) c.soft_ratio.push_back(single_ms / off_ms);  // one draw against one draw
   c.budget_ratio.push_back(single_ms / nb_ms);
   ++c.compared;
   if (st.particles_reduced == 0) return;  // the same frame: nothing to compare
@@ -311,15 +335,35 @@ void report(CameraRun& c) {
   }
 }
 
-}  // namespace
+// The frames of a recording where the particles are many: p50/p99 of their time, the most
+// particles in one, the lowest level of the frame-time target, and what the budget dropped.
+void report_merge(CameraRun& c, const char* prefix) {
+  const std::string n = std::string(prefix) + c.name;
+  std::vector<double> heavy;
+  double most = 0, lowest = 1;
+  for (size_t i = 0; i < c.ms.size(); ++i) {
+    if (c.live[i] > kMergeParticles) heavy.push_back(c.ms[i]);
+    most = std::max(most, c.particles[i]);
+    lowest = std::min(lowest, c.levels[i]);
+  }
+  const double psnr_all = c.psnr.empty() ? 99.0 : 10.0 * std::log10(255.0 * 255.0 * double(c.psnr.size()) / c.mse_sum);
+  std::printf("  %-7s %zu of %d frames with more than %d live particles: p50 %.2f ms, p99 %.2f ms (all frames p50 %.2f, p99 %.2f);"
+              " most particles in a view %.0f; target level lowest %.2f, median %.2f; budget active in %d, dropped %lld;"
+              " PSNR (budget against none) %.1f dB, worst %.1f dB over %zu frames\n",
+              c.name, heavy.size(), c.samples, kMergeParticles, percentile(heavy, 0.5), percentile(heavy, 0.99),
+              percentile(c.ms, 0.5), percentile(c.ms, 0.99), most, lowest, bench::median(c.levels), c.active, c.dropped,
+              psnr_all, std::isinf(c.psnr_min) ? 99.0 : c.psnr_min, c.psnr.size());
+  bench::report_metric(n + "_frame_p50_ms", percentile(heavy, 0.5));
+  bench::report_metric(n + "_frame_p99_ms", percentile(heavy, 0.99));
+  bench::report_metric(n + "_frames_heavy", double(heavy.size()));
+  bench::report_metric(n + "_particles_max", most);
+  bench::report_metric(n + "_level_min", lowest);
+  bench::report_metric(n + "_budget_psnr_db", psnr_all);
+  bench::report_metric(n + "_budget_psnr_min_db", std::isinf(c.psnr_min) ? 99.0 : c.psnr_min);
+  bench::report_metric(n + "_dropped", double(c.dropped));
+}
 
-ARCFIRE_SCENE(combat_view) {
-  const std::string root = arc::data_root();
-  const std::string path = root + kScript;
-  if (std::getenv("ARCFIRE_BENCH_RECORD")) record_dogfight(root, path);
-  const std::unique_ptr<HeadlessContext> ctx = bench::context_or_skip();
-  if (!ctx) return;
-  const replay::Script script = replay::load_script(path, all_settings());
+Settings bench_settings(const replay::Script& script, const std::string& root) {
   Settings settings = script_settings(script, all_settings(), root);
   if (const char* extra = std::getenv("ARCFIRE_BENCH_SET")) {
     std::istringstream words(extra);
@@ -332,19 +376,30 @@ ARCFIRE_SCENE(combat_view) {
       }
     }
   }
+  return settings;
+}
+
+// Replays one recording, both cameras sampled every second tick from `first` on. `variants`:
+// the soft-off and whole-quad renderers as well (the duel's trade-off figures).
+void play(const std::string& root, const char* script_path, const char* metric_prefix, bool variants, uint64_t first,
+          CameraRun (&cams)[2], std::FILE* csv) {
+  const replay::Script script = replay::load_script(root + script_path, all_settings());
+  Settings settings = bench_settings(script, root);
   GameOptions base;
   base.root_dir = root;
   Game game = Game::load_level(resolve_script_level(script, root), script_game_options(script, settings, base));
   ScriptFeeder feeder(script);
   HudState hud;
   hud.rules = load_hud_rules(root + "/assets/settings/hud.json");
-  CameraRun cams[2];
   cams[0].name = "chase", cams[0].mode = CameraMode::Chase;
   cams[1].name = "cockpit", cams[1].mode = CameraMode::Cockpit;
   for (CameraRun& c : cams) {
     c.main = make_renderer(root, settings, nullptr, nullptr, game.world(), &c.models);
     c.twin = make_renderer(root, settings, nullptr, nullptr, game.world(), nullptr);
-    c.no_budget = make_renderer(root, settings, "render.overdraw_budget", "0", game.world(), nullptr);
+    Settings none = settings;  // the reference: no budget, and no target to lower anything
+    none.set("render.target_frame_ms", "0", "combat_view");
+    c.no_budget = make_renderer(root, none, "render.overdraw_budget", "0", game.world(), nullptr);
+    if (!variants) continue;
     c.soft_off = make_renderer(root, settings, "render.soft_edges", "off", game.world(), nullptr);
     c.untrimmed = make_renderer(root, settings, nullptr, nullptr, game.world(), nullptr);
     RenderSettings whole = c.untrimmed->render_settings();
@@ -354,6 +409,40 @@ ARCFIRE_SCENE(combat_view) {
   const uint64_t end = script.end_tick.value_or(1800);
   RenderView view;
   int samples = 0;
+  uint32_t peak = 0;
+  uint64_t peak_tick = 0;
+  for (uint64_t tick = 0; tick < end; ++tick) {
+    feeder.step(game, tick);
+    const uint32_t live = uint32_t(game.world().particles->stats().live_particles);
+    if (live > peak) peak = live, peak_tick = tick + 1;
+    if (tick < first || (tick + 1) % kSampleEvery) continue;
+    const bool compare = samples % kCompareEvery == 0;
+    for (int k = 0; k < 2; ++k) {
+      CameraRun& c = cams[samples % 2 ? 1 - k : k];
+      build_render_view(game.world(), c.models, 1.0, CameraSettings{c.mode, 0}, hud, kWidth, kHeight, view);
+      sample(c, view, compare, (samples / kCompareEvery) % 2 == 1, csv, tick + 1);
+      c.live.push_back(live);
+    }
+    ++samples;
+  }
+  std::printf("  %s: %llu ticks, from tick %llu; peak %u live particles at tick %llu\n", script_path,
+              static_cast<unsigned long long>(end), static_cast<unsigned long long>(first), peak,
+              static_cast<unsigned long long>(peak_tick));
+  bench::report_metric(std::string(metric_prefix) + "live_particles_peak", peak);
+}
+
+}  // namespace
+
+ARCFIRE_SCENE(combat_view) {
+  const std::string root = arc::data_root();
+  if (std::getenv("ARCFIRE_BENCH_RECORD")) record_dogfight(root, root + kScript);
+  const std::unique_ptr<HeadlessContext> ctx = bench::context_or_skip();
+  if (!ctx) return;
+  const std::string part = std::getenv("ARCFIRE_BENCH_COMBAT") ? std::getenv("ARCFIRE_BENCH_COMBAT") : "";
+  if (!part.empty() && part != "duel" && part != "merge" && part != "fleet") {
+    std::fprintf(stderr, "arcfire-bench: ARCFIRE_BENCH_COMBAT='%s' is not a part; use duel, merge or fleet (unset: all)\n", part.c_str());
+    std::exit(2);
+  }
   std::FILE* csv = nullptr;
   if (const char* f = std::getenv("ARCFIRE_BENCH_FRAMES")) {
     csv = std::fopen(f, "w");
@@ -364,20 +453,23 @@ ARCFIRE_SCENE(combat_view) {
     std::fprintf(csv, "camera,tick,ms,single_ms,particles_in,drawn,estimated_layers,budgeted_layers,fragments,draws,reduced,soft,cap,prep_ms,cpu_ms,composite_share,"
                       "opaque_ms,particle_prep_ms,particle_target_ms,particle_draws_ms,composite_ms,post_ms,hud_ms,finish_ms\n");
   }
-  for (uint64_t tick = 0; tick < end; ++tick) {
-    feeder.step(game, tick);
-    if ((tick + 1) % kSampleEvery) continue;
-    const bool compare = samples % kCompareEvery == 0;
-    for (int k = 0; k < 2; ++k) {
-      CameraRun& c = cams[samples % 2 ? 1 - k : k];
-      build_render_view(game.world(), c.models, 1.0, CameraSettings{c.mode, 0}, hud, kWidth, kHeight, view);
-      sample(c, view, compare, (samples / kCompareEvery) % 2 == 1, csv, tick + 1);
-    }
-    ++samples;
+  std::printf("  %s\n", ctx->description().c_str());
+  if (part.empty() || part == "duel") {
+    CameraRun cams[2];
+    play(root, kScript, "combat_duel_", true, 0, cams, csv);
+    for (CameraRun& c : cams) report(c);
+  }
+  if (part.empty() || part == "merge") {
+    CameraRun cams[2];
+    play(root, kMergeScript, "combat_merge_", false, kMergeFirstTick, cams, csv);
+    for (CameraRun& c : cams) report_merge(c, "combat_merge_");
+  }
+  if (part.empty() || part == "fleet") {
+    CameraRun cams[2];
+    play(root, kFleetScript, "combat_fleet_", false, kFleetFirstTick, cams, csv);
+    for (CameraRun& c : cams) report_merge(c, "combat_fleet_");
   }
   if (csv) std::fclose(csv);
-  std::printf("  %s: %llu ticks, %s\n", kScript, static_cast<unsigned long long>(end), ctx->description().c_str());
-  for (CameraRun& c : cams) report(c);
 }
 
 }  // namespace arc

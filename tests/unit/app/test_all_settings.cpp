@@ -62,7 +62,8 @@ TEST(AllSettings, EachModuleRegistersItsOwnKeys) {
 TEST(AllSettings, DefaultsAreDocumentedAndValid) {
   const Settings s = all_settings();
   EXPECT_EQ(s.choice("render.sorting"), "full");
-  EXPECT_EQ(s.integer("particles.budget"), 200000);
+  EXPECT_EQ(s.integer("particles.budget"), 400000);
+  EXPECT_DOUBLE_EQ(s.number("render.target_frame_ms"), 16.7);
   for (const SettingDef& d : s.all()) {
     EXPECT_FALSE(d.doc.empty()) << d.key;
     Settings again = s;
@@ -127,4 +128,22 @@ TEST(AllSettings, PresetsSetTheLook) {
 }
 
 }  // namespace
+}  // namespace arc
+
+namespace arc {
+TEST(AllSettings, TargetFrameTimeValidatesItsRange) {
+  Settings s = all_settings();
+  EXPECT_NO_THROW(s.set("render.target_frame_ms", "0", "--set"));  // off
+  EXPECT_NO_THROW(s.set("render.target_frame_ms", "33.3", "--set"));
+  for (const char* bad : {"-1", "1001", "fast", "nan"}) {
+    try {
+      s.set("render.target_frame_ms", bad, "--set");
+      ADD_FAILURE() << bad << " was taken";
+    } catch (const std::exception& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("render.target_frame_ms"), std::string::npos) << what;
+      EXPECT_NE(what.find("[0, 1000]"), std::string::npos) << what;
+    }
+  }
+}
 }  // namespace arc

@@ -7,6 +7,7 @@
 #include "assets/image.h"
 #include "gfx/color_space.h"
 #include "gfx/cover_boxes.h"
+#include "gfx/frame_time_target.h"
 #include "gfx/image_compare.h"
 #include "gfx/overdraw_budget.h"
 #include "gfx/particle_batch.h"
@@ -60,6 +61,13 @@ TEST(GfxCpuExamples, OverdrawBudget) {
   EXPECT_GT(s.estimated_layers, 0.0);
   EXPECT_LE(s.budgeted_layers, 3.0) << "within the budget";
   EXPECT_EQ(areas.size(), particles.size());
+}
+
+TEST(GfxCpuExamples, FrameTimeTarget) {
+  FrameTimeTarget t;
+  t.set_target(16.7);
+  t.observe(40.0, true);  // a slow frame: level() falls below 1
+  EXPECT_LT(t.level(), 1.0);
 }
 
 TEST(GfxCpuExamples, PrepareABatch) {
