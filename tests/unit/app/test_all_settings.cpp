@@ -41,7 +41,7 @@ TEST(AllSettings, EachModuleRegistersItsOwnKeys) {
     void (*register_keys)(Settings&);
     std::string prefix;
     size_t count;
-  } modules[] = {{register_render_settings, "render.", 21},
+  } modules[] = {{register_render_settings, "render.", 22},
                  {register_particle_settings, "particles.", 3},
                  {register_sim_settings, "sim.", 3},
                  {register_net_settings, "net.", 5},
