@@ -10,6 +10,7 @@
 #include "game/app/dev_panel_gate.h"
 #include "game/app/key_remap.h"
 #include "game/app/menu.h"
+#include "menu_script.h"
 #include "game/app/menu_input.h"
 #include "game/app/menu_snapshots.h"
 #include "game/render/menu_layout.h"
@@ -21,27 +22,11 @@
 namespace arc {
 namespace {
 
+using menu_test::run;
+using menu_test::has_line;
 const std::string kRoot = arc::data_root();
 
-Menu make_menu() {
-  Bindings b = load_bindings(kRoot + "/assets/settings/bindings.json");
-  return Menu(load_mission_catalog(kRoot + "/levels", kRoot), UserFiles{}, b, b,
-              kRoot + "/assets/settings/quality.json");
-}
-
-// Feeds the script's inputs; returns every request they made.
-std::vector<MenuRequest> run(Menu& m, const std::string& script) {
-  std::vector<MenuRequest> all;
-  for (const UiInput& in : parse_ui_inputs(script, "script")) {
-    std::vector<MenuRequest> r = m.handle(in);
-    all.insert(all.end(), r.begin(), r.end());
-  }
-  return all;
-}
-
-bool has_line(const MenuPage& p, const std::string& text) {
-  return describe_page(p).find(text) != std::string::npos;
-}
+Menu make_menu() { return menu_test::shipped_menu(); }
 
 // The fight a Launch request starts, run headless without input until decided (at most 2 min).
 MissionResult fight(const MenuRequest& launch) {

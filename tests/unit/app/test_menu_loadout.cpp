@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "game/app/menu.h"
+#include "menu_script.h"
 #include "game/app/menu_input.h"
 #include "game/app/menu_snapshots.h"
 #include "game/sim/world.h"
@@ -12,25 +13,15 @@
 namespace arc {
 namespace {
 
+using menu_test::run;
+using menu_test::has_line;
 const std::string kRoot = arc::data_root();
 
 Menu make_menu(const std::vector<std::string>& unlocked = {}) {
-  Bindings b = load_bindings(kRoot + "/assets/settings/bindings.json");
-  Menu m(load_mission_catalog(kRoot + "/levels", kRoot), UserFiles{}, b, b, kRoot + "/assets/settings/quality.json");
+  Menu m = menu_test::shipped_menu();
   m.set_unlocked_ships(unlocked);
   return m;
 }
-
-std::vector<MenuRequest> run(Menu& m, const std::string& script) {
-  std::vector<MenuRequest> all;
-  for (const UiInput& in : parse_ui_inputs(script, "script")) {
-    std::vector<MenuRequest> r = m.handle(in);
-    all.insert(all.end(), r.begin(), r.end());
-  }
-  return all;
-}
-
-bool has_line(const MenuPage& p, const std::string& text) { return describe_page(p).find(text) != std::string::npos; }
 
 TEST(MenuLoadout, CatalogOffersTheLevelsShipsWithTheirLoadouts) {
   const auto all = load_mission_catalog(kRoot + "/levels", kRoot);

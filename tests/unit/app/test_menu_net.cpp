@@ -7,30 +7,21 @@
 
 #include "core/data_root.h"
 #include "game/app/menu.h"
+#include "menu_script.h"
 #include "game/app/menu_snapshots.h"
 
 namespace arc {
 namespace {
 
+using menu_test::run;
+using menu_test::has_line;
 const std::string kRoot = arc::data_root();
 
 Menu make_menu(UserFiles files = {}) {
-  Bindings b = load_bindings(kRoot + "/assets/settings/bindings.json");
-  Menu m(load_mission_catalog(kRoot + "/levels", kRoot), std::move(files), b, b, kRoot + "/assets/settings/quality.json");
+  Menu m = menu_test::shipped_menu(std::move(files));
   m.set_net_missions({{kRoot + "/levels/duel.json", "Duel"}, {kRoot + "/levels/arena.json", "Arena"}});
   return m;
 }
-
-std::vector<MenuRequest> run(Menu& m, const std::string& script) {
-  std::vector<MenuRequest> all;
-  for (const UiInput& in : parse_ui_inputs(script, "script")) {
-    std::vector<MenuRequest> r = m.handle(in);
-    all.insert(all.end(), r.begin(), r.end());
-  }
-  return all;
-}
-
-bool has_line(const MenuPage& p, const std::string& text) { return describe_page(p).find(text) != std::string::npos; }
 
 TEST(MenuNet, HostAsksForTheMissionDifficultyAndPort) {
   Menu m = make_menu();

@@ -11,6 +11,7 @@
 #include "core/error.h"
 #include "core/json.h"
 #include "game/app/menu.h"
+#include "menu_script.h"
 #include "game/app/menu_snapshots.h"
 #include "game/app/quick_battle.h"
 #include "game/app/quick_battle_files.h"
@@ -21,6 +22,7 @@
 namespace arc {
 namespace {
 
+using menu_test::run;
 namespace fs = std::filesystem;
 const std::string kRoot = arc::data_root();
 
@@ -167,21 +169,11 @@ TEST(QuickBattle, SetupRoundTripsAndABadFileFallsBack) {
 }
 
 Menu make_menu(const std::string& user_dir) {
-  Bindings b = load_bindings(kRoot + "/assets/settings/bindings.json");
   UserFiles files;
   files.dir = user_dir;
-  Menu m(load_mission_catalog(kRoot + "/levels", kRoot), files, b, b, kRoot + "/assets/settings/quality.json");
+  Menu m = menu_test::shipped_menu(files);
   offer_quick_battle(m, kRoot, user_dir);
   return m;
-}
-
-std::vector<MenuRequest> run(Menu& m, const std::string& script) {
-  std::vector<MenuRequest> all;
-  for (const UiInput& in : parse_ui_inputs(script, "script")) {
-    std::vector<MenuRequest> r = m.handle(in);
-    all.insert(all.end(), r.begin(), r.end());
-  }
-  return all;
 }
 
 TEST(QuickBattle, MenuPageChangesRowsAndLaunchCarriesTheLevel) {
