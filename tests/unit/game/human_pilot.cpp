@@ -250,17 +250,26 @@ void HumanPilot::order_wing(const World& w, const Sight& seen) {
   }
 }
 
-// An open objective names the target the panel shows.
+// An open objective names the target the panel shows; while a primary row is open, a bonus
+// row's target waits, as a player reads the list.
 bool HumanPilot::named(const Sight& seen) const {
   if (seen.target_name.empty()) return false;
+  const auto bonus = [](const std::string& row) { return row.find("(bonus)") != std::string::npos; };
+  const bool primary_open = std::any_of(seen.objectives.begin(), seen.objectives.end(),
+                                        [&](const std::string& row) { return !bonus(row); });
   for (const std::string& row : seen.objectives)
-    if (row.find(seen.target_name) != std::string::npos) return true;
+    if (!(primary_open && bonus(row)) && row.find(seen.target_name) != std::string::npos) return true;
   return false;
 }
 
 // Open objectives but a target they do not name: T (next hostile) every 0.4 s, remembering the
 // names it shows; once a name comes round again none is named, and it rests 10 s.
 void HumanPilot::hunt_named_target(const World& w, const Sight& seen) {
+  // Without torpedoes a capital ship no open objective names is left to the big guns: T on.
+  if (seen.target && seen.target_has_parts && !seen.torpedo && !named(seen)) {
+    if (w.tick - last_target_key_ >= seconds_to_ticks(w, 0.4)) tap(bindings_.target_next_hostile), last_target_key_ = w.tick;
+    return;
+  }
   if (!seen.target || seen.objectives.empty() || named(seen)) {
     hunted_.clear();
     return;
