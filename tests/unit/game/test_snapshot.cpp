@@ -115,8 +115,8 @@ TEST(Snapshot, RestoreDoesNotResimulate) {
 
 // ---- damaged snapshots ----------------------------------------------------------------------
 
-std::vector<uint8_t> snapshot_of(const std::string& level, uint64_t ticks) {
-  Game a = Game::load_level(repo(level), options());
+std::vector<uint8_t> snapshot_of(const std::string& level, uint64_t ticks, const GameOptions& o = options()) {
+  Game a = Game::load_level(repo(level), o);
   for (uint64_t t = 0; t < ticks; ++t) a.step(pilot(t), commands(t));
   return a.save();
 }
@@ -183,7 +183,11 @@ TEST(Snapshot, CorruptFieldsBehindAValidChecksumNeverCrash) {
   // Byte positions overwritten with extreme values and the checksum recomputed: each restore
   // either succeeds (a plausible value) and can be stepped, or throws InputError. The duel
   // after a few seconds of fighting has beams, projectiles and a few hundred clusters.
-  const std::vector<uint8_t> bytes = snapshot_of("levels/duel.json", 200);
+  // A budget well above the duel's few thousand particles: each of the 6000 restores builds a
+  // particle store of the budget's size, and the default's would dominate the test's time.
+  GameOptions small = options();
+  small.particle_budget = 20000;
+  const std::vector<uint8_t> bytes = snapshot_of("levels/duel.json", 200, small);
   int errors = 0, loaded = 0;
   const size_t end = bytes.size() - snapshot::kFrameTrailer;
   for (size_t at : positions(snapshot::kFrameHeader, end, 3000, 600)) {
@@ -193,7 +197,7 @@ TEST(Snapshot, CorruptFieldsBehindAValidChecksumNeverCrash) {
       bad[at] = v;
       reseal(bad);
       try {
-        Game g = Game::restore(bad, repo("levels/duel.json"), options());
+        Game g = Game::restore(bad, repo("levels/duel.json"), small);
         for (int k = 0; k < 3; ++k) g.step(pilot(200 + k));
         (void)g.full_hash();
         ++loaded;
