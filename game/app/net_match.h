@@ -9,10 +9,14 @@
 // match: frame() once per 60 Hz tick with the local pilot's input. Nothing here blocks.
 //
 // Example, compiled as NetMatch.HostAndJoin in tests/unit/app/test_net_match.cpp:
-//   NetMatch host(NetMatch::Config{.host = true, .level = "levels/duel.json", .port = 27961});
-//   NetMatch pilot(NetMatch::Config{.join = "127.0.0.1:27961", .name = "Ann"});
-//   while (host.pilots_in() < 2) host.poll(now_ms()), pilot.poll(now_ms());
-//   host.launch();
+//   NetMatch host(host_config(port));
+//   jc.join = "127.0.0.1:" + std::to_string(port);
+//   jc.name = "Ann";
+//   NetMatch pilot(jc);
+//   pilot.pick_slot(3);
+//   ASSERT_TRUE(host.launch());
+//   host.poll(now_ms()), pilot.poll(now_ms());
+//   host.frame(SlotInput{}, now_ms()), pilot.frame(SlotInput{}, now_ms());
 #pragma once
 #include <cstdint>
 #include <memory>
