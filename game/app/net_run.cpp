@@ -58,7 +58,7 @@ void say(const std::string& line) {
 // A refusal, no host, or no launch in time is bad input (exit 2) in one line; false when
 // SIGINT or SIGTERM stopped the wait.
 bool lobby(NetMatch& m, const AppOptions& o) {
-  const std::string who = o.net.host ? "--host" : "--join " + o.net.join;
+  const std::string who = o.net.host ? "--host" : "--join";  // a pilot's lines name the address
   const double limit_s = o.net.host ? 120 : 130;
   const double give_up = now_ms() + limit_s * 1000;
   std::string said;
