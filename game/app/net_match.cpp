@@ -193,6 +193,9 @@ void NetMatch::send_lobby() {
 
 // The host's lobby events (connect, the pilot's Hello checked, slot picks, leaving).
 void NetMatch::poll_host_lobby(double now_ms) {
+  // Launched at the start of the poll after the last pilot came in, so the caller has the
+  // lobby's messages ("Ann joined") before the launch's line.
+  if (cfg_.players > 0 && pilots_in() >= cfg_.players && launch()) return;
   const uint64_t build = build_content_id(ARCFIRE_VERSION);
   bool changed = false;
   ENetEvent ev;
@@ -258,7 +261,6 @@ void NetMatch::poll_host_lobby(double now_ms) {
   status_ = "Hosting " + level_ + " on port " + std::to_string(cfg_.port) + ": " + std::to_string(in) + " of " +
             std::to_string(slots_) + " slots flown" +
             (cfg_.players > 0 ? ", launch at " + std::to_string(cfg_.players) : "");
-  if (cfg_.players > 0 && in >= cfg_.players) launch();
 }
 
 // A pilot's lobby (connecting, the level checked and the Hello sent, the lobby's
@@ -320,10 +322,10 @@ void NetMatch::poll_join_lobby(double now_ms) {
       pings_.resize(size_t(slots_), 0.0);
       status_ = cfg_.join + ", " + level_ + ": waiting for the launch";
       if (w->start_tick == 1) {
-        std::vector<bool> piloted(size_t(slots_), false);
-        for (int s = 0; s < slots_; ++s) piloted[size_t(s)] = (w->piloted_mask >> s) & 1;
+        piloted_.assign(size_t(slots_), false);
+        for (int s = 0; s < slots_; ++s) piloted_[size_t(s)] = (w->piloted_mask >> s) & 1;
         owner_.assign(size_t(slots_), nullptr);
-        for (int s = 0; s < slots_; ++s) owner_[size_t(s)] = piloted[size_t(s)] ? this : nullptr;
+        for (int s = 0; s < slots_; ++s) owner_[size_t(s)] = piloted_[size_t(s)] ? this : nullptr;
         start_match();
       }
     }
@@ -341,8 +343,10 @@ void NetMatch::pick_slot(int slot) {
 
 bool NetMatch::launch() {
   if (!cfg_.host || phase_ != Phase::Lobby) return false;
+  piloted_.assign(size_t(slots_), false);
+  for (int s = 0; s < slots_; ++s) piloted_[size_t(s)] = s == 0 ? cfg_.host_flies : !names_[size_t(s)].empty();
   uint8_t mask = 0;
-  for (int s = 0; s < slots_; ++s) mask = uint8_t(mask | (!names_[size_t(s)].empty() ? 1 << s : 0));
+  for (int s = 0; s < slots_; ++s) mask = uint8_t(mask | (piloted_[size_t(s)] ? 1 << s : 0));
   for (int s = 1; s < slots_; ++s)
     if (ENetPeer* p = static_cast<ENetPeer*>(owner_[size_t(s)]))
       send_now(p, Welcome{uint8_t(s), uint8_t(slots_), uint8_t(input_delay_), mask, seed_, 1, names_, level_});
@@ -357,8 +361,7 @@ void NetMatch::start_match() {
   PeerConfig pc;
   pc.slots = slots_, pc.local_slot = local_, pc.input_delay = input_delay_, pc.host = cfg_.host;
   pc.timeout_ms = cfg_.timeout_s * 1000.0;
-  pc.piloted.assign(size_t(slots_), false);
-  for (int s = 0; s < slots_; ++s) pc.piloted[size_t(s)] = !names_[size_t(s)].empty();
+  pc.piloted = piloted_;
   if (cfg_.host)
     for (int s = 1; s < slots_; ++s) wire_->by_slot[size_t(s)] = static_cast<ENetPeer*>(owner_[size_t(s)]);
   else
@@ -420,11 +423,17 @@ std::string NetMatch::final_line(int64_t up_to) const {
   const RollbackSession& rs = peer_->session();
   const int64_t fin = std::min<int64_t>(rs.final_tick(), up_to);
   char b[256];
-  std::snprintf(b, sizeof b, "net: slot %d final tick %lld hash %s rollbacks %llu resimulated %llu ticks %llu compared %llu",
+  std::snprintf(b, sizeof b,
+                "net: slot %d final tick %lld hash %s rollbacks %llu resimulated %llu ticks %llu compared %llu bytes_out %llu",
                 local_, (long long)fin, fin > 0 ? hex(rs.hash_at(fin)).c_str() : "-",
                 (unsigned long long)rs.stats().rollbacks, (unsigned long long)rs.stats().resimulated,
-                (unsigned long long)rs.stats().ticks, (unsigned long long)peer_->counters().hashes_compared);
+                (unsigned long long)rs.stats().ticks, (unsigned long long)peer_->counters().hashes_compared,
+                (unsigned long long)peer_->counters().bytes_out);
   return b;
+}
+
+int NetMatch::pilots_connected() const {
+  return int(std::count_if(wire_->by_slot.begin(), wire_->by_slot.end(), [](const ENetPeer* p) { return p != nullptr; }));
 }
 
 // A Bye to the others (the host's ends the match for them), and the connections closed.
@@ -439,12 +448,12 @@ void NetMatch::leave() {
   enet_host_flush(wire_->host);
 }
 
-std::string NetMatch::finish(const std::string& record_path) {
+std::string NetMatch::finish(const std::string& record_path, int64_t last_tick) {
   if (!peer_ || finished_) return "";
   leave();
   const RollbackSession& rs = peer_->session();
   const std::string record = !record_path.empty() ? record_path : "net_match_" + std::to_string(local_) + ".replay";
-  write_file_atomic(record, match_record_text(rs, level_, names_));
+  write_file_atomic(record, match_record_text(rs, level_, names_, last_tick));
   if (peer_->desync_tick()) write_file_atomic("net_dump_" + std::to_string(local_) + ".txt", rs.game().state_dump());
   if (phase_ == Phase::Playing) phase_ = Phase::Over;
   return record;

@@ -1,5 +1,5 @@
-// game/app/net_match.h — a network match for the window: the lobby and the match, polled a
-// frame at a time (the headless `--host` / `--join` loop is net_run.cpp).
+// game/app/net_match.h — a network match: the lobby and the match, polled a frame at a time
+// (by the window, and by net_run.cpp's headless loop for `--headless --host` / `--join`).
 //
 // The host listens and flies slot 0; a pilot connects, shows the host its build, level and data
 // (refused with one line naming what differs), takes the first free slot and may pick another
@@ -50,6 +50,7 @@ class NetMatch {
     int port = 27960;          // host: where to listen; pilot: the port when `join` names none
     int players = 0;           // host: launch when this many pilots are in (0: the host launches)
     std::string name = "Pilot";
+    bool host_flies = true;    // host: false leaves slot 0 to the AI (a headless host without a pilot)
     GameOptions game;          // the host's difficulty goes to everyone with the level
     int input_delay = 0;
     double timeout_s = 5;
@@ -89,11 +90,14 @@ class NetMatch {
   // host leaving, a desync.
   std::vector<std::string> take_messages();
   // Leaves the match (a Bye), writes the match record (and on a desync the state dump);
-  // returns the record's path ("" before the launch or when done before). The destructor
+  // returns the record's path ("" before the launch or when done before). The record stops at
+  // `last_tick` when the peers ran on past the match's end while saying goodbye. The destructor
   // leaves without writing (the window calls finish() when a match ends or it closes).
-  std::string finish(const std::string& record_path = "");
-  // "net: slot S final tick T hash H rollbacks R ..." as the headless match prints it.
+  std::string finish(const std::string& record_path = "", int64_t last_tick = RollbackSession::kNever);
+  // "net: slot S final tick T hash H rollbacks R ... bytes_out B", the line a match ends with.
   std::string final_line(int64_t up_to_tick) const;
+  // Host: the pilots still connected (a host lingers after the end until they have compared).
+  int pilots_connected() const;
 
  private:
   void poll_host_lobby(double now_ms);
@@ -115,6 +119,7 @@ class NetMatch {
   std::vector<std::string> names_;   // by slot ("" : AI)
   std::vector<double> pings_;        // by slot
   std::vector<void*> owner_;         // host: the connection flying each slot
+  std::vector<bool> piloted_;        // by slot at the launch: flown by a pilot's input, not the AI
   std::vector<std::string> teams_, ships_;
   std::unique_ptr<NetPeer> peer_;
   std::vector<bool> was_dropped_;

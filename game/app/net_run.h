@@ -8,7 +8,9 @@
 // two pilots, which rollback hides. The host flies slot 0; pilots take the next slots in order.
 //
 // Exit codes: 0 the match ran to its end (or the host left), 1 a desync (its tick on stderr;
-// net_dump_SLOT.txt and the record are written), 2 bad input, a refused join or no host.
+// net_dump_SLOT.txt and the record are written), 2 bad input, a refused join or no host,
+// 130 / 143 stopped by SIGINT / SIGTERM (the others told, the record of the match so far written).
+// The loop is NetMatch's (game/app/net_match.h), the window's own, driven at 60 Hz.
 #pragma once
 
 namespace arc {

@@ -179,7 +179,7 @@ void WindowSession::end_net(const std::string& why) {
   const int64_t up_to = options_.ticks > 0 ? options_.ticks : net_->peer_ready() ? net_->peer().session().final_tick() : 0;
   std::string record;
   try {
-    record = net_->finish(options_.net.match_record);
+    record = net_->finish(options_.net.match_record, options_.ticks > 0 ? options_.ticks : RollbackSession::kNever);
   } catch (const std::exception& e) {
     notices_.show(e.what(), net_over_at_, 8.0);
   }

@@ -78,7 +78,7 @@ class RollbackSession {
   uint64_t hash_at(int64_t t) const { return hashes_.at(size_t(t)); }
 
   // The next tick is inside the prediction window (its local input may still be missing).
-  bool window_open() const { return tick_ + 1 <= confirmed() + cfg_.max_prediction; }
+  bool window_open() const { return tick_ + 1 - cfg_.max_prediction <= confirmed(); }
   bool can_advance() const;
   // Called after every step (re-simulated ones too), before the tick's hash: tests alter a
   // peer's state with it to force a desync.

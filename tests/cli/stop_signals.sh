@@ -7,7 +7,8 @@
 #             exits without writing the CSV, and the recording, cut off as by a crash, replays.
 #   headless  --headless --summary --audio-out and a replay: exit 130 / 143, the stop line, the
 #             summary of the tick reached, a WAV that is whole, no check failure and no golden
-#             updated; a second signal exits at once, writing nothing.
+#             updated; a second signal exits at once, writing nothing; a network host alone
+#             (--players 1, the AI in every slot): exit 130 / 143, its record replays to its hash.
 # The window part exits 77 (ctest: skipped) when xvfb-run or xdotool is missing.
 set -u
 arcfire="$(realpath "$1")"; out="$(realpath -m "$2")"; part="${3:-headless}"
@@ -78,6 +79,26 @@ headless() {
   grep -q "the golden files are unchanged" "$out/replay_TERM.err" || fail "replay --update-golden: $(cat "$out/replay_TERM.err")"
   cmp -s "$out/replays/long.replay" "$out/long.replay.orig" || fail "--update-golden rewrote the script"
   [ ! -e "$out/replays/golden/long/hashes.txt" ] || fail "--update-golden wrote a hash log"
+
+  # A network host alone: the lobby launches at once, the match runs until the signal.
+  for sig in INT TERM; do
+    local base="$out/net_$sig" code final replayed; code=$(code_of $sig)
+    "$arcfire" --headless --host --players 1 --port $((30000 + ($$ + RANDOM) % 20000)) --level levels/duel.json \
+      --ticks 1000000 --match-record "$base.replay" >"$base.out" 2>"$base.err" &
+    local pid=$!
+    after 20 $pid
+    kill -$sig $pid; wait $pid; local rc=$?
+    [ "$rc" = "$code" ] || fail "net SIG$sig: exit $rc, expected $code: $(cat "$base.out" "$base.err")"
+    tick=$(sed -n "s/^arcfire: stopped by SIG$sig at tick \([0-9]*\) of 1000000$/\1/p" "$base.err")
+    [ -n "$tick" ] || fail "net SIG$sig: no stop line naming the tick: $(cat "$base.err")"
+    final=$(sed -n 's/.*final tick \([0-9]*\) hash \([0-9a-f]*\).*/\1 \2/p' "$base.out")
+    [ "${final%% *}" = "$tick" ] || fail "net SIG$sig: final line '$final', stop line tick $tick"
+    "$arcfire" --headless --no-render --replay "$base.replay" >"$base.replay.log" 2>&1 ||
+      fail "net SIG$sig: the record does not replay: $(tail -3 "$base.replay.log")"
+    replayed=$(sed -n 's/^final hash \([0-9a-f]*\) at tick \([0-9]*\).*/\2 \1/p' "$base.replay.log")
+    [ "$replayed" = "$final" ] || fail "net SIG$sig: the record replays to '$replayed', the host ended at '$final'"
+    echo "net host SIG$sig: exit $rc at tick $tick, the record replays to its hash"
+  done
 
   # Both signals while the run cannot act on the first: the second ends it before any writing.
   local base="$out/twice"

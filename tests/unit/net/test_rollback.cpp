@@ -65,5 +65,19 @@ TEST(NetRollback, OnePilotMatchesSinglePlayerWithoutAi) {
   EXPECT_EQ(single.world().ships[1].position, ai.world().ships[1].position);
 }
 
+// A host with no pilot at all (every slot flown by the AI) still runs: nothing is ever
+// confirmed, and the prediction window must not overflow past "never".
+TEST(NetRollback, EverySlotFlownByTheAiAdvances) {
+  RollbackSession s(Game::load_level("levels/duel.json", {}), {2, 0, 0, 12, {false, false}});
+  EXPECT_EQ(s.confirmed(), RollbackSession::kNever);
+  for (int t = 1; t <= 30; ++t) {
+    ASSERT_TRUE(s.window_open()) << "tick " << t;
+    s.add_local_input(SlotInput{});
+    s.advance();
+  }
+  EXPECT_EQ(s.tick(), 30);
+  EXPECT_EQ(s.final_tick(), 30);
+}
+
 }  // namespace
 }  // namespace arc
