@@ -22,27 +22,15 @@ std::string strike_ships(const std::string& striker_class) {
     { "name": "Corvette", "class": "corvette", "team": "red", "ai": "capital", "position": [0, 0, 0], "orientation": [180, 0, 0] })";
 }
 
-ShipId find(const World& w, const std::string& name) {
-  for (const Ship& s : w.ships)
-    if (s.name == name) return s.id;
-  return {};
-}
-
-size_t part_index(const Ship& s, const std::string& name) {
-  for (size_t i = 0; i < s.cls->part_count(); ++i)
-    if (part_name(*s.cls, i) == name) return i;
-  return size_t(-1);
-}
-
 TEST(CapitalAi, StrikePartIsShieldGeneratorThenEnginesThenNearestTurret) {
   Game g = Game::load_level(test::write_level("strike_parts.json", test::level_text(strike_ships("viper"))), test::options());
   World& w = g.world_mut();
-  const Ship& s = w.ship(find(w, "Striker"));
-  Ship& c = w.ship(find(w, "Corvette"));
-  EXPECT_EQ(pick_strike_part(w, s, c), int(part_index(c, "shield generator")));
-  c.parts[part_index(c, "shield generator")].hull = 0;
-  EXPECT_EQ(pick_strike_part(w, s, c), int(part_index(c, "engines")));
-  c.parts[part_index(c, "engines")].hull = 0;
+  const Ship& s = w.ship(test::ship_named(w, "Striker"));
+  Ship& c = w.ship(test::ship_named(w, "Corvette"));
+  EXPECT_EQ(pick_strike_part(w, s, c), int(test::part_index(c, "shield generator")));
+  c.parts[test::part_index(c, "shield generator")].hull = 0;
+  EXPECT_EQ(pick_strike_part(w, s, c), int(test::part_index(c, "engines")));
+  c.parts[test::part_index(c, "engines")].hull = 0;
   const int turret = pick_strike_part(w, s, c);
   ASSERT_GE(turret, 0);
   EXPECT_LT(size_t(turret), c.cls->turrets.size());
@@ -56,8 +44,8 @@ TEST(CapitalAi, StrikePartIsShieldGeneratorThenEnginesThenNearestTurret) {
 TEST(CapitalAi, PilotWithTorpedoesKillsTheShieldGenerator) {
   Game g = Game::load_level(test::write_level("strike_torpedo.json", test::level_text(strike_ships("viper"))), test::options());
   const World& w = g.world();
-  const ShipId corvette = find(w, "Corvette"), striker = find(w, "Striker");
-  const size_t generator = part_index(w.ship(corvette), "shield generator");
+  const ShipId corvette = test::ship_named(w, "Corvette"), striker = test::ship_named(w, "Striker");
+  const size_t generator = test::part_index(w.ship(corvette), "shield generator");
   bool torpedo_seen = false, aimed = false;
   int64_t ticks = 0;
   const int64_t limit = seconds_to_ticks(w, 60.0);
@@ -78,13 +66,13 @@ TEST(CapitalAi, PilotWithTorpedoesKillsTheShieldGenerator) {
 TEST(CapitalAi, PilotWithoutTorpedoesNeverLaunchesThem) {
   Game g = Game::load_level(test::write_level("strike_dart.json", test::level_text(strike_ships("dart"))), test::options());
   const World& w = g.world();
-  const ShipId corvette = find(w, "Corvette"), striker = find(w, "Striker");
+  const ShipId corvette = test::ship_named(w, "Corvette"), striker = test::ship_named(w, "Striker");
   ASSERT_FALSE(w.ship(striker).cls->torpedo.present);
   bool aimed = false;
   for (int64_t t = 0; t < seconds_to_ticks(w, 30.0) && w.ship(striker).alive; ++t) {
     g.step(InputFrame{});
     for (const Projectile& p : w.projectiles) ASSERT_NE(p.kind, SecondaryWeapon::Torpedo);
-    aimed = aimed || target_part(w, w.ship(striker)) == int(part_index(w.ship(corvette), "shield generator"));
+    aimed = aimed || target_part(w, w.ship(striker)) == int(test::part_index(w.ship(corvette), "shield generator"));
   }
   EXPECT_TRUE(aimed);
 }
@@ -100,8 +88,8 @@ TEST(CapitalAi, SubsystemDestroyedTriggerRunsItsActions) {
   g.step(InputFrame{});
   ASSERT_TRUE(w.mission);
   EXPECT_EQ(w.mission->objectives[0].status, ObjectiveStatus::Pending);
-  Ship& c = w.ship(find(w, "Corvette"));
-  const size_t generator = part_index(c, "shield generator");
+  Ship& c = w.ship(test::ship_named(w, "Corvette"));
+  const size_t generator = test::part_index(c, "shield generator");
   damage_parts(w, c, part_position(c, generator), 1e6, ShipId{}, int(generator));
   g.step(InputFrame{});
   EXPECT_EQ(w.mission->objectives[0].status, ObjectiveStatus::Done);

@@ -29,18 +29,6 @@ Game load(const std::string& name, const std::string& ships, const GameOptions& 
   return Game::load_level(test::write_level(name, test::level_text(ships)), o);
 }
 
-ShipId find(const World& w, const std::string& name) {
-  for (const Ship& s : w.ships)
-    if (s.name == name) return s.id;
-  return {};
-}
-
-size_t part_index(const Ship& s, const std::string& name) {
-  for (size_t i = 0; i < s.cls->part_count(); ++i)
-    if (part_name(*s.cls, i) == name) return i;
-  return size_t(-1);
-}
-
 TEST(Capital, CorvetteClassHasTurretsAndSubsystems) {
   const ShipClassDef c = load_ship_class(test::repo("assets/ships/corvette.json"), "corvette", arc::data_root());
   ASSERT_EQ(c.turrets.size(), 4u);
@@ -83,11 +71,11 @@ TEST(Capital, TurretsFireOnlyInsideTheirArcs) {
                                          ship_row("Target", "warden", "blue", "none", 0, 400, -55));
   for (int i = 0; i < 240; ++i) g.step(InputFrame{});
   const World& w = g.world();
-  const Ship& c = w.ship(find(w, "Corvette"));
-  const Ship& t = w.ship(find(w, "Target"));
-  EXPECT_GE(c.parts[part_index(c, "bow beam turret")].fired_tick, 0);
-  EXPECT_EQ(c.parts[part_index(c, "keel beam turret")].fired_tick, -1);
-  EXPECT_EQ(c.parts[part_index(c, "port flak")].fired_tick, -1);
+  const Ship& c = w.ship(test::ship_named(w, "Corvette"));
+  const Ship& t = w.ship(test::ship_named(w, "Target"));
+  EXPECT_GE(c.parts[test::part_index(c, "bow beam turret")].fired_tick, 0);
+  EXPECT_EQ(c.parts[test::part_index(c, "keel beam turret")].fired_tick, -1);
+  EXPECT_EQ(c.parts[test::part_index(c, "port flak")].fired_tick, -1);
   EXPECT_LT(t.shield + t.hull, t.cls->shield + t.cls->hull);
 }
 
@@ -96,10 +84,10 @@ TEST(Capital, FlakBurstsHurtAFighterOnTheFlank) {
                                          ship_row("Target", "dart", "blue", "none", 300, 0, 15));
   for (int i = 0; i < 300; ++i) g.step(InputFrame{});
   const World& w = g.world();
-  const Ship& c = w.ship(find(w, "Corvette"));
-  const Ship& t = w.ship(find(w, "Target"));
-  EXPECT_GE(c.parts[part_index(c, "starboard flak")].fired_tick, 0);
-  EXPECT_EQ(c.parts[part_index(c, "port flak")].fired_tick, -1);
+  const Ship& c = w.ship(test::ship_named(w, "Corvette"));
+  const Ship& t = w.ship(test::ship_named(w, "Target"));
+  EXPECT_GE(c.parts[test::part_index(c, "starboard flak")].fired_tick, 0);
+  EXPECT_EQ(c.parts[test::part_index(c, "port flak")].fired_tick, -1);
   EXPECT_LT(t.shield + t.hull, t.cls->shield + t.cls->hull);
 }
 
@@ -107,31 +95,31 @@ TEST(Capital, DestroyedEnginesStopTheShipAndAGeneratorDropsTheShield) {
   Game g = load("capital_parts.json", ship_row("Corvette", "corvette", "red", "capital", 0, 0, 0));
   for (int i = 0; i < 600; ++i) g.step(InputFrame{});
   World& w = g.world_mut();
-  Ship& c = w.ship(find(w, "Corvette"));
+  Ship& c = w.ship(test::ship_named(w, "Corvette"));
   const double cruising = safe_len(c.velocity);
   ASSERT_GT(cruising, 5.0);
-  const size_t engines = part_index(c, "engines"), generator = part_index(c, "shield generator");
+  const size_t engines = test::part_index(c, "engines"), generator = test::part_index(c, "shield generator");
   damage_parts(w, c, part_position(c, engines), 1e6, ShipId{}, int(engines));
   EXPECT_TRUE(engines_down(c));
   EXPECT_FALSE(shield_generators_down(c));
   for (int i = 0; i < 1200; ++i) g.step(InputFrame{});
-  EXPECT_LT(safe_len(w.ship(find(w, "Corvette")).velocity), cruising * 0.05);
-  Ship& c2 = w.ship(find(w, "Corvette"));
+  EXPECT_LT(safe_len(w.ship(test::ship_named(w, "Corvette")).velocity), cruising * 0.05);
+  Ship& c2 = w.ship(test::ship_named(w, "Corvette"));
   ASSERT_GT(c2.shield, 0.0);
   damage_parts(w, c2, part_position(c2, generator), 1e6, ShipId{}, int(generator));
   EXPECT_TRUE(shield_generators_down(c2));
   for (int i = 0; i < 1800; ++i) g.step(InputFrame{});  // longer than the regeneration delay
-  EXPECT_EQ(w.ship(find(w, "Corvette")).shield, 0.0);
-  EXPECT_TRUE(w.ship(find(w, "Corvette")).alive);
+  EXPECT_EQ(w.ship(test::ship_named(w, "Corvette")).shield, 0.0);
+  EXPECT_TRUE(w.ship(test::ship_named(w, "Corvette")).alive);
 }
 
 // Beams that reach the hull hurt the part they strike: a turret standing off the hull.
 TEST(Capital, HullHitsOnAPartDamageIt) {
   Game g = load("capital_hit.json", ship_row("Corvette", "corvette", "red", "capital", 0, 0, 0));
   World& w = g.world_mut();
-  Ship& c = w.ship(find(w, "Corvette"));
+  Ship& c = w.ship(test::ship_named(w, "Corvette"));
   c.shield = 0;
-  const size_t flak = part_index(c, "starboard flak");
+  const size_t flak = test::part_index(c, "starboard flak");
   const double before = c.parts[flak].hull;
   apply_damage(w, c, 50, part_position(c, flak) + glm::dvec3(5, 0, 0), ShipId{});
   EXPECT_EQ(c.parts[flak].hull, before - 50);
@@ -153,29 +141,29 @@ TEST(Capital, TorpedoHurtsOnlyCapitalShipsAndTheirSubsystems) {
   Ship& p = w.ship(w.player);
   EXPECT_EQ(p.secondary, SecondaryWeapon::Torpedo);
   // At a fighter the trigger does nothing.
-  p.target = find(w, "Fighter");
+  p.target = test::ship_named(w, "Fighter");
   InputFrame fire;
   fire.buttons = kFireSecondary;
   g.step(fire);
   EXPECT_TRUE(w.projectiles.empty());
-  p.target = find(w, "Corvette");
+  p.target = test::ship_named(w, "Corvette");
   g.step(InputFrame{}, {Command::TargetSubsystem});
   g.step(InputFrame{}, {Command::TargetSubsystem});
   g.step(InputFrame{}, {Command::TargetSubsystem});
   g.step(InputFrame{}, {Command::TargetSubsystem});
   g.step(InputFrame{}, {Command::TargetSubsystem});  // past the four turrets: the engines
-  const Ship& c = w.ship(find(w, "Corvette"));
-  ASSERT_EQ(target_part(w, w.ship(w.player)), int(part_index(c, "engines")));
+  const Ship& c = w.ship(test::ship_named(w, "Corvette"));
+  ASSERT_EQ(target_part(w, w.ship(w.player)), int(test::part_index(c, "engines")));
   g.step(fire);
   ASSERT_EQ(w.projectiles.size(), 1u);
   EXPECT_EQ(w.projectiles[0].kind, SecondaryWeapon::Torpedo);
   for (int i = 0; i < 900 && !w.projectiles.empty(); ++i) g.step(InputFrame{});
   EXPECT_TRUE(w.projectiles.empty());
-  const Ship& f = w.ship(find(w, "Fighter"));
+  const Ship& f = w.ship(test::ship_named(w, "Fighter"));
   EXPECT_EQ(f.hull, f.cls->hull);
   EXPECT_EQ(f.shield, f.cls->shield);
-  const Ship& c2 = w.ship(find(w, "Corvette"));
-  const size_t engines = part_index(c2, "engines");
+  const Ship& c2 = w.ship(test::ship_named(w, "Corvette"));
+  const size_t engines = test::part_index(c2, "engines");
   EXPECT_EQ(c2.parts[engines].hull, c2.cls->subsystems[0].hull - 450);
   EXPECT_LT(c2.shield + c2.hull, c2.cls->shield + c2.cls->hull);
 }
@@ -185,8 +173,8 @@ TEST(Capital, SubsystemKeyCyclesLivePartsThenTheWholeShip) {
                                           ship_row("Corvette", "corvette", "red", "none", 0, 0, 0) + "," +
                                           ship_row("Other", "dart", "red", "none", 0, 0, -3000));
   World& w = g.world_mut();
-  ASSERT_EQ(w.ship(w.player).target, find(w, "Corvette"));
-  Ship& c = w.ship(find(w, "Corvette"));
+  ASSERT_EQ(w.ship(w.player).target, test::ship_named(w, "Corvette"));
+  Ship& c = w.ship(test::ship_named(w, "Corvette"));
   c.parts[1].hull = 0;  // the keel turret is gone: skipped
   std::vector<int> seen;
   for (int i = 0; i < 6; ++i) {
@@ -204,11 +192,11 @@ TEST(Capital, BreakUpBlastsInStagesThenEnds) {
                                             ship_row("Watcher", "viper", "blue", "none", 0, 0, 2000));
   g.step(InputFrame{});
   World& w = g.world_mut();
-  Ship& c = w.ship(find(w, "Corvette"));
+  Ship& c = w.ship(test::ship_named(w, "Corvette"));
   c.velocity = {0, 0, -20};
   apply_damage(w, c, 1e7, c.position, ShipId{});
   g.step(InputFrame{});
-  EXPECT_FALSE(w.ship(find(w, "Corvette")).alive);
+  EXPECT_FALSE(w.ship(test::ship_named(w, "Corvette")).alive);
   ASSERT_EQ(w.breakups.size(), 1u);
   const glm::dvec3 start = w.breakups[0].position;
   const BreakupDef& d = c.cls->breakup;

@@ -4,6 +4,8 @@
 #include <fstream>
 #include <unistd.h>
 
+#include "game/sim/capital.h"
+
 namespace arc::test {
 
 std::string write_level(const std::string& name, const std::string& text) {
@@ -25,6 +27,18 @@ std::string level_text(const std::string& ships_json, const std::string& extra) 
          extra + R"(
   "ships": [)" + ships_json + R"(]
 })";
+}
+
+ShipId ship_named(const World& w, const std::string& name) {
+  for (const Ship& s : w.ships)
+    if (s.name == name) return s.id;
+  return {};
+}
+
+size_t part_index(const Ship& s, const std::string& name) {
+  for (size_t i = 0; i < s.cls->part_count(); ++i)
+    if (part_name(*s.cls, i) == name) return i;
+  return size_t(-1);
 }
 
 }  // namespace arc::test

@@ -23,4 +23,10 @@ std::string write_level(const std::string& name, const std::string& text);
 // Ships: "name class team ai x y z yaw" rows become a level with destroy_all_hostiles.
 std::string level_text(const std::string& ships_json, const std::string& extra = "");
 
+// The ship the level names `name` (an invalid id when none does).
+ShipId ship_named(const World& w, const std::string& name);
+
+// The index of a capital ship's turret or subsystem by its name (size_t(-1) when it has none).
+size_t part_index(const Ship& s, const std::string& name);
+
 }  // namespace arc::test
