@@ -77,9 +77,9 @@ struct OverdrawOptions {
   float near = 40.0f;          // m
   // Below high screen priority, a particle whose on-screen extent (half its longest side) is
   // under min_px pixels is left out (before the solve, so the budget is spent on what is drawn),
-  // and one under twice that fades toward it, so a particle
-  // shrinking or receding past it goes without a pop. A software rasteriser pays for every
-  // particle drawn, however small; the frame-time target sets it (frame_time_target.h). 0: none.
+  // and one under twice that fades toward it, so a particle shrinking or receding past it goes
+  // without a pop. A software rasteriser pays for every particle drawn, however small; the
+  // frame-time target sets it (frame_time_target.h). 0: none.
   float min_px = 0.0f;
 };
 
