@@ -5,12 +5,17 @@
 // buffer. All vectors are camera-relative, built in view space so the quad always faces the
 // camera and the degenerate cases stay finite.
 uniform usamplerBuffer u_particles;
-// An indexed batch (gfx/particle_batch.h): quad i draws particle u_order[i] & 0x7FFFFFFF of the
-// view's particles as uploaded, bit 31 set when no opaque mesh reaches its stretch, and the
-// soft-edge override is applied here; otherwise quad i draws particle i as the CPU patched it.
+// INDEXED (the per-cluster preparation's programs, gfx/particle_batch.h): quad i draws particle
+// u_order[i] & 0x7FFFFFFF of the view's particles as uploaded, bit 31 set when no opaque mesh
+// reaches its stretch, and the soft-edge override is applied here. Otherwise quad i draws
+// particle i as the CPU patched it, and a software rasteriser runs no fetch or branch for it.
+#ifndef INDEXED
+#define INDEXED 0
+#endif
+#if INDEXED
 uniform usamplerBuffer u_order;
-uniform int u_indexed;
 uniform int u_soft_override;  // −1: none
+#endif
 uniform mat4 u_view;        // rotation only
 uniform mat4 u_proj;
 uniform float u_tan_half_y; // tan(fov_y / 2)
@@ -52,8 +57,12 @@ vec3 instance_rgb(vec4 c) {
 
 void main() {
   int quad = gl_VertexID >> 2;
-  uint entry = u_indexed != 0 ? texelFetch(u_order, quad).r : uint(quad);
+#if INDEXED
+  uint entry = texelFetch(u_order, quad).r;
   int first = int(entry & 0x7FFFFFFFu) * 4;
+#else
+  int first = quad * 4;
+#endif
   uvec4 w3 = texelFetch(u_particles, first + 3);
   vec4 i_pos_size = uintBitsToFloat(texelFetch(u_particles, first));
   vec4 i_axis_rot = uintBitsToFloat(texelFetch(u_particles, first + 1));
@@ -61,7 +70,9 @@ void main() {
   vec2 i_burn_extent = uintBitsToFloat(w3.xy);
   uint i_sprite = w3.z & 0xFFu;                                // uint8 sprite (then uint8 screen priority)
   uvec2 i_soft_board = uvec2((w3.z >> 16) & 0xFFu, w3.z >> 24);  // uint8 soft_edge, uint8 billboard
+#if INDEXED
   if (u_soft_override >= 0) i_soft_board.x = uint(u_soft_override);
+#endif
   vec3 c = (u_view * vec4(i_pos_size.xyz, 1.0)).xyz;
   float dist = max(-c.z, u_near);
   float size = max(i_pos_size.w, kEps);
@@ -106,7 +117,11 @@ void main() {
   // Bit 7 of the soft-edge byte: the renderer found no opaque mesh within this particle's reach,
   // so its soft factor is exactly 1 and the fragment shader skips the depth read.
   uint m = i_soft_board.x & 127u;
+#if INDEXED
   bool clear = i_soft_board.x >= 128u || entry >= 0x80000000u;
+#else
+  bool clear = i_soft_board.x >= 128u;
+#endif
   float push = m == 3u ? 0.5 * extent : m == 4u ? extent : 0.0;
   float pd = -p.z;
   if (push > 0.0 && pd > u_near) p *= max(pd - push, u_near * 1.001) / pd;

@@ -112,10 +112,37 @@ void OverdrawBudget::set_segment_box(Footprint& f, const glm::vec3& c, const glm
   box(f.trim_a0, f.trim_a1, f.trim_b0, f.trim_b1, f.tx, f.ty, f.thx, f.thy);
 }
 
+OverdrawBudget::ViewExtent OverdrawBudget::view_extent(const ParticleInstance& p, const OverdrawFrame& frame) {
+  ViewExtent e;
+  const float tan_y = std::max(frame.tan_half_y, 1e-6f);
+  e.c = frame.to_view * glm::vec3(p.pos[0], p.pos[1], p.pos[2]);
+  e.d = std::max(-e.c.z, frame.near);
+  e.ppu = 0.5f * float(frame.height) / (e.d * tan_y);
+  e.size = std::min(std::max(p.size, 1e-6f), std::max(frame.size_clamp * e.d * tan_y, 1e-6f));
+  e.w_px = e.size * e.ppu;
+  if (p.billboard == uint8_t(Billboard::AxisLocked)) {
+    // particle.vert: the part of the segment seen across the view sets the quad's length.
+    const glm::vec3 a = frame.to_view * glm::vec3(p.axis[0], p.axis[1], p.axis[2]);
+    const float len_c = glm::length(e.c);
+    if (len_c > 1e-6f) e.to_p = e.c / len_c;
+    e.across = a - glm::dot(a, e.to_p) * e.to_p;
+    const float a_len = glm::length(e.across);
+    if (a_len > 1e-6f * std::max(1.0f, glm::length(a))) e.half_axis_px = 0.5f * a_len * e.ppu;
+  }
+  return e;
+}
+
+bool OverdrawBudget::below_min_px(const ParticleInstance& p, const OverdrawFrame& frame, float min_px) {
+  if (!(min_px > 0.0f) || p.screen_priority >= uint8_t(ScreenPriority::High)) return false;
+  const ViewExtent e = view_extent(p, frame);
+  return e.w_px + e.half_axis_px < min_px;
+}
+
 // The footprint of every particle (fp_), the candidates whose cap can bind, and the area of
-// the rest; returns the estimated blended pixels.
+// the rest; returns the estimated blended pixels. One under min_px is left out here, before the
+// solve: the budget is spent on what is drawn.
 double OverdrawBudget::estimate(const std::vector<ParticleInstance>& particles, const OverdrawFrame& frame,
-                                float near_m, double& fixed) {
+                                float near_m, float min_px, double& fixed) {
   const float W = float(frame.width), H = float(frame.height);
   const double screen = double(W) * double(H);
   const float tan_y = std::max(frame.tan_half_y, 1e-6f);
@@ -125,27 +152,23 @@ double OverdrawBudget::estimate(const std::vector<ParticleInstance>& particles, 
   double total = 0;
   for (size_t i = 0; i < particles.size(); ++i) {
     const ParticleInstance& p = particles[i];
-    const glm::vec3 c = frame.to_view * glm::vec3(p.pos[0], p.pos[1], p.pos[2]);
-    const float d = std::max(-c.z, frame.near);
-    const float ppu = 0.5f * H / (d * tan_y);  // pixels per metre at this depth
+    const ViewExtent e = view_extent(p, frame);
+    const glm::vec3& c = e.c;
+    const float d = e.d, ppu = e.ppu;  // ppu: pixels per metre at this depth
     Footprint& f = fp_[i];
-    f.size = std::min(std::max(p.size, 1e-6f), std::max(frame.size_clamp * d * tan_y, 1e-6f));
-    f.w_px = f.size * ppu;
-    f.half_axis_px = 0;
+    f.size = e.size;
+    f.w_px = e.w_px;
+    f.half_axis_px = e.half_axis_px;
+    f.small = min_px > 0.0f && p.screen_priority < uint8_t(ScreenPriority::High) && f.w_px + f.half_axis_px < min_px;
+    if (f.small) {
+      f.area = 0.0f, f.reduced = true, f.past_near = false;
+      continue;
+    }
     glm::vec2 dir(0.0f, 1.0f);
-    glm::vec3 across(0.0f), to_p(0.0f, 0.0f, -1.0f);
-    if (p.billboard == uint8_t(Billboard::AxisLocked)) {
-      // particle.vert: the part of the segment seen across the view sets the quad's length.
-      const glm::vec3 a = frame.to_view * glm::vec3(p.axis[0], p.axis[1], p.axis[2]);
-      const float len_c = glm::length(c);
-      if (len_c > 1e-6f) to_p = c / len_c;
-      across = a - glm::dot(a, to_p) * to_p;
-      const float a_len = glm::length(across);
-      if (a_len > 1e-6f * std::max(1.0f, glm::length(a))) {
-        f.half_axis_px = 0.5f * a_len * ppu;
-        const float xy = std::hypot(across.x, across.y);
-        if (xy > 1e-12f) dir = glm::vec2(across.x, across.y) / xy;
-      }
+    const glm::vec3 across = e.across, to_p = e.to_p;
+    if (f.half_axis_px > 0.0f) {
+      const float xy = std::hypot(across.x, across.y);
+      if (xy > 1e-12f) dir = glm::vec2(across.x, across.y) / xy;
     }
     const float len = f.half_axis_px + f.w_px;
     f.trim_a0 = f.trim_b0 = -1.0f;
@@ -227,7 +250,7 @@ OverdrawStats OverdrawBudget::apply(std::vector<ParticleInstance>& particles, st
   OverdrawStats s;
   const double screen = double(frame.width) * double(frame.height);
   double fixed = 0;
-  s.estimated_layers = estimate(particles, frame, std::max(o.near, 1e-3f), fixed) / screen;
+  s.estimated_layers = estimate(particles, frame, std::max(o.near, 1e-3f), o.min_px, fixed) / screen;
   const double k_none = std::max(4.0 * double(frame.size_clamp), 1e-2);  // above every threshold
   const bool budgeted = o.budget_layers > 0.0f;
   const double budget_px = std::max(0.0, double(o.budget_layers) * screen - fixed);
@@ -253,13 +276,12 @@ OverdrawStats OverdrawBudget::apply(std::vector<ParticleInstance>& particles, st
       const ClusterCap* c = cap_of(cluster);
       k = c && !c->free ? std::exp(c->log_k) : k_none;
     }
+    if (f.small) {
+      ++s.reduced, ++s.dropped;
+      continue;
+    }
     if (o.min_px > 0.0f && p.screen_priority < uint8_t(ScreenPriority::High)) {
       const float extent = f.w_px + f.half_axis_px;
-      if (extent < o.min_px) {
-        ++s.reduced, ++s.dropped;
-        f.reduced = true;
-        continue;
-      }
       if (extent < 2.0f * o.min_px) {
         const float fade = extent / o.min_px - 1.0f;
         for (float& ch : p.color) ch *= fade;
@@ -298,6 +320,7 @@ OverdrawStats OverdrawBudget::apply(std::vector<ParticleInstance>& particles, st
 
 void OverdrawBudget::mark_coverage(ParticleCoverage& coverage) const {
   for (const Footprint& f : fp_) {
+    if (f.small) continue;  // left out: nothing of it is drawn
     if (f.past_near) coverage.add_whole_screen();
     else if (f.reduced) coverage.add_box(f.x, f.y, f.hx, f.hy);
     else coverage.add_box(f.tx, f.ty, f.thx, f.thy);

@@ -76,9 +76,10 @@ struct OverdrawOptions {
   float budget_layers = 0.0f;  // 0: no budget (areas are still estimated)
   float near = 40.0f;          // m
   // Below high screen priority, a particle whose on-screen extent (half its longest side) is
-  // under min_px pixels is left out, and one under twice that fades toward it, so a particle
-  // shrinking or receding past it goes without a pop. A software rasteriser pays for every
-  // particle drawn, however small; the frame-time target sets it (frame_time_target.h). 0: none.
+  // under min_px pixels is left out (before the solve, so the budget is spent on what is drawn),
+  // and one under twice that fades toward it, so a particle shrinking or receding past it goes
+  // without a pop. A software rasteriser pays for every particle drawn, however small; the
+  // frame-time target sets it (frame_time_target.h). 0: none.
   float min_px = 0.0f;
 };
 
@@ -109,6 +110,10 @@ class OverdrawBudget {
   void mark_coverage(ParticleCoverage& coverage) const;
   // Forgets the smoothing (the next frame starts from its own solution).
   void reset() { has_state_ = false; }
+  // Whether apply() with this min_px leaves the particle out for its size (the same test, so a
+  // caller may leave it out before and count it as dropped): below high screen priority and
+  // under min_px pixels on screen.
+  static bool below_min_px(const ParticleInstance& p, const OverdrawFrame& frame, float min_px);
 
  private:
   struct ClusterCap {
@@ -133,14 +138,24 @@ class OverdrawBudget {
     float tx, ty, thx, thy;
     bool reduced;        // shrunk, faded or dropped this frame
     bool past_near;      // axis-locked and may reach past the near plane: its projection is unbounded
+    bool small;          // under OverdrawOptions::min_px: left out before the solve
   };
+  // A particle's view-space centre and on-screen half-width and half segment length, as
+  // particle.vert draws it (its size clamp included).
+  struct ViewExtent {
+    glm::vec3 c{0.0f};
+    float d = 0, ppu = 0, size = 0, w_px = 0, half_axis_px = 0;
+    glm::vec3 across{0.0f}, to_p{0.0f, 0.0f, -1.0f};  // an axis-locked one's segment across the view
+  };
+  static ViewExtent view_extent(const ParticleInstance& p, const OverdrawFrame& frame);
   static void set_facing_box(Footprint& f, const glm::vec3& c, float rotation, float ppu, const OverdrawFrame& frame);
   static void set_segment_box(Footprint& f, const glm::vec3& c, const glm::vec3& across, const glm::vec3& to_p,
                               const OverdrawFrame& frame);
   double area_at(uint32_t i, double k) const;
   double total_area(const std::vector<uint32_t>& set, double k) const;
   double solve(const std::vector<uint32_t>& set, double budget_px, double k_lo, double k_hi) const;
-  double estimate(const std::vector<ParticleInstance>& particles, const OverdrawFrame& frame, float near_m, double& fixed);
+  double estimate(const std::vector<ParticleInstance>& particles, const OverdrawFrame& frame, float near_m, float min_px,
+                  double& fixed);
   void update_caps(const std::vector<ParticleInstance>& particles, double target, double time_seconds);
   const ClusterCap* cap_of(uint32_t cluster) const;  // null when the cluster has none
 

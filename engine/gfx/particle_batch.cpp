@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 #include <glm/geometric.hpp>
 
@@ -80,11 +81,13 @@ void ParticleBatch::prepare(const RenderView& v, const ViewProjection& vp, const
   any_soft = any_contrast = false;
   runs.clear();
   const glm::vec3 forward = -glm::vec3(glm::transpose(vp.view)[2]);  // camera −Z in world space
-  cull_and_flag(v, vp, forward, model_boxes, options.soft_override);
   const OverdrawFrame frame{glm::mat3(vp.view), 1.0f / vp.proj[1][1], float(v.camera.near_plane), options.size_clamp,
                             options.width, options.height, v.time_seconds, options.trim, options.trim_mode,
                             options.trim_height};
+  cull_and_flag(v, vp, forward, model_boxes, options, frame);
   overdraw = budget_.apply(particles, areas, frame, options.overdraw, &boxes_);
+  overdraw.reduced += small_left_out_;  // as the budget counts the ones it leaves out for their size
+  overdraw.dropped += small_left_out_;
   coverage.reset(options.width, options.height);
   budget_.mark_coverage(coverage);
   visible = int(particles.size());
@@ -120,8 +123,15 @@ void ParticleBatch::prepare(const RenderView& v, const ViewProjection& vp, const
   }
 }
 
+// Culling, per stretch of a cluster first (particle_batch_cluster.cpp gathers their bounds in
+// one read), then per particle for the stretches neither wholly out nor wholly left out: in a
+// big battle most particles are off screen or under the frame-time target's size, and only what
+// can be drawn pays for the per-particle work (the reach test, the budget's estimate, the sort).
+// A stretch goes whole only where every particle of it would go one by one, and is counted as
+// they would be, so the batch and its figures are the per-particle ones.
 void ParticleBatch::cull_and_flag(const RenderView& v, const ViewProjection& vp, const glm::vec3& fwd,
-                                  const ModelCoverBoxes& model_boxes, int soft_override) {
+                                  const ModelCoverBoxes& model_boxes, const ParticleBatchOptions& options,
+                                  const OverdrawFrame& frame) {
   const glm::mat3 to_view(vp.view);
   const float near = float(v.camera.near_plane);
   // The four side planes of the view frustum in view space, as unit normals pointing out: a
@@ -133,23 +143,69 @@ void ParticleBatch::cull_and_flag(const RenderView& v, const ViewProjection& vp,
   const glm::vec3 planes[4] = {glm::normalize(glm::vec3(1, 0, tx)), glm::normalize(glm::vec3(-1, 0, tx)),
                                glm::normalize(glm::vec3(0, 1, ty)), glm::normalize(glm::vec3(0, -1, ty))};
   particles.clear();
-  for (const ParticleInstance& p : v.particles) {
-    bool dark = p.color[0] <= 0 && p.color[1] <= 0 && p.color[2] <= 0 && p.color[3] <= 0;
-    float depth = p.pos[0] * fwd.x + p.pos[1] * fwd.y + p.pos[2] * fwd.z;
-    float axis_len = std::sqrt(p.axis[0] * p.axis[0] + p.axis[1] * p.axis[1] + p.axis[2] * p.axis[2]);
-    float reach = std::max(p.size, 0.0f) + axis_len;
-    if (dark || !(depth > -reach)) continue;  // invisible or wholly behind the camera (NaN fails too)
-    const QuadBounds b = quad_bounds(p, to_view, axis_len);
-    if (glm::dot(planes[0], b.centre) > b.radius || glm::dot(planes[1], b.centre) > b.radius ||
-        glm::dot(planes[2], b.centre) > b.radius || glm::dot(planes[3], b.centre) > b.radius) {
-      ++culled_offscreen;
-      continue;
-    }
-    ParticleInstance q = p;
-    if (soft_override >= 0) q.soft_edge = uint8_t(soft_override);
-    if (q.soft_edge != 0 && !occluders_.soft_can_matter(q, b, near)) q.soft_edge |= kSoftClear;
-    particles.push_back(q);
+  small_left_out_ = 0;
+  const float min_px = options.overdraw.min_px;
+  // Stretch by stretch, so the particles of one are still in the cache when they are kept.
+  for (size_t next = 0; next < v.particles.size();) {
+    const Stretch s = next_stretch(v, next, fwd, nullptr);
+    if (s.shown == 0 || stretch_left_out(s, to_view, planes, min_px, frame)) continue;
+    for (uint32_t i = s.first; i < s.first + s.count; ++i)
+      keep_particle(v.particles[i], to_view, fwd, planes, near, options.soft_override, min_px, frame);
   }
+}
+
+// Whether the whole stretch is wholly in front of the camera and either wholly outside a side
+// of the frustum or wholly inside and under min_px (every particle of it then is): it is then
+// counted as its particles would be. Its sphere is widened a little beyond the particles' own
+// bounds (quad_bounds' 1.001, the view transform's rounding), so the answer is never a
+// particle's other one.
+bool ParticleBatch::stretch_left_out(const Stretch& s, const glm::mat3& to_view, const glm::vec3 (&planes)[4],
+                                     float min_px, const OverdrawFrame& frame) {
+  const glm::vec3 c = to_view * s.centre;
+  const float radius = s.radius * 1.002f + 1e-5f * (std::abs(c.x) + std::abs(c.y) + std::abs(c.z));
+  const float front = -c.z - radius;  // the stretch's nearest view depth
+  if (!(front > 0.0f)) return false;
+  float side = -std::numeric_limits<float>::max();
+  for (const glm::vec3& n : planes) side = std::max(side, glm::dot(n, c));
+  if (side > radius) {
+    culled_offscreen += int(s.shown);
+    return true;
+  }
+  if (!(min_px > 0.0f) || s.high || !(side < -radius)) return false;
+  // Its largest on-screen extent: the widest reach at the nearest depth (the budget's size
+  // clamp only shrinks it), a little over.
+  const float d = std::max(front, frame.near);
+  const float reach = s.reach + 1e-6f;
+  const float extent = reach * 0.5f * float(frame.height) / (d * std::max(frame.tan_half_y, 1e-6f)) * 1.01f;
+  if (!(extent < min_px)) return false;
+  small_left_out_ += int(s.shown);
+  return true;
+}
+
+// One particle of a stretch that may be drawn: culled, left out for its size, or kept with its
+// soft-edge flag.
+void ParticleBatch::keep_particle(const ParticleInstance& p, const glm::mat3& to_view, const glm::vec3& fwd,
+                                  const glm::vec3 (&planes)[4], float near, int soft_override, float min_px,
+                                  const OverdrawFrame& frame) {
+  bool dark = p.color[0] <= 0 && p.color[1] <= 0 && p.color[2] <= 0 && p.color[3] <= 0;
+  float depth = p.pos[0] * fwd.x + p.pos[1] * fwd.y + p.pos[2] * fwd.z;
+  float axis_len = std::sqrt(p.axis[0] * p.axis[0] + p.axis[1] * p.axis[1] + p.axis[2] * p.axis[2]);
+  float reach = std::max(p.size, 0.0f) + axis_len;
+  if (dark || !(depth > -reach)) return;  // invisible or wholly behind the camera (NaN fails too)
+  const QuadBounds b = quad_bounds(p, to_view, axis_len);
+  if (glm::dot(planes[0], b.centre) > b.radius || glm::dot(planes[1], b.centre) > b.radius ||
+      glm::dot(planes[2], b.centre) > b.radius || glm::dot(planes[3], b.centre) > b.radius) {
+    ++culled_offscreen;
+    return;
+  }
+  if (OverdrawBudget::below_min_px(p, frame, min_px)) {  // as the budget would, before its estimate
+    ++small_left_out_;
+    return;
+  }
+  ParticleInstance q = p;
+  if (soft_override >= 0) q.soft_edge = uint8_t(soft_override);
+  if (q.soft_edge != 0 && !occluders_.soft_can_matter(q, b, near)) q.soft_edge |= kSoftClear;
+  particles.push_back(q);
 }
 
 // The tiles of the soft particles' screen boxes: only there does a fragment read the depth

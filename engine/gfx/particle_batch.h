@@ -96,14 +96,18 @@ struct ParticleBatch {
     glm::vec3 centre{0.0f};  // camera-relative, of the positions' box
     float radius = 0;        // a sphere around centre holding every quad
     float extent = 0;        // the largest soft-edge depth extent
+    float reach = 0;         // the largest size + |axis|₁ (a bound on each quad's half extent)
     float depth = 0;         // centre along the view direction
     uint32_t methods = 0;    // bit per SoftEdge present
     uint32_t soft_count = 0; // particles with a soft-edge method
+    uint32_t shown = 0;      // particles not wholly dark (the per-particle path's test)
     bool ordered = false, lit = false, clear = false;
+    bool high = false;       // one has high screen priority (never left out for its size)
   };
   void prepare_by_cluster(const RenderView& view, const ViewProjection& vp, const ModelCoverBoxes& model_boxes,
                           const ParticleBatchOptions& options);
   void gather_stretches(const RenderView& view, const glm::vec3& forward, bool pairs);
+  static Stretch next_stretch(const RenderView& view, size_t& i, const glm::vec3& forward, float* depths);
   void gather_in_order(const RenderView& view, size_t total, int soft_override);
   void gather_sorted(const RenderView& view, size_t total, int soft_override);
   void list_kept(const RenderView& view, size_t total, const ParticleBatchOptions& options, bool full_sort,
@@ -118,7 +122,13 @@ struct ParticleBatch {
   std::vector<Stretch> stretches_;
   std::vector<uint32_t> kept_;  // indices of the stretches drawn, in draw order
   void cull_and_flag(const RenderView& view, const ViewProjection& vp, const glm::vec3& forward,
-                     const ModelCoverBoxes& model_boxes, int soft_override);
+                     const ModelCoverBoxes& model_boxes, const ParticleBatchOptions& options,
+                     const OverdrawFrame& frame);
+  bool stretch_left_out(const Stretch& s, const glm::mat3& to_view, const glm::vec3 (&planes)[4], float min_px,
+                        const OverdrawFrame& frame);
+  void keep_particle(const ParticleInstance& p, const glm::mat3& to_view, const glm::vec3& forward,
+                     const glm::vec3 (&planes)[4], float near, int soft_override, float min_px, const OverdrawFrame& frame);
+  int small_left_out_ = 0;  // per particle: left out for their size before the budget (OverdrawOptions::min_px)
   void sort(RenderSettings::Sorting sorting, const glm::vec3& forward);
   void mark_depth_reads(int width, int height);  // depth_reads from boxes_
   std::vector<ScreenBox> boxes_, sorted_boxes_;  // screen boxes of `particles` (the budget's estimate)

@@ -18,54 +18,62 @@ uint32_t method_bit(uint8_t soft_edge) { return 1u << (soft_edge & 7u); }
 
 }  // namespace
 
-// One pass over the view's particles: bounds, reach and soft methods of each stretch of
-// consecutive particles of one cluster and, when a full sort may follow, every particle's depth
-// along `forward`. Branch-light on purpose: this is the only loop that reads every particle of
-// the view.
+// The stretch starting at particle i (consecutive particles of one cluster, at most
+// kMaxStretch): its bounds, reach and soft methods and, with `depths`, every particle's depth
+// along `forward`; i moves past it. Branch-light on purpose: this loop reads every particle.
+ParticleBatch::Stretch ParticleBatch::next_stretch(const RenderView& v, size_t& i, const glm::vec3& forward,
+                                                   float* depths) {
+  const size_t n = v.particles.size();
+  const ParticleInstance* p = v.particles.data();
+  Stretch s;
+  s.first = uint32_t(i);
+  const uint32_t cluster = p[i].cluster;
+  float lo[3] = {p[i].pos[0], p[i].pos[1], p[i].pos[2]};
+  float hi[3] = {lo[0], lo[1], lo[2]};
+  float reach = 0.0f, extent = 0.0f;
+  uint32_t methods = 0, soft = 0, ordered = 0, lit = 0, shown = 0, high = 0;
+  const size_t end = std::min(n, i + kMaxStretch);
+  // Bitwise ors, not ||: no branch per particle.
+  for (; i < end && p[i].cluster == cluster; ++i) {
+    const ParticleInstance& q = p[i];
+    if (depths) depths[i] = q.pos[0] * forward.x + q.pos[1] * forward.y + q.pos[2] * forward.z;
+    lo[0] = std::min(lo[0], q.pos[0]), hi[0] = std::max(hi[0], q.pos[0]);
+    lo[1] = std::min(lo[1], q.pos[1]), hi[1] = std::max(hi[1], q.pos[1]);
+    lo[2] = std::min(lo[2], q.pos[2]), hi[2] = std::max(hi[2], q.pos[2]);
+    const float size = std::max(q.size, 0.0f);
+    // |a|₁ ≥ |a|₂: a bound without a square root.
+    reach = std::max(reach, size + std::abs(q.axis[0]) + std::abs(q.axis[1]) + std::abs(q.axis[2]));
+    extent = std::max(extent, std::max(q.soft_extent, size));
+    methods |= method_bit(q.soft_edge);
+    soft += uint32_t(q.soft_edge != 0);
+    ordered |= uint32_t(q.color[3] * (1.0f - q.burn) > 0.0f);
+    lit |= uint32_t(q.color[0] > 0) | uint32_t(q.color[1] > 0) | uint32_t(q.color[2] > 0) | uint32_t(q.color[3] > 0);
+    shown += uint32_t(!(q.color[0] <= 0 && q.color[1] <= 0 && q.color[2] <= 0 && q.color[3] <= 0));
+    high |= uint32_t(q.screen_priority >= uint8_t(ScreenPriority::High));
+  }
+  s.count = uint32_t(i) - s.first;
+  s.centre = glm::vec3(0.5f * (lo[0] + hi[0]), 0.5f * (lo[1] + hi[1]), 0.5f * (lo[2] + hi[2]));
+  const glm::vec3 half(0.5f * (hi[0] - lo[0]), 0.5f * (hi[1] - lo[1]), 0.5f * (hi[2] - lo[2]));
+  // A quad's corners lie within √2 of its reach from its centre.
+  s.radius = glm::length(half) * 1.001f + reach * 1.4143f + 1e-6f;
+  s.extent = extent;
+  s.reach = reach;
+  s.methods = methods;
+  s.soft_count = soft;
+  s.ordered = ordered != 0;
+  s.lit = lit != 0;
+  s.shown = shown;
+  s.high = high != 0;
+  return s;
+}
+
+// Every stretch of the view, in one read of its particles (and their depths, for a full sort).
 void ParticleBatch::gather_stretches(const RenderView& v, const glm::vec3& forward, bool depths) {
   stretches_.clear();
   const size_t n = v.particles.size();
   if (depths) depths_.resize(n);
-  float* out = depths_.data();
-  const ParticleInstance* p = v.particles.data();
   size_t i = 0;
-  while (i < n) {
-    Stretch s;
-    s.first = uint32_t(i);
-    const uint32_t cluster = p[i].cluster;
-    float lo[3] = {p[i].pos[0], p[i].pos[1], p[i].pos[2]};
-    float hi[3] = {lo[0], lo[1], lo[2]};
-    float reach = 0.0f, extent = 0.0f;
-    uint32_t methods = 0, soft = 0, ordered = 0, lit = 0;
-    const size_t end = std::min(n, i + kMaxStretch);
-    // Bitwise ors, not ||: no branch per particle.
-    for (; i < end && p[i].cluster == cluster; ++i) {
-      const ParticleInstance& q = p[i];
-      if (depths) out[i] = q.pos[0] * forward.x + q.pos[1] * forward.y + q.pos[2] * forward.z;
-      lo[0] = std::min(lo[0], q.pos[0]), hi[0] = std::max(hi[0], q.pos[0]);
-      lo[1] = std::min(lo[1], q.pos[1]), hi[1] = std::max(hi[1], q.pos[1]);
-      lo[2] = std::min(lo[2], q.pos[2]), hi[2] = std::max(hi[2], q.pos[2]);
-      const float size = std::max(q.size, 0.0f);
-      // |a|₁ ≥ |a|₂: a bound without a square root.
-      reach = std::max(reach, size + std::abs(q.axis[0]) + std::abs(q.axis[1]) + std::abs(q.axis[2]));
-      extent = std::max(extent, std::max(q.soft_extent, size));
-      methods |= method_bit(q.soft_edge);
-      soft += uint32_t(q.soft_edge != 0);
-      ordered |= uint32_t(q.color[3] * (1.0f - q.burn) > 0.0f);
-      lit |= uint32_t(q.color[0] > 0) | uint32_t(q.color[1] > 0) | uint32_t(q.color[2] > 0) | uint32_t(q.color[3] > 0);
-    }
-    s.count = uint32_t(i) - s.first;
-    s.centre = glm::vec3(0.5f * (lo[0] + hi[0]), 0.5f * (lo[1] + hi[1]), 0.5f * (lo[2] + hi[2]));
-    const glm::vec3 half(0.5f * (hi[0] - lo[0]), 0.5f * (hi[1] - lo[1]), 0.5f * (hi[2] - lo[2]));
-    // A quad's corners lie within √2 of its reach from its centre.
-    s.radius = glm::length(half) * 1.001f + reach * 1.4143f + 1e-6f;
-    s.extent = extent;
-    s.methods = methods;
-    s.soft_count = soft;
-    s.ordered = ordered != 0;
-    s.lit = lit != 0;
-    stretches_.push_back(s);
-  }
+  while (i < n) stretches_.push_back(next_stretch(v, i, forward, depths ? depths_.data() : nullptr));
 }
 
 namespace {

@@ -15,21 +15,25 @@ namespace arc {
 namespace {
 
 // Contrast power 2 (the default) squares instead of calling pow(); power 1 is the identity
-// curve, the linear program. The density-extent variant only for runs that hold that method.
-const Program& choose_program(const ShaderPrograms& programs, const ParticleRun& run, float contrast_power, bool fetch) {
-  if (!run.soft) return programs.particle_hard;
+// curve, the linear program. The density-extent variant only for runs that hold that method;
+// the INDEXED vertex shader only for an indexed batch.
+const Program& choose_program(const ShaderPrograms& programs, const ParticleRun& run, float contrast_power, bool fetch,
+                              bool indexed) {
+  if (!run.soft) return indexed ? programs.particle_hard_indexed : programs.particle_hard;
   const int curve = !run.contrast || contrast_power == 1.0f ? ShaderPrograms::kSoftLinear
                     : contrast_power == 2.0f               ? ShaderPrograms::kSoftSquare
                                                            : ShaderPrograms::kSoftContrast;
-  return programs.particle_soft[curve][run.density_extent ? 1 : 0][fetch ? 1 : 0];
+  const auto& soft = indexed ? programs.particle_soft_indexed : programs.particle_soft;
+  return soft[curve][run.density_extent ? 1 : 0][fetch ? 1 : 0];
 }
 
 // The frame's uniforms of one particle program (each program the runs use, once a frame).
 void set_uniforms(const Program& particle, const RenderSettings& rs, const ParticleFrame& frame, const SpriteTrim& trim,
                   const ParticleBatch& batch) {
-  glUniform1i(particle.loc("u_indexed"), batch.indexed() ? 1 : 0);
-  glUniform1i(particle.loc("u_soft_override"), batch.indexed() ? batch.soft_override : -1);
-  glUniform1i(particle.loc("u_order"), 4);
+  if (batch.indexed()) {
+    glUniform1i(particle.loc("u_soft_override"), batch.soft_override);
+    glUniform1i(particle.loc("u_order"), 4);
+  }
   glUniformMatrix4fv(particle.loc("u_view"), 1, GL_FALSE, glm::value_ptr(frame.vp.view));
   glUniformMatrix4fv(particle.loc("u_proj"), 1, GL_FALSE, glm::value_ptr(frame.vp.proj));
   glUniform1f(particle.loc("u_tan_half_y"), float(std::tan(frame.fov_y_radians * 0.5)));
@@ -234,7 +238,8 @@ int ParticlePass::draw(const ParticleBatch& batch, const ShaderPrograms& program
   GLuint current = 0;
   int draws = 0;
   for (const ParticleRun& run : batch.runs) {
-    const Program& particle = choose_program(programs, run, rs.contrast_power, frame.depth_fetch);
+    const Program& particle = choose_program(programs, run, rs.contrast_power, frame.depth_fetch, batch.indexed());
+    if (particle.id == 0) throw std::logic_error("ParticlePass::draw: an indexed batch before build_indexed()");
     if (particle.id != current) {
       glUseProgram(particle.id);
       current = particle.id;

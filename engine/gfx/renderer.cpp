@@ -106,6 +106,10 @@ struct Renderer::Impl {
   uint64_t warm_key() const;
   // Soft particles read the depth of the framebuffer they draw into (RenderSettings::depth_fetch).
   bool depth_fetch_usable() const { return rs.depth_fetch && has_depth_fetch(); }
+  // The particle batch is prepared per cluster (render.particle_prep; auto: not on a software
+  // rasteriser), and so drawn by the INDEXED programs, built the first time this holds.
+  bool by_cluster() const;
+  void ensure_indexed_programs();
   ParticleBatchOptions batch_options() const;
   BloomPass bloom;
   PostPass post;
@@ -212,6 +216,7 @@ void Renderer::set_render_settings(const RenderSettings& s) {
   m.particles.set_texture_filter(m.rs.filter);
   m.meshes.set_texture_filter(m.rs.filter);
   m.frame_target.set_target(m.rs.target_frame_ms);
+  m.ensure_indexed_programs();
 }
 
 const RenderSettings& Renderer::render_settings() const { return impl_->rs; }
@@ -228,6 +233,7 @@ void Renderer::render(const RenderView& v, int width, int height) {
   const ViewProjection vp =
       make_view_projection(v.camera, double(scene_w) / double(scene_h), m.rs.reversed_z, m.rs.infinite_far);
 
+  m.ensure_indexed_programs();
   if (std::find(m.warm_keys.begin(), m.warm_keys.end(), m.warm_key()) == m.warm_keys.end()) m.warm_up_particles(v, vp);
   auto t = std::chrono::steady_clock::now();
   // The nebula first (an 8-bit BGRA scene takes it into its colour alone: gfx/sky_pass.h),
@@ -302,8 +308,7 @@ ParticleBatchOptions Renderer::Impl::batch_options() const {
   options.max_particles = particles.max_particles_per_draw();
   options.max_source = particles.max_source_particles();
   options.sort_bits = rs.particle_sort_bits;
-  using Prep = RenderSettings::ParticlePrep;
-  options.by_cluster = rs.particle_prep == Prep::PerCluster || (rs.particle_prep == Prep::Auto && !software);
+  options.by_cluster = by_cluster();
   options.overdraw = {rs.overdraw_budget * float(frame_target.level()), rs.overdraw_near,
                       float(frame_target.min_px(targets.scene_height()))};
   options.size_clamp = rs.size_clamp;
@@ -404,9 +409,19 @@ void Renderer::Impl::begin_half_resolution(ParticleFrame& frame) {
   frame.transmittance_alpha = true;
 }
 
+bool Renderer::Impl::by_cluster() const {
+  using Prep = RenderSettings::ParticlePrep;
+  return rs.particle_prep == Prep::PerCluster || (rs.particle_prep == Prep::Auto && !software);
+}
+
+void Renderer::Impl::ensure_indexed_programs() {
+  if (by_cluster() && !programs.has_indexed()) programs.build_indexed();
+}
+
 uint64_t Renderer::Impl::warm_key() const {
   const uint64_t contrast = rs.contrast_power == 2.0f ? 0 : rs.contrast_power == 1.0f ? 1 : 2;
-  return uint64_t(targets.scene_internal_format()) << 16 | uint64_t(depth_fetch_usable()) << 12 |
+  return uint64_t(targets.scene_internal_format()) << 16 | uint64_t(by_cluster()) << 14 |
+         uint64_t(depth_fetch_usable()) << 12 |
          uint64_t(rs.reversed_z) << 8 | uint64_t(rs.filter) << 4 | uint64_t(rs.hdr) << 2 | contrast;
 }
 
@@ -416,8 +431,9 @@ uint64_t Renderer::Impl::warm_key() const {
 // variants depend on (scene format, depth direction, sprite filter, HDR, contrast program:
 // warm_key), before it clears the scene, one tiny particle per program (hard, linear, the
 // contrast curve, density extent, both) is drawn into the scene and into the half-resolution
-// target, and that is put over the scene: every variant the frames can pick is compiled there.
-// The frame's sky then covers it all.
+// target, and that is put over the scene: every variant the frames can pick is compiled there,
+// by the INDEXED programs too when the batch is prepared per cluster. The frame's sky then
+// covers it all.
 void Renderer::Impl::warm_up_particles(const RenderView& v, const ViewProjection& vp) {
   warm_keys.push_back(warm_key());
   ParticleBatch warm;
@@ -450,10 +466,26 @@ void Renderer::Impl::warm_up_particles(const RenderView& v, const ViewProjection
   ParticleFrame frame{vp, v.camera.fov_y_radians, float(v.camera.near_plane), targets.depth_copy(),
                       targets.scene_width(), targets.scene_height()};
   frame.depth_fetch = depth_fetch_usable();
+  ParticleBatch indexed;  // the same particles drawn through an order (per cluster)
+  const bool with_indexed = by_cluster();
+  if (with_indexed) {
+    indexed.source = &warm.particles;
+    indexed.runs = warm.runs;
+    for (size_t i = 0; i < warm.particles.size(); ++i) indexed.order.push_back(uint32_t(i));
+  }
   particles.draw(warm, programs, rs, frame);
+  if (with_indexed) {
+    particles.upload(indexed);
+    particles.draw(indexed, programs, rs, frame);
+    particles.upload(warm.particles);
+  }
   frame.depth_copy = targets.scene_depth();
   begin_half_resolution(frame);
   particles.draw(warm, programs, rs, frame);
+  if (with_indexed) {
+    particles.upload(indexed);
+    particles.draw(indexed, programs, rs, frame);
+  }
   set_origin(false);
   half_particles.composite(programs.particle_composite, targets.scene_color_fbo(), targets.scene_width(),
                            targets.scene_height(), {PixelRect{0, 0, 1, 1}});

@@ -39,10 +39,17 @@ GLuint compile(GLenum type, const std::string& src, const std::string& name, std
   return 0;
 }
 
+// `defines` right after the #version line (the first line), where GLSL allows them.
+void insert_defines(std::string& src, const std::string& defines) {
+  if (defines.empty()) return;
+  size_t eol = src.find('\n');
+  src.insert(eol == std::string::npos ? src.size() : eol + 1, defines);
+}
+
 // Builds vert+frag from the shader folder; returns 0 and appends to err on failure.
-// `defines` goes right after the #version line of the fragment shader.
+// `vdefines` go into the vertex shader, `defines` into the fragment shader.
 GLuint build_program(const std::string& dir, const std::string& vs, const std::string& fs, const std::string& defines,
-                     std::string& err) {
+                     const std::string& vdefines, std::string& err) {
   std::string vsrc, fsrc;
   try {
     vsrc = read_text(data_file(dir, vs));
@@ -51,10 +58,8 @@ GLuint build_program(const std::string& dir, const std::string& vs, const std::s
     err += std::string(e.what()) + "\n";
     return 0;
   }
-  if (!defines.empty()) {
-    size_t eol = fsrc.find('\n');
-    fsrc.insert(eol == std::string::npos ? fsrc.size() : eol + 1, defines);
-  }
+  insert_defines(vsrc, vdefines);
+  insert_defines(fsrc, defines);
   GLuint v = compile(GL_VERTEX_SHADER, vsrc, data_file(dir, vs), err);
   GLuint f = compile(GL_FRAGMENT_SHADER, fsrc, data_file(dir, fs), err);
   if (!v || !f) {
@@ -91,9 +96,25 @@ ShaderPrograms::~ShaderPrograms() {
                      &bloom_prefilter, &bloom_down_karis, &bloom_down, &bloom_up, &tonemap, &tonemap_bloom, &fxaa,
                      &msaa_resolve, &particle_composite})
     glDeleteProgram(p->id);
-  for (auto& curve : particle_soft)
-    for (auto& density : curve)
-      for (Program& p : density) glDeleteProgram(p.id);
+  glDeleteProgram(particle_hard_indexed.id);
+  for (auto* set : {&particle_soft, &particle_soft_indexed})
+    for (auto& curve : *set)
+      for (auto& density : curve)
+        for (Program& p : density) glDeleteProgram(p.id);
+}
+
+bool ShaderPrograms::has_indexed() const { return indexed_; }
+
+void ShaderPrograms::build_indexed() {
+  if (indexed_) return;
+  std::vector<Spec> specs;
+  add_particle_specs(specs, true);
+  try {
+    build_specs(specs);
+  } catch (const std::exception& e) {
+    throw std::runtime_error(std::string("shader build failed: ") + e.what());
+  }
+  indexed_ = true;
 }
 
 std::string ShaderPrograms::reload() {
@@ -105,49 +126,35 @@ std::string ShaderPrograms::reload() {
   return {};
 }
 
-void ShaderPrograms::build_all() {
-  std::string err;
-  struct Spec {
-    Program* p;
-    const char* vs;
-    const char* fs;
-    std::string defines;
-  };
-  std::vector<Spec> specs = {
-      {&sky, "sky.vert", "sky.frag", ""},
-      {&sky_exact, "sky.vert", "sky_exact.frag", ""},
-      {&sky_grid, "sky_grid.vert", "sky_grid.frag", ""},
-      {&sky_corners, "post.vert", "sky_corners.frag", ""},
-      {&sky_cells, "sky_cells.vert", "sky_cells.frag", ""},
-      {&stars, "stars.vert", "stars.frag", ""},
-      {&mesh, "mesh.vert", "mesh.frag", ""},
-      {&particle_hard, "particle.vert", "particle.frag",
-       "#define SOFT 0\n#define CONTRAST 0\n#define CONTRAST_SQUARE 0\n#define DENSITY_EXTENT 0\n#define FB_DEPTH 0\n"},
-      {&hud, "hud.vert", "hud.frag", ""},
-      {&bloom_prefilter, "post.vert", "bloom_down.frag", "#define PREFILTER 1\n#define KARIS 0\n"},
-      {&bloom_down_karis, "post.vert", "bloom_down.frag", "#define PREFILTER 0\n#define KARIS 1\n"},
-      {&bloom_down, "post.vert", "bloom_down.frag", "#define PREFILTER 0\n#define KARIS 0\n"},
-      {&bloom_up, "post.vert", "bloom_up.frag", ""},
-      {&tonemap, "post.vert", "tonemap.frag", "#define BLOOM 0\n"},
-      {&tonemap_bloom, "post.vert", "tonemap.frag", "#define BLOOM 1\n"},
-      {&fxaa, "post.vert", "fxaa.frag", ""},
-      {&msaa_resolve, "post.vert", "msaa_resolve.frag", ""},
-      {&particle_composite, "particle_composite.vert", "particle_composite.frag", ""}};
-  // The soft particle programs: each curve, with and without density extent's texture-alpha
-  // range, reading the depth from a copy and, where the context can, from the framebuffer.
+// The particle programs: hard edges and each soft variant, every curve with and without
+// density extent's texture-alpha range, reading the depth from a copy and, where the context
+// can, from the framebuffer; with `indexed`, the vertex shader's INDEXED variant of each.
+void ShaderPrograms::add_particle_specs(std::vector<Spec>& specs, bool indexed) {
+  const std::string vdefines = indexed ? "#define INDEXED 1\n" : "#define INDEXED 0\n";
+  specs.push_back({indexed ? &particle_hard_indexed : &particle_hard, "particle.vert", "particle.frag",
+                   "#define SOFT 0\n#define CONTRAST 0\n#define CONTRAST_SQUARE 0\n#define DENSITY_EXTENT 0\n#define FB_DEPTH 0\n",
+                   vdefines});
   const char* curves[3] = {"#define CONTRAST 0\n#define CONTRAST_SQUARE 0\n",
                            "#define CONTRAST 1\n#define CONTRAST_SQUARE 0\n",
                            "#define CONTRAST 1\n#define CONTRAST_SQUARE 1\n"};
+  auto& soft = indexed ? particle_soft_indexed : particle_soft;
   for (int curve = 0; curve < 3; ++curve)
     for (int density = 0; density < 2; ++density)
       for (int fetch = 0; fetch < 2; ++fetch) {
         if (fetch && !has_depth_fetch()) continue;
-        specs.push_back({&particle_soft[curve][density][fetch], "particle.vert", "particle.frag",
+        specs.push_back({&soft[curve][density][fetch], "particle.vert", "particle.frag",
                          std::string("#define SOFT 1\n") + curves[curve] + "#define DENSITY_EXTENT " +
-                             char('0' + density) + "\n#define FB_DEPTH " + char('0' + fetch) + "\n"});
+                             char('0' + density) + "\n#define FB_DEPTH " + char('0' + fetch) + "\n",
+                         vdefines});
       }
+}
+
+// All of `specs` or none: on any error the built ones are deleted, the old ones kept, and the
+// compiler's text thrown.
+void ShaderPrograms::build_specs(const std::vector<Spec>& specs) {
+  std::string err;
   std::vector<GLuint> built;
-  for (auto& s : specs) built.push_back(build_program(dir_, s.vs, s.fs, s.defines, err));
+  for (auto& s : specs) built.push_back(build_program(dir_, s.vs, s.fs, s.defines, s.vdefines, err));
   bool all = std::all_of(built.begin(), built.end(), [](GLuint id) { return id != 0; });
   if (!all) {
     for (GLuint id : built)
@@ -158,6 +165,31 @@ void ShaderPrograms::build_all() {
     if (specs[i].p->id) glDeleteProgram(specs[i].p->id);
     specs[i].p->id = built[i];
   }
+}
+
+void ShaderPrograms::build_all() {
+  std::vector<Spec> specs = {
+      {&sky, "sky.vert", "sky.frag", ""},
+      {&sky_exact, "sky.vert", "sky_exact.frag", ""},
+      {&sky_grid, "sky_grid.vert", "sky_grid.frag", ""},
+      {&sky_corners, "post.vert", "sky_corners.frag", ""},
+      {&sky_cells, "sky_cells.vert", "sky_cells.frag", ""},
+      {&stars, "stars.vert", "stars.frag", ""},
+      {&mesh, "mesh.vert", "mesh.frag", ""},
+      {&hud, "hud.vert", "hud.frag", ""},
+      {&bloom_prefilter, "post.vert", "bloom_down.frag", "#define PREFILTER 1\n#define KARIS 0\n"},
+      {&bloom_down_karis, "post.vert", "bloom_down.frag", "#define PREFILTER 0\n#define KARIS 1\n"},
+      {&bloom_down, "post.vert", "bloom_down.frag", "#define PREFILTER 0\n#define KARIS 0\n"},
+      {&bloom_up, "post.vert", "bloom_up.frag", ""},
+      {&tonemap, "post.vert", "tonemap.frag", "#define BLOOM 0\n"},
+      {&tonemap_bloom, "post.vert", "tonemap.frag", "#define BLOOM 1\n"},
+      {&fxaa, "post.vert", "fxaa.frag", ""},
+      {&msaa_resolve, "post.vert", "msaa_resolve.frag", ""},
+      {&particle_composite, "particle_composite.vert", "particle_composite.frag", ""}};
+  add_particle_specs(specs, false);
+  // The indexed set is rebuilt with the rest once a per-cluster frame has asked for it.
+  if (indexed_) add_particle_specs(specs, true);
+  build_specs(specs);
   ++generation_;
 }
 

@@ -14,6 +14,7 @@
 #include <epoxy/gl.h>
 
 #include <string>
+#include <vector>
 
 namespace arc {
 
@@ -45,6 +46,14 @@ class ShaderPrograms {
   enum SoftCurve { kSoftLinear = 0, kSoftContrast = 1, kSoftSquare = 2 };
   Program particle_hard;
   Program particle_soft[3][2][2];
+  // The same programs with particle.vert's INDEXED variant: each quad's particle is pulled
+  // through the order buffer texture of an indexed batch (particle_batch.h, per cluster). Built
+  // by build_indexed() (throws as the constructor does), only where the per-cluster preparation
+  // is used, so a software rasteriser's start compiles none of them; id 0 until then.
+  Program particle_hard_indexed;
+  Program particle_soft_indexed[3][2][2];
+  void build_indexed();
+  bool has_indexed() const;
   // Post passes over post.vert's full-screen triangle: the bloom chain's first step (threshold),
   // its first 13-tap step (Karis average), its other steps down and up, the tone map without
   // and with bloom, FXAA.
@@ -53,9 +62,19 @@ class ShaderPrograms {
   Program particle_composite;  // half-resolution particles over the scene (particle_target.h)
 
  private:
+  struct Spec {
+    Program* p;
+    const char* vs;
+    const char* fs;
+    std::string defines;        // into the fragment shader
+    std::string vdefines = "";  // into the vertex shader
+  };
   void build_all();  // throws with the compiler's text; leaves the old programs on failure
+  void add_particle_specs(std::vector<Spec>& specs, bool indexed);
+  void build_specs(const std::vector<Spec>& specs);
   std::string dir_;
   int generation_ = 0;
+  bool indexed_ = false;  // the INDEXED particle programs are built
 };
 
 }  // namespace arc

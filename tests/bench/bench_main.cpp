@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "bench_registry.h"
+#include "core/data_root.h"
 #include "core/error.h"
 
 namespace arc::bench {
@@ -94,6 +95,15 @@ int main(int argc, char** argv) {
   if (const char* dump = std::getenv("ARCFIRE_GFX_DUMP"); dump && !std::filesystem::is_directory(dump)) {
     std::fprintf(stderr, "arcfire-bench: ARCFIRE_GFX_DUMP='%s' is not a folder; name one that exists\n", dump);
     return 2;
+  }
+  // Every scene reads the data folder: one line and exit 2 when there is none, before any work.
+  if (!filtered || !only_scene.empty()) {
+    try {
+      (void)arc::data_root();
+    } catch (const arc::InputError& e) {
+      std::fprintf(stderr, "arcfire-bench: %s\n", e.what());
+      return 2;
+    }
   }
   if (!scenes_only && only_scene.empty()) benchmark::RunSpecifiedBenchmarks();
   for (auto& [name, fn, on_request] : arc::bench::scenes()) {

@@ -1,5 +1,6 @@
 // The particle batch on the CPU, no GL context: culling against the frustum's sides, the
-// back-to-front sort (and its absence for pure additive particles), the draw limit, and the
+// back-to-front sort (and its absence for pure additive particles), the draw limit, stretches
+// culled whole as their particles would be, and the
 // soft-edge flag set only where an opaque mesh is within a particle's reach (a part box's face
 // planes included).
 #include <gtest/gtest.h>
@@ -52,6 +53,47 @@ TEST(ParticleBatch, CullsParticlesWhollyOffTheFrustum) {
   EXPECT_EQ(batch.visible, 2);
   EXPECT_EQ(batch.particles[0].pos[0], 0.0f);
   EXPECT_EQ(batch.particles[1].pos[0], edge + 0.5f);
+}
+
+// Whole stretches of a cluster are culled or left out for their size before any particle of
+// them is looked at; the answer must be each particle's. The same particles in three clusters
+// (stretches of up to 300) and each in its own (stretches of one) give the same batch: a far
+// cluster wholly under min_px, one wholly off the right side, one around the camera.
+TEST(ParticleBatch, StretchesAreCulledAsTheirParticlesWouldBe) {
+  RenderView v = base_view();
+  uint32_t seed = 12345;
+  auto unit = [&seed] {  // in [−1, 1)
+    seed = seed * 1664525u + 1013904223u;
+    return float(seed >> 8) / float(1u << 23) - 1.0f;
+  };
+  const glm::vec3 centres[3] = {{0, 0, -900}, {200, 0, -50}, {0, 0, 0}};
+  const float spreads[3] = {20, 10, 60};
+  for (int c = 0; c < 3; ++c)
+    for (int i = 0; i < 300; ++i) {
+      const glm::vec3 pos = centres[c] + spreads[c] * glm::vec3(unit(), unit(), unit());
+      ParticleInstance p = particle(pos, 0.9f + 0.6f * unit(), glm::vec3(0.5f), i % 17 == 0 ? 0.0f : 0.5f, 0.0f);
+      if (i % 17 == 0) p.color[0] = p.color[1] = p.color[2] = 0.0f;  // dark
+      p.screen_priority = uint8_t(i % 5 == 0 ? ScreenPriority::High : ScreenPriority::Low);
+      p.cluster = uint32_t(c);
+      v.particles.push_back(p);
+    }
+  RenderView each = v;
+  for (size_t i = 0; i < each.particles.size(); ++i) each.particles[i].cluster = uint32_t(100 + i);
+  ParticleBatchOptions options;
+  options.overdraw.min_px = 3.0f;
+  const ParticleBatch whole = prepare(v, options), single = prepare(each, options);
+  EXPECT_EQ(whole.culled_offscreen, single.culled_offscreen);
+  EXPECT_EQ(whole.overdraw.dropped, single.overdraw.dropped);
+  EXPECT_EQ(whole.overdraw.reduced, single.overdraw.reduced);
+  EXPECT_GT(whole.culled_offscreen, 250);
+  EXPECT_GT(whole.overdraw.dropped, 200);
+  ASSERT_EQ(whole.particles.size(), single.particles.size());
+  ASSERT_GT(whole.particles.size(), 50u);
+  for (size_t i = 0; i < whole.particles.size(); ++i) {
+    EXPECT_EQ(whole.particles[i].pos[0], single.particles[i].pos[0]);
+    EXPECT_EQ(whole.particles[i].pos[2], single.particles[i].pos[2]);
+    EXPECT_EQ(whole.particles[i].color[3], single.particles[i].color[3]);
+  }
 }
 
 TEST(ParticleBatch, KeepsAnAxisLockedSegmentThatReachesIntoView) {
