@@ -89,6 +89,15 @@ bool break_off_players_tail(const World& w, Ship& s, const Ship& t, const glm::d
   return true;
 }
 
+// The autopilot in the player's seat leads a strike as the briefings tell a player to: on a
+// capital ship it orders the wing to attack its target (F5), since the wing leaves one alone.
+void lead_strike(World& w, const Ship& s) {
+  if (s.id != w.player || !s.target || !w.ship(s.target).cls->capital()) return;
+  for (const Wingman& m : w.wing)
+    if (w.ship(m.ship).alive && (m.order != WingOrder::Attack || m.target != s.target))
+      return order_wing(w, Command::OrderAttack);
+}
+
 void think(World& w, Ship& s) {
   const AiDifficultyDef& tune = ai_difficulty(w, s);
   AiState& ai = s.ai_state;
@@ -99,6 +108,7 @@ void think(World& w, Ship& s) {
   const Wingman* wing = wingman_of(w, s.id);  // the player's orders come first (ai_orders.cpp)
   if (wing) ai.target = wing_target(w, s, *wing, ai.target);
   s.target = ai.target;
+  lead_strike(w, s);
   choose_strike_part(w, s);
   ai.aim_error = rng.unit_vector(1) * (tune.aim_error * rng.uniform(2));
   if (!ai.target) return;
