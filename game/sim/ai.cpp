@@ -47,12 +47,14 @@ glm::dvec3 lead_point(const Ship& shooter, const Ship& target, double projectile
 // The nearest hostile, but a damaged one counts as nearer: pilots go for the kill, so fights end
 // in explosions instead of spreading damage over everyone. Where the player leads a wing, the
 // player and ships already under attack count as farther (target_weight, ai_orders.cpp).
+// The player's side leaves capital ships to the player (leaves_capitals, ai_orders.cpp).
 ShipId pick_target(const World& w, ShipId self) {
   ShipId best;
   double best_score = 0;
   const Ship& me = w.ship(self);
+  const bool no_capitals = leaves_capitals(w, me);
   for (const Ship& s : w.ships) {
-    if (s.id == self || !s.alive || !w.hostile(me, s)) continue;
+    if (s.id == self || !s.alive || !w.hostile(me, s) || (no_capitals && s.cls->capital())) continue;
     const double health = (s.hull + s.shield) / std::max(1e-9, s.cls->hull + s.cls->shield);
     const double score = safe_len(s.position - me.position) * (0.4 + health) * target_weight(w, me, s);
     if (!best || score < best_score) best = s.id, best_score = score;
@@ -87,16 +89,26 @@ bool break_off_players_tail(const World& w, Ship& s, const Ship& t, const glm::d
   return true;
 }
 
+// The autopilot in the player's seat leads a strike as the briefings tell a player to: on a
+// capital ship it orders the wing to attack its target (F5), since the wing leaves one alone.
+void lead_strike(World& w, const Ship& s) {
+  if (s.id != w.player || !s.target || !w.ship(s.target).cls->capital()) return;
+  for (const Wingman& m : w.wing)
+    if (w.ship(m.ship).alive && (m.order != WingOrder::Attack || m.target != s.target))
+      return order_wing(w, Command::OrderAttack);
+}
+
 void think(World& w, Ship& s) {
   const AiDifficultyDef& tune = ai_difficulty(w, s);
   AiState& ai = s.ai_state;
   const Rng rng{w.seed, kAiStream + static_cast<uint64_t>(s.id.index()), static_cast<uint64_t>(w.tick)};
   ai.next_think = w.tick + std::max<int64_t>(1, seconds_to_ticks(w, tune.reaction_s));
   if (!ai.target || !w.ship(ai.target).alive || rng.uniform(0) < 0.25) ai.target = pick_target(w, s.id);
+  if (const ShipId ordered = ordered_target(w, s.id)) ai.target = ordered;  // an event's attack order
   const Wingman* wing = wingman_of(w, s.id);  // the player's orders come first (ai_orders.cpp)
   if (wing) ai.target = wing_target(w, s, *wing, ai.target);
-  if (const ShipId ordered = ordered_target(w, s.id)) ai.target = ordered;  // an event's attack order
   s.target = ai.target;
+  lead_strike(w, s);
   choose_strike_part(w, s);
   ai.aim_error = rng.unit_vector(1) * (tune.aim_error * rng.uniform(2));
   if (!ai.target) return;

@@ -16,11 +16,12 @@ bool recently_hit_by(const World& w, const Ship& victim, const Ship& attacker, d
 
 // Who the covering wingman goes for: the hostile attacking the player nearest to the player,
 // else the hostile nearest to the player within 60 % of the cover radius; none otherwise.
+// Capital ships are left to the player's strike (leaves_capitals).
 ShipId cover_target(const World& w, const Ship& p) {
   ShipId attacker, nearest;
   double attacker_d = 0, nearest_d = 0;
   for (const Ship& h : w.ships) {
-    if (!h.alive || !w.hostile(p, h)) continue;
+    if (!h.alive || !w.hostile(p, h) || h.cls->capital()) continue;  // the player's own strike
     const double d = safe_len(h.position - p.position);
     if (d > kCoverRadius) continue;
     const bool attacking = h.ai_state.target == p.id || h.beam_target == p.id || recently_hit_by(w, p, h, 3.0);
@@ -95,6 +96,10 @@ bool wing_withdraw(World& w, Ship& s, const Rng& rng) {
   ai.mode_until = w.tick + seconds_to_ticks(w, 2.0 + 1.5 * rng.uniform(10));
   ai.evade_dir = safe_norm(side + home, side);
   return true;
+}
+
+bool leaves_capitals(const World& w, const Ship& chooser) {
+  return w.player && chooser.id != w.player && chooser.team == w.ship(w.player).team;
 }
 
 double target_weight(const World& w, const Ship& chooser, const Ship& candidate) {

@@ -40,6 +40,10 @@ bool wing_withdraw(World& w, Ship& s, const Rng& rng);
 // for each pilot of the chooser's side already on it, so the wing meets the enemy first and
 // fights spread instead of a pack hunting one ship.
 double target_weight(const World& w, const Ship& chooser, const Ship& candidate);
+// Whether `chooser` leaves capital ships alone when it picks a target of its own: every AI
+// pilot on the player's side but the player's own ship does, so a capital ship falls to the
+// player's strike; an attack order (the player's F5 or a level event) still sends it at one.
+bool leaves_capitals(const World& w, const Ship& chooser);
 // Flies a wingman that has no target to fight: in formation on the player. False when the
 // wingman has a target (the fighter AI flies it).
 bool fly_formation(const World& w, const Ship& s, const Wingman& m, InputFrame& c);

@@ -1,6 +1,7 @@
 // Fighter pilots against a capital ship (game/sim/ai_strike.h): the subsystem they go for, a
 // pilot with torpedoes taking the corvette's shield generator out with them, one without never
-// launching any, and the "subsystem_destroyed" trigger with its positioned error.
+// launching any, the player's side leaving a capital ship alone unless ordered, and the
+// "subsystem_destroyed" trigger with its positioned error.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -20,6 +21,22 @@ std::string strike_ships(const std::string& striker_class) {
   return R"({ "name": "Player", "class": "viper", "team": "blue", "player": true, "position": [0, 0, 6000] },
     { "name": "Striker", "class": ")" + striker_class + R"(", "team": "blue", "position": [0, 200, 1400], "orientation": [0, 0, 0] },
     { "name": "Corvette", "class": "corvette", "team": "red", "ai": "capital", "position": [0, 0, 0], "orientation": [180, 0, 0] })";
+}
+
+// The player's side strikes a capital ship only when ordered: here a level event's order.
+const std::string kStrikeOrder = R"(
+  "events": [ { "id": "strike", "when": { "type": "time", "seconds": 0 },
+                "do": [ { "type": "order", "ship": "Striker", "order": "attack", "target": "Corvette" } ] } ],)";
+
+// Unordered, a pilot of the player's side leaves the corvette to the player's own strike.
+TEST(CapitalAi, PlayersSideLeavesCapitalShipsAloneUnordered) {
+  Game g = Game::load_level(test::write_level("strike_unordered.json", test::level_text(strike_ships("viper"))), test::options());
+  const World& w = g.world();
+  const ShipId striker = test::ship_named(w, "Striker");
+  for (int64_t t = 0; t < seconds_to_ticks(w, 10.0); ++t) {
+    g.step(InputFrame{});
+    ASSERT_FALSE(w.ship(striker).target) << "tick " << w.tick;
+  }
 }
 
 TEST(CapitalAi, StrikePartIsShieldGeneratorThenEnginesThenNearestTurret) {
@@ -42,7 +59,7 @@ TEST(CapitalAi, StrikePartIsShieldGeneratorThenEnginesThenNearestTurret) {
 
 // A Viper carries torpedoes: it locks the shield generator and launches them until it is gone.
 TEST(CapitalAi, PilotWithTorpedoesKillsTheShieldGenerator) {
-  Game g = Game::load_level(test::write_level("strike_torpedo.json", test::level_text(strike_ships("viper"))), test::options());
+  Game g = Game::load_level(test::write_level("strike_torpedo.json", test::level_text(strike_ships("viper"), kStrikeOrder)), test::options());
   const World& w = g.world();
   const ShipId corvette = test::ship_named(w, "Corvette"), striker = test::ship_named(w, "Striker");
   const size_t generator = test::part_index(w.ship(corvette), "shield generator");
@@ -64,7 +81,7 @@ TEST(CapitalAi, PilotWithTorpedoesKillsTheShieldGenerator) {
 
 // A Dart carries no torpedoes: it goes for the same subsystem with its guns and never launches one.
 TEST(CapitalAi, PilotWithoutTorpedoesNeverLaunchesThem) {
-  Game g = Game::load_level(test::write_level("strike_dart.json", test::level_text(strike_ships("dart"))), test::options());
+  Game g = Game::load_level(test::write_level("strike_dart.json", test::level_text(strike_ships("dart"), kStrikeOrder)), test::options());
   const World& w = g.world();
   const ShipId corvette = test::ship_named(w, "Corvette"), striker = test::ship_named(w, "Striker");
   ASSERT_FALSE(w.ship(striker).cls->torpedo.present);
