@@ -155,7 +155,7 @@ void layout_range_cue(HudLayer& h, glm::dvec2 c, double r, bool in_range, const 
 void layout_combat_cues(const World& w, const Ship& me, const Projector& pr, const HudRules& rules, double alpha,
                         double canvas_w, double canvas_h, HudLayer& h) {
   glm::dvec2 crosshair(pr.cx, pr.cy);
-  pr.project(crosshair_point(me, alpha), crosshair);
+  pr.project(crosshair_point(w, me, alpha), crosshair);
   const ThreatCues threats = threat_cues(w, me, pr, rules, alpha, canvas_w, canvas_h);
   const glm::dvec2 centre(pr.cx, pr.cy);
   damage_directions(threats, centre, canvas_w, canvas_h, h);
