@@ -93,7 +93,9 @@ TEST(ChaseFraming, TheCrosshairOnTheTargetMeansTheNoseOnIt) {
     ASSERT_TRUE(pr.project(d.me().position + nose * ahead, on_nose));
     ASSERT_TRUE(pr.project(crosshair_point(d.me(), 1.0), fixed));
     EXPECT_LT(glm::length(cross - on_nose), 1.0) << what << " " << ahead << " m ahead, rise " << d.rise();
-    if (ahead > 550.0) EXPECT_GT(glm::length(fixed - on_nose), 5.0) << what << " " << ahead << " m ahead";
+    if (ahead > 550.0) {
+      EXPECT_GT(glm::length(fixed - on_nose), 5.0) << what << " " << ahead << " m ahead";
+    }
   };
   for (double range : {120.0, 325.0, 500.0, 640.0}) {
     d.enemy().position = d.enemy().prev_position = d.me().position + nose * range;
