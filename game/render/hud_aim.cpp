@@ -214,7 +214,7 @@ AimCues aim_cues(const World& w, const Ship& me, const Projector& pr, double alp
                  const HudRect& arrow_area) {
   AimCues cues;
   cues.crosshair = {canvas_w * 0.5, canvas_h * 0.5};
-  pr.project(crosshair_point(me, alpha), cues.crosshair);
+  pr.project(crosshair_point(w, me, alpha), cues.crosshair);
   cues.beam_ring_lit = beam_would_hit(w, me);
   cues.nav = nav_cue(w, me, pr, canvas_w, canvas_h, arrow_area);
   if (!me.target || !w.ship(me.target).alive) return cues;

@@ -155,7 +155,7 @@ void layout_range_cue(HudLayer& h, glm::dvec2 c, double r, bool in_range, const 
 void layout_combat_cues(const World& w, const Ship& me, const Projector& pr, const HudRules& rules, double alpha,
                         double canvas_w, double canvas_h, HudLayer& h) {
   glm::dvec2 crosshair(pr.cx, pr.cy);
-  pr.project(crosshair_point(me, alpha), crosshair);
+  pr.project(crosshair_point(w, me, alpha), crosshair);
   const ThreatCues threats = threat_cues(w, me, pr, rules, alpha, canvas_w, canvas_h);
   const glm::dvec2 centre(pr.cx, pr.cy);
   damage_directions(threats, centre, canvas_w, canvas_h, h);
@@ -164,7 +164,7 @@ void layout_combat_cues(const World& w, const Ship& me, const Projector& pr, con
 }
 
 void layout_kill_feed(const World& w, const Ship* me, const HudRules& rules, double x, double y, HudLayer& h,
-                      const std::map<uint32_t, std::string>* names) {
+                      const std::map<uint32_t, std::string>* names, double right) {
   auto name = [&](const Ship& s) -> const std::string& {
     if (names)
       if (auto it = names->find(s.id.index()); it != names->end() && !it->second.empty()) return it->second;
@@ -197,7 +197,9 @@ void layout_kill_feed(const World& w, const Ship* me, const HudRules& rules, dou
   if (lines.size() > size_t(std::max(rules.kill_feed_lines, 0))) lines.resize(size_t(std::max(rules.kill_feed_lines, 0)));
   for (const Line& l : lines) {
     const double left = rules.kill_feed_seconds - seconds_since(w, l.tick);
-    text(h, x, y, 1.0, faded(l.colour, std::min(1.0, left)), l.text);
+    const size_t room = right > x ? size_t(std::max(4.0, (right - x) / kGlyphAdvance)) : l.text.size();
+    const std::string shown = l.text.size() <= room ? l.text : l.text.substr(0, room - 2) + "..";
+    text(h, x, y, 1.0, faded(l.colour, std::min(1.0, left)), shown);
     y += 18.0;
   }
 }

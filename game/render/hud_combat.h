@@ -54,7 +54,8 @@ void layout_combat_cues(const World& w, const Ship& me, const Projector& pr, con
                         double canvas_w, double canvas_h, HudLayer& h);
 // `me` (may be null) colours the entries: green for its side's kills, red for its losses.
 // `names` (ship index → pilot), when given, names the pilots' ships in a network match.
+// `right`, when above 0, cuts each line short of that x (room kept for the F3 figures).
 void layout_kill_feed(const World& w, const Ship* me, const HudRules& rules, double x, double y, HudLayer& h,
-                      const std::map<uint32_t, std::string>* names = nullptr);
+                      const std::map<uint32_t, std::string>* names = nullptr, double right = 0);
 
 }  // namespace arc

@@ -130,13 +130,14 @@ void hud_subtitle(const HudState& state, int width, int height, HudLayer& h) {
   text_band(h, state.subtitle, bottom, true, width, height, {0.0f, 0.0f, 0.0f, 0.6f}, {1.0f, 0.95f, 0.7f, 1.0f});
 }
 
-// The reload error under the top panels (the target panel and the longest kill feed).
-void hud_error_banner(const HudState& state, double feed_y, int kill_feed_lines, int width, int height,
-                      HudLayer& h) {
+// The reload error under the top panels: the target panel, the longest kill feed and the F3
+// figures (`figures_bottom`, 0 without them).
+void hud_error_banner(const HudState& state, double feed_y, int kill_feed_lines, double figures_bottom, int width,
+                      int height, HudLayer& h) {
   if (state.error_banner.empty()) return;
   const double k = height_scale(height);
   const double feed_bottom = feed_y + kKillFeedRow * std::max(kill_feed_lines, 0);
-  const double top = std::max(target_panel_bottom(height), feed_bottom) + 8 * k;
+  const double top = std::max({target_panel_bottom(height), feed_bottom, figures_bottom}) + 8 * k;
   text_band(h, state.error_banner, top, false, width, height, {0.35f, 0.02f, 0.02f, 0.85f}, {1.0f, 0.85f, 0.8f, 1.0f});
 }
 
@@ -207,6 +208,29 @@ void hud_target_panel(const World& w, const Ship& me, int width, int height, Hud
 
 // The objective at the top left, wrapped to leave room for the target panel while flying;
 // returns the top of the kill feed under it.
+// The frame figures (F3): the frame rate, then the renderer's particle figures, wrapped to the
+// target panel's column and right-aligned in it under the panel, where the objective, the
+// training prompt, the radar and the own ship never reach (the kill feed stops short of it);
+// returns their bottom.
+double hud_frame_stats(const HudState& state, int width, int height, HudLayer& h) {
+  const double k = height_scale(height), s = 0.8, row = kGlyphLineHeight * s + 2;
+  const double right = width - kSideMargin * k, room = target_panel_width(height) - kSideMargin * k;
+  const size_t chars = size_t(std::max(8.0, room / (kGlyphAdvance * s)));
+  std::vector<std::string> lines{fmt("%.0f fps", state.fps)};
+  for (size_t at = 0; !state.frame_stats.empty() && at != std::string::npos;) {
+    const size_t bar = state.frame_stats.find(" | ", at);
+    for (const std::string& l : wrap_text(state.frame_stats.substr(at, bar == std::string::npos ? bar : bar - at), chars, 3))
+      lines.push_back(l);
+    at = bar == std::string::npos ? bar : bar + 3;
+  }
+  double y = target_panel_bottom(height) + 8 * k;
+  for (const std::string& l : lines) {
+    text(h, std::max(4.0, right - double(l.size()) * kGlyphAdvance * s), y, s, kHudWhite, l);
+    y += row;
+  }
+  return y;
+}
+
 double hud_objective(const std::string& objective, bool flying, int width, int height, HudLayer& h) {
   const double k = height_scale(height), s = 1.2, x = kLeftMargin, y = 16;
   const double room = width - (flying ? target_panel_width(height) : 0.0) - kSideMargin * k - x;
@@ -328,10 +352,10 @@ void layout_hud(const World& w, const CameraView& cam, const HudState& state, do
   width = std::max(1, int(std::lround(std::max(width, 1) / scale)));
   height = std::max(1, int(std::lround(std::max(height, 1) / scale)));
   double feed_y = 44 * height_scale(height);  // the kill feed's top, under the objective
-  if (state.show_fps) {
-    text(h, width - 120, 12, 1.0, kHudWhite, fmt("%.0f fps", state.fps));
-    if (!state.frame_stats.empty()) text(h, width / 2 - 300, 4, 0.8, kHudWhite, state.frame_stats);
-    if (state.net.on && !state.net.scoreboard) marks.panel("net stats", [&] { hud_net_stats(state.net, width, height, h); });
+  double figures_bottom = 0;  // the F3 frame figures' bottom, for the error banner under them
+  if (state.show_fps && !state.net.scoreboard) {  // the held scoreboard stands in for the F3 figures
+    marks.panel("frame stats", [&] { figures_bottom = hud_frame_stats(state, width, height, h); });
+    if (state.net.on) marks.panel("net stats", [&] { hud_net_stats(state.net, width, height, h); });
   }
   if (state.show_hud) {
     const Projector pr = Projector::of(cam, width, height);
@@ -353,7 +377,8 @@ void layout_hud(const World& w, const CameraView& cam, const HudState& state, do
     if (state.net.scoreboard) marks.panel("scoreboard", [&] { hud_scoreboard(w, state.net, width, height, h); });
     if (!state.net.scoreboard)
       marks.panel("kill feed", [&] {
-        layout_kill_feed(w, flying ? &w.ship(focus) : nullptr, state.rules, kLeftMargin, feed_y, h, &state.net.names);
+        const double right = figures_bottom > 0 ? width - target_panel_width(height) - kSideMargin * height_scale(height) : 0;
+        layout_kill_feed(w, flying ? &w.ship(focus) : nullptr, state.rules, kLeftMargin, feed_y, h, &state.net.names, right);
       });
     if (flying && !state.net.scoreboard) {
       const Ship& me = w.ship(focus);
@@ -373,7 +398,7 @@ void layout_hud(const World& w, const CameraView& cam, const HudState& state, do
   if (state.show_hud) hud_subtitle(state, width, height, h);
   if (!state.net.scoreboard)  // back when the scoreboard's key is let go
     marks.panel("error banner",
-                [&] { hud_error_banner(state, feed_y, state.rules.kill_feed_lines, width, height, h); });
+                [&] { hud_error_banner(state, feed_y, state.rules.kill_feed_lines, figures_bottom, width, height, h); });
   scale_hud(h, scale);
   if (panels) marks.boxes(*panels);
 }

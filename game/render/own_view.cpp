@@ -99,7 +99,7 @@ void keep_own_effects_out_of_view(const World& w, ShipId ship, bool cockpit, con
   const ViewClusters clusters = ViewClusters::of(w, me);
   const Projector pr = Projector::of(camera, width, height);
   glm::dvec2 crosshair(pr.cx, pr.cy);
-  pr.project(crosshair_point(me, alpha), crosshair);
+  pr.project(crosshair_point(w, me, alpha), crosshair);
   const glm::dvec3 centre = lerp_pos(me.prev_position, me.position, alpha) - camera.position;
   const double near_own = rules.near_own_radius * me.cls->shield_radius;
   // A ship blowing up is news, not clutter: its fire and smoke (seconds long) stay whole, even

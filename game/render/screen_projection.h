@@ -3,8 +3,10 @@
 //
 // Projector::of(camera, width, height) matches the renderer's perspective (vertical field of
 // view, square pixels); project() refuses points behind the near plane. crosshair_point() is
-// where the HUD draws the crosshair: the guns' convergence point ahead of the nose.
+// where the HUD draws the crosshair: on the nose line at the target's range, or half the beam's
+// range ahead of the nose without a target ahead.
 #pragma once
+#include <algorithm>
 #include <cmath>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/vec2.hpp>
@@ -41,6 +43,22 @@ inline glm::dvec3 crosshair_point(const Ship& s, double alpha) {
   const glm::dvec3 pos = lerp_pos(s.prev_position, s.position, alpha);
   const glm::dquat q = glm::slerp(s.prev_orientation, s.orientation, alpha);
   return pos + forward_of(q) * s.cls->beam.range * 0.5;
+}
+
+// Where the crosshair stands for `s` in `w`: the nose line at its target's range when a live
+// target lies ahead (within the beam's range), so the crosshair on the brackets means the nose
+// on the target however far the chase eye sits above the nose line; else crosshair_point(s, alpha).
+inline glm::dvec3 crosshair_point(const World& w, const Ship& s, double alpha) {
+  const glm::dvec3 pos = lerp_pos(s.prev_position, s.position, alpha);
+  const glm::dquat q = glm::slerp(s.prev_orientation, s.orientation, alpha);
+  const glm::dvec3 nose = forward_of(q);
+  double range = s.cls->beam.range * 0.5;
+  if (s.target && w.ship(s.target).alive) {
+    const Ship& t = w.ship(s.target);
+    const double ahead = glm::dot(lerp_pos(t.prev_position, t.position, alpha) - pos, nose);
+    if (ahead > 0.0) range = std::clamp(ahead, s.cls->beam.range * 0.1, s.cls->beam.range);
+  }
+  return pos + nose * range;
 }
 
 }  // namespace arc

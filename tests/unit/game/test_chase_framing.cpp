@@ -62,7 +62,7 @@ TEST(ChaseFraming, HostileBehindTheNoseShowsAboveTheHull) {
       // The hull stays on screen, below the crosshair's line.
       const Projector pr = Projector::of(cam, 1280, 720);
       glm::dvec2 cross, px;
-      ASSERT_TRUE(pr.project(crosshair_point(d.me(), 1.0), cross));
+      ASSERT_TRUE(pr.project(crosshair_point(d.w(), d.me(), 1.0), cross));
       for (int i = 0; i < 8; ++i) {
         const glm::dvec3 corner(i & 1 ? d.box.hi.x : d.box.lo.x, i & 2 ? d.box.hi.y : d.box.lo.y,
                                 i & 4 ? d.box.hi.z : d.box.lo.z);
@@ -71,6 +71,40 @@ TEST(ChaseFraming, HostileBehindTheNoseShowsAboveTheHull) {
         EXPECT_LT(px.y, 720.0);
       }
     }
+  }
+}
+
+// The crosshair tells where the nose points at the target's range: with the target on the nose
+// line near or far, or behind the hull with the view lifted over it, the crosshair stands on the
+// nose line at the target's range (within a pixel at 720p). A crosshair at half the beam's range
+// ahead for every target lies over 5 px off one 600 m down the nose line (metres there: a miss),
+// the eye being above that line.
+TEST(ChaseFraming, TheCrosshairOnTheTargetMeansTheNoseOnIt) {
+  Duel d;
+  d.game.step(InputFrame{}, {Command::TargetNearest});
+  ASSERT_TRUE(d.me().target);
+  const glm::dvec3 nose = forward_of(d.me().orientation);
+  auto check = [&](const char* what) {
+    const CameraView cam = frame_camera(d.w(), 1.0, CameraSettings{});
+    const Projector pr = Projector::of(cam, 1280, 720);
+    const double ahead = glm::dot(d.enemy().position - d.me().position, nose);
+    glm::dvec2 cross, on_nose, fixed;
+    ASSERT_TRUE(pr.project(crosshair_point(d.w(), d.me(), 1.0), cross));
+    ASSERT_TRUE(pr.project(d.me().position + nose * ahead, on_nose));
+    ASSERT_TRUE(pr.project(crosshair_point(d.me(), 1.0), fixed));
+    EXPECT_LT(glm::length(cross - on_nose), 1.0) << what << " " << ahead << " m ahead, rise " << d.rise();
+    if (ahead > 550.0) {
+      EXPECT_GT(glm::length(fixed - on_nose), 5.0) << what << " " << ahead << " m ahead";
+    }
+  };
+  for (double range : {120.0, 325.0, 500.0, 640.0}) {
+    d.enemy().position = d.enemy().prev_position = d.me().position + nose * range;
+    check("on the nose line");
+  }
+  for (double beyond : {100.0, 300.0, 600.0}) {
+    d.place_behind(glm::dvec3(0, 1.5, -5), beyond);
+    ASSERT_GT(d.rise(), 0.5);
+    check("behind the hull");
   }
 }
 

@@ -100,7 +100,7 @@ TEST(Hud, HitMarkerWhileTheBeamHitsAndNotBefore) {
   build_render_view(w, {}, 1.0, CameraSettings{}, HudState{}, 1280, 720, view);
   const HudLayer& during = view.hud;
   glm::dvec2 c;
-  ASSERT_TRUE(Projector::of(view.camera, 1280, 720).project(crosshair_point(w.ships[0], 1.0), c));
+  ASSERT_TRUE(Projector::of(view.camera, 1280, 720).project(crosshair_point(w, w.ships[0], 1.0), c));
   EXPECT_EQ(diagonal_strokes_near_centre(before, c.x, c.y), 0);
   EXPECT_GE(diagonal_strokes_near_centre(during, c.x, c.y), 4);
   for (int i = 0; i < 60; ++i) g.step(InputFrame{});  // the marker lasts a quarter second

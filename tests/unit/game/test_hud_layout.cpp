@@ -1,6 +1,6 @@
 // tests/unit/game/test_hud_layout.cpp — the HUD's panels at every window size from 640x360 to
-// 3840x2160: none overlaps another, none leaves the screen, and none covers the own ship in the
-// chase view (game/render/hud_layout.h).
+// 3840x2160 (hud_panel_check.h), with the F3 frame figures on: none overlaps another, none leaves
+// the screen, and none covers the own ship in the chase view (game/render/hud_layout.h).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,6 +13,7 @@
 #include "game/render/render_view_builder.h"
 #include "game/sim/level_start.h"
 #include "game/sim/world.h"
+#include "hud_panel_check.h"
 #include "test_helpers.h"
 
 namespace arc {
@@ -40,46 +41,27 @@ HudState busy_state() {
   HudState s;
   s.notice = "Recording stopped: replays/2026-11-28_12-00-00.replay";
   s.error_banner = "assets/ships/viper.json:20:14: beam range must be positive (reload kept the old values)";
+  s.show_fps = true;  // F3, with the renderer's longest particle figures
+  s.fps = 144;
+  s.frame_stats = "particles 123456, 12345 reduced | 1234 draws | 12.5 screens blended (48.0 before the budget)";
   return s;
-}
-
-std::string box_text(const HudPanelBox& p) {
-  return p.name + " [" + std::to_string(int(p.box.x0)) + "," + std::to_string(int(p.box.y0)) + " - " +
-         std::to_string(int(p.box.x1)) + "," + std::to_string(int(p.box.y1)) + "]";
-}
-
-// Every panel of `want` is drawn, and no panel overlaps another or leaves the screen, at each size.
-void check_panels(const World& w, const HudState& state, const std::vector<const char*>& want) {
-  for (auto [width, height] : {std::pair{640, 360}, {1280, 720}, {1920, 1080}, {3840, 2160}}) {
-    RenderView v;
-    build_render_view(w, {}, 1.0, CameraSettings{}, state, width, height, v);
-    std::vector<HudPanelBox> panels;
-    layout_hud(w, v.camera, state, 1.0, width, height, v.hud, &panels);
-    std::vector<std::string> names;
-    for (const HudPanelBox& p : panels) names.push_back(p.name);
-    for (const char* name : want)
-      EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << name << " at " << width << "x" << height;
-    for (const HudPanelBox& p : panels)
-      if (p.name == "radar") EXPECT_GE(p.box.y1 - p.box.y0, 0.15 * height) << "radar at " << width << "x" << height;
-    for (size_t i = 0; i < panels.size(); ++i) {
-      const HudBox& a = panels[i].box;
-      EXPECT_TRUE(a.x0 >= 0 && a.y0 >= 0 && a.x1 <= width && a.y1 <= height)
-          << box_text(panels[i]) << " leaves the " << width << "x" << height << " screen";
-      for (size_t j = i + 1; j < panels.size(); ++j) {
-        const HudBox& b = panels[j].box;
-        const bool overlap = a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
-        EXPECT_FALSE(overlap) << box_text(panels[i]) << " overlaps " << box_text(panels[j]) << " at " << width << "x"
-                              << height;
-      }
-    }
-  }
 }
 
 TEST(HudLayout, PanelsNeitherOverlapNorLeaveTheScreenAtEverySize) {
   Game g = busy_game();
   ASSERT_TRUE(g.world().ships[0].target);
-  check_panels(g.world(), busy_state(),
-               {"objective", "kill feed", "own bars", "weapon", "target panel", "radar", "notice", "error banner"});
+  test::check_hud_panels(g.world(), busy_state(),
+                         {"frame stats", "objective", "kill feed", "own bars", "weapon", "target panel", "radar",
+                          "notice", "error banner"});
+}
+
+// A campaign mission with its objective rows under the objective line, F3 on: the frame
+// figures stay clear of the objective, its rows and the kill feed at the top left.
+TEST(HudLayout, TheFrameFiguresClearTheObjectivesAtEverySize) {
+  Game g = Game::load_level(test::repo("levels/campaign/03_escort.json"), test::options());
+  g.step(InputFrame{}, {Command::TargetNearest});
+  ASSERT_TRUE(g.world().mission);
+  test::check_hud_panels(g.world(), busy_state(), {"frame stats", "objective", "objectives", "own bars", "radar"});
 }
 
 // The chase view draws the own ship in the lower middle of the screen; no panel lies over the
@@ -90,11 +72,9 @@ TEST(HudLayout, NoPanelCoversTheOwnShipInTheChaseView) {
   ASSERT_EQ(w.camera_mode, CameraMode::Chase);
   const Ship& me = w.ship(w.player);
   const ModelData model = load_model(test::repo(w.model_paths[me.model.index()]));
-  for (auto [width, height] : {std::pair{640, 360}, {1280, 720}, {1920, 1080}, {3840, 2160}}) {
+  for (auto [width, height] : test::kHudSizes) {
     RenderView v;
-    build_render_view(w, {}, 1.0, CameraSettings{}, busy_state(), width, height, v);
-    std::vector<HudPanelBox> panels;
-    layout_hud(w, v.camera, busy_state(), 1.0, width, height, v.hud, &panels);
+    const std::vector<HudPanelBox> panels = test::hud_panels(w, busy_state(), width, height, &v);
     const Projector pr = Projector::of(v.camera, width, height);
     HudBox ship{1e9, 1e9, -1e9, -1e9};
     for (int c = 0; c < 8; ++c) {
@@ -108,7 +88,7 @@ TEST(HudLayout, NoPanelCoversTheOwnShipInTheChaseView) {
     for (const HudPanelBox& p : panels) {
       const HudBox& a = p.box;
       const bool overlap = a.x0 < ship.x1 && ship.x0 < a.x1 && a.y0 < ship.y1 && ship.y0 < a.y1;
-      EXPECT_FALSE(overlap) << box_text(p) << " covers the own ship [" << int(ship.x0) << "," << int(ship.y0) << " - "
+      EXPECT_FALSE(overlap) << test::box_text(p) << " covers the own ship [" << int(ship.x0) << "," << int(ship.y0) << " - "
                             << int(ship.x1) << "," << int(ship.y1) << "] at " << width << "x" << height;
     }
   }
@@ -131,7 +111,7 @@ TEST(HudLayout, TheTrainingPromptOverlapsNothingAtEverySize) {
   ASSERT_TRUE(w.ship(w.player).target);
   HudState state = busy_state();
   state.key_names = {{"order_attack", "LEFT_SHIFT"}, {"order_cover", "RIGHT_CONTROL"}};
-  check_panels(w, state, {"training", "kill feed", "own bars", "weapon", "target panel", "radar", "notice", "error banner"});
+  test::check_hud_panels(w, state, {"training", "kill feed", "own bars", "weapon", "target panel", "radar", "notice", "error banner"});
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include "game/render/hud_layout.h"
 #include "game/render/render_view_builder.h"
 #include "game/sim/world.h"
+#include "hud_panel_check.h"
 #include "test_helpers.h"
 
 namespace arc {
@@ -37,6 +38,7 @@ HudState net_state(bool scoreboard) {
   s.notice = "Ann left; the AI flies their ship";
   s.error_banner = "desync at tick 1234";
   s.show_fps = true;
+  s.frame_stats = "particles 123456, 12345 reduced | 1234 draws | 12.5 screens blended (48.0 before the budget)";
   s.net.on = true;
   s.net.names = {{1, "Ann"}, {2, "Bartholomew the Eighth"}};
   s.net.stats = "ping 148 ms  rollbacks 12.5/s";
@@ -46,42 +48,15 @@ HudState net_state(bool scoreboard) {
   return s;
 }
 
-std::string box_text(const HudPanelBox& p) {
-  return p.name + " [" + std::to_string(int(p.box.x0)) + "," + std::to_string(int(p.box.y0)) + " - " +
-         std::to_string(int(p.box.x1)) + "," + std::to_string(int(p.box.y1)) + "]";
-}
-
-void check(const World& w, const HudState& state, const std::vector<std::string>& want) {
-  for (auto [width, height] : {std::pair{640, 360}, {1280, 720}, {1920, 1080}, {3840, 2160}}) {
-    RenderView v;
-    build_render_view(w, {}, 1.0, CameraSettings{}, state, width, height, v);
-    std::vector<HudPanelBox> panels;
-    layout_hud(w, v.camera, state, 1.0, width, height, v.hud, &panels);
-    for (const std::string& name : want)
-      EXPECT_TRUE(std::any_of(panels.begin(), panels.end(), [&](const HudPanelBox& p) { return p.name == name; }))
-          << name << " at " << width << "x" << height;
-    for (size_t i = 0; i < panels.size(); ++i) {
-      const HudBox& a = panels[i].box;
-      EXPECT_TRUE(a.x0 >= 0 && a.y0 >= 0 && a.x1 <= width && a.y1 <= height)
-          << box_text(panels[i]) << " leaves the " << width << "x" << height << " screen";
-      for (size_t j = i + 1; j < panels.size(); ++j) {
-        const HudBox& b = panels[j].box;
-        EXPECT_FALSE(a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1)
-            << box_text(panels[i]) << " overlaps " << box_text(panels[j]) << " at " << width << "x" << height;
-      }
-    }
-  }
-}
-
 TEST(HudNet, TheNetFiguresOverlapNoPanelAtEverySize) {
   Game g = net_game();
-  check(g.world(), net_state(false),
-        {"net stats", "objective", "kill feed", "own bars", "weapon", "target panel", "radar", "notice", "error banner"});
+  test::check_hud_panels(g.world(), net_state(false),
+                         {"frame stats", "net stats", "objective", "kill feed", "own bars", "weapon", "target panel", "radar", "notice", "error banner"});
 }
 
 TEST(HudNet, TheHeldScoreboardOverlapsNothingAtEverySize) {
   Game g = net_game();
-  check(g.world(), net_state(true), {"scoreboard", "notice"});
+  test::check_hud_panels(g.world(), net_state(true), {"scoreboard", "notice"});
 }
 
 TEST(HudNet, PilotsNamesOverShipsAndInTheKillFeed) {

@@ -114,24 +114,26 @@ void print(const MissionFigures& f) {
 }
 
 // What any fair fight gives a player who sees only the screen: the target mostly on screen and
-// seldom behind the own hull, damage dealt in every mission, and neither a sure win nor (on
-// easy) a sure loss. A pilot that never fires deals nothing and wins nothing.
+// seldom behind the own hull, damage dealt in every mission, a beam that hits when the crosshair
+// is on the brackets, fights that end, and neither a sure win nor (on easy) a sure loss. A pilot that never fires deals nothing and wins nothing.
 TEST(HumanPilot, FiguresOnTheDuelSkirmishAndArenaStayWithinWideBounds) {
   struct Case {
     const char* level;
     int difficulty, seeds;
     double lowest_win, highest_win;
+    int most_timeouts;  // fights still undecided after 240 s
   };
   // At normal a player who sees only the screen wins the skirmish about half the time and the
-  // arena a little less often (the targets are 40–70 % and 30–60 %; a few seeds are noisy).
-  // Hard is hard but winnable: about one fight in five (10–35 %) in every mission.
-  const Case cases[] = {{"duel", 0, 3, 0.5, 1.0},
-                        {"duel", 1, 8, 0.15, 0.85},
-                        {"skirmish", 1, 10, 0.3, 0.8},
-                        {"arena", 1, 10, 0.2, 0.7},
-                        {"duel", 2, 12, 0.05, 0.5},
-                        {"skirmish", 2, 12, 0.05, 0.5},
-                        {"arena", 2, 12, 0.05, 0.5}};
+  // arena a little less often (the targets are 40–70 % and 30–60 %; a few seeds are noisy), and
+  // nearly every fight ends: the waves come while the fight is on, not after a straggler hunt.
+  // Hard is hard but winnable: one fight in ten to one in four in every mission.
+  const Case cases[] = {{"duel", 0, 3, 0.5, 1.0, 1},
+                        {"duel", 1, 8, 0.15, 0.85, 1},
+                        {"skirmish", 1, 10, 0.3, 0.8, 3},
+                        {"arena", 1, 10, 0.2, 0.7, 3},
+                        {"duel", 2, 12, 0.05, 0.5, 1},
+                        {"skirmish", 2, 12, 0.05, 0.5, 4},
+                        {"arena", 2, 12, 0.05, 0.5, 4}};
   for (const Case& c : cases) {
     const MissionFigures f =
         mission_figures(data_root(), data_root() + "/levels/" + c.level + ".json", c.difficulty, c.seeds);
@@ -139,12 +141,13 @@ TEST(HumanPilot, FiguresOnTheDuelSkirmishAndArenaStayWithinWideBounds) {
     const std::string what = f.mission + " " + difficulty_name(static_cast<Difficulty>(f.difficulty));
     EXPECT_GE(f.win_rate, c.lowest_win) << what;
     EXPECT_LE(f.win_rate, c.highest_win) << what;
+    EXPECT_LE(f.timeouts, c.most_timeouts) << what;
     EXPECT_GT(f.on_screen_share, 0.3) << what;
     // The chase view lifts over the own hull when it would hide a hostile ahead
     // (game/render/chase_framing.h): the target near the nose is hidden on under 2 % of ticks.
     EXPECT_LT(f.hidden_share, 0.02) << what;
     EXPECT_GT(f.damage_dealt, 150.0) << what;
-    EXPECT_GT(f.beam_accuracy, 0.05) << what;
+    EXPECT_GT(f.beam_accuracy, 0.3) << what;  // the crosshair on the brackets puts the nose on the target
     EXPECT_GT(f.missile_accuracy, 0.1) << what;
   }
   HumanSkill holds_fire;
