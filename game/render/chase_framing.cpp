@@ -146,4 +146,10 @@ Framing chase_framing(const World& w, const glm::dvec3& eye, const glm::dquat& v
   return f;
 }
 
+void lift_chase_view(const World& w, double alpha, glm::dvec3& eye, glm::dquat& view) {
+  const Framing f = chase_framing(w, eye, view, alpha);
+  eye += view * glm::dvec3(0, f.rise_m, 0);
+  view = glm::normalize(view * glm::angleAxis(-f.tilt_rad, glm::dvec3(1, 0, 0)));
+}
+
 }  // namespace arc

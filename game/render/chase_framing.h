@@ -55,4 +55,8 @@ struct Framing {
 Framing chase_framing(const World& w, const glm::dvec3& eye, const glm::dquat& view, double alpha,
                       const FramingRules& rules = {});
 
+// The chase view as drawn: `eye` / `view` (the rig at `alpha`) raised and turned down by
+// chase_framing().
+void lift_chase_view(const World& w, double alpha, glm::dvec3& eye, glm::dquat& view);
+
 }  // namespace arc

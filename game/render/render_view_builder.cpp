@@ -56,9 +56,7 @@ CameraView frame_camera(const World& w, double alpha, const CameraSettings& cs) 
     cam.orientation = glm::normalize(glm::slerp(w.prev_camera.orientation, w.camera.orientation, alpha));
     if (mode == CameraMode::Chase) {
       // The view lifts over the own hull when it would hide a hostile ahead (chase_framing.h).
-      const Framing f = chase_framing(w, cam.position, cam.orientation, alpha);
-      cam.position += cam.orientation * glm::dvec3(0, f.rise_m, 0);
-      cam.orientation = glm::normalize(cam.orientation * glm::angleAxis(-f.tilt_rad, glm::dvec3(1, 0, 0)));
+      lift_chase_view(w, alpha, cam.position, cam.orientation);
     }
   }
   return cam;

@@ -19,6 +19,7 @@
 #include "core/data_root.h"
 #include "game/app/all_settings.h"
 #include "game/app/script_feeder.h"
+#include "game/render/chase_framing.h"
 #include "game/render/own_cover.h"
 #include "game/sim/camera_rig.h"
 #include "game/sim/geometry.h"
@@ -93,7 +94,10 @@ void replay_and_count(const std::string& path, const std::vector<ChaseFraming>& 
       const glm::dvec3 to = foe->position - me.position;
       if (glm::dot(safe_norm(to, glm::dvec3(0, 0, -1)), forward_of(me.orientation)) < std::cos(20.0 * kDeg)) continue;
       ++tallies[i].near_nose;
-      tallies[i].hidden += hidden_by_hull(rigs[i], me, box, foe->position) ? 1 : 0;
+      // The game's framing is seen as drawn, lifted over the hull (chase_framing.h).
+      CameraRig seen = rigs[i];
+      if (i == 0) lift_chase_view(w, 1.0, seen.position, seen.orientation);
+      tallies[i].hidden += hidden_by_hull(seen, me, box, foe->position) ? 1 : 0;
     }
   }
 }

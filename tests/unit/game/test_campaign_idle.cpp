@@ -15,8 +15,8 @@
 namespace arc {
 namespace {
 
-// The escort is still won by its wingman alone: raiders enough to change that need a test pilot
-// that fights them there (it deals almost no damage in the escort), so it stays out for now.
+// The one exception: the escort is won by its wingman and the freighter alone. Raiders enough to
+// beat them also beat the human-like pilot, which deals almost no damage there (docs/pilot.md).
 constexpr const char* kOpen = "03_escort.json";
 
 TEST(CampaignIdle, NoMissionIsWonWithoutInput) {
