@@ -130,6 +130,17 @@ glm::dvec2 offscreen_direction(const Projector& pr, const glm::dvec3& at) {
   return len > 1e-9 ? dir / len : glm::dvec2(0, 1);
 }
 
+// Where the world point `p` shows: true with `at` on the canvas, or false with the edge
+// arrow's direction and tip toward it; `depth` is its view depth either way.
+bool place_on_screen(const Projector& pr, const glm::dvec3& p, double canvas_w, double canvas_h, const HudRect& arrow_area,
+                     glm::dvec2& at, glm::dvec2& arrow_dir, glm::dvec2& arrow_tip, double& depth) {
+  const bool in_front = pr.project(p, at, &depth);
+  if (in_front && at.x >= 0 && at.x <= canvas_w && at.y >= 0 && at.y <= canvas_h) return true;
+  arrow_dir = offscreen_direction(pr, p);
+  arrow_tip = offscreen_arrow_tip(arrow_dir, canvas_w, canvas_h, arrow_area);
+  return false;
+}
+
 void offscreen_arrow(HudLayer& h, glm::dvec2 dir, glm::dvec2 tip, double dist, const HudRect& area,
                      const glm::vec4& col) {
   const glm::dvec2 side(-dir.y, dir.x);
@@ -183,12 +194,7 @@ NavCue nav_cue(const World& w, const Ship& me, const Projector& pr, double canva
   n.shown = true;
   n.distance = glm::length(at - me.position);
   double depth = 0;
-  const bool in_front = pr.project(at, n.at, &depth);
-  n.on_screen = in_front && n.at.x >= 0 && n.at.x <= canvas_w && n.at.y >= 0 && n.at.y <= canvas_h;
-  if (!n.on_screen) {
-    n.arrow_dir = offscreen_direction(pr, at);
-    n.arrow_tip = offscreen_arrow_tip(n.arrow_dir, canvas_w, canvas_h, arrow_area);
-  }
+  n.on_screen = place_on_screen(pr, at, canvas_w, canvas_h, arrow_area, n.at, n.arrow_dir, n.arrow_tip, depth);
   return n;
 }
 
@@ -225,13 +231,8 @@ AimCues aim_cues(const World& w, const Ship& me, const Projector& pr, double alp
   c.distance = glm::length(t.position - me.position);
   const glm::dvec3 tp = lerp_pos(t.prev_position, t.position, alpha);
   double depth = 0;
-  const bool in_front = pr.project(tp, c.centre, &depth);
-  c.on_screen = in_front && c.centre.x >= 0 && c.centre.x <= canvas_w && c.centre.y >= 0 && c.centre.y <= canvas_h;
-  if (!c.on_screen) {
-    c.arrow_dir = offscreen_direction(pr, tp);
-    c.arrow_tip = offscreen_arrow_tip(c.arrow_dir, canvas_w, canvas_h, arrow_area);
-    return cues;
-  }
+  c.on_screen = place_on_screen(pr, tp, canvas_w, canvas_h, arrow_area, c.centre, c.arrow_dir, c.arrow_tip, depth);
+  if (!c.on_screen) return cues;
   c.half_size = std::max(t.cls->shield_radius * pr.focal / depth, 14.0);
   c.in_range = c.distance <= me.cls->beam.range;
   if (!c.hostile) return cues;
